@@ -1,0 +1,39 @@
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "stitch: smooth surfaces of hierarchically organized bicubic Bezier patches from any closed "
+      "orientable polygon mesh (modified de Casteljau subdivision)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "stitch 0.1.0");
+  stitch::cli::add_smooth_command(app);
+  stitch::cli::add_analyze_command(app);
+  stitch::cli::add_info_command(app);
+  // more commands: add_*_command calls below this line
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const stitch::cli::ExitStatus& e) {
+    if (e.what()[0] != '\0') fmt::print(stderr, "stitch: {}\n", e.what());
+    return e.code();
+  } catch (const stitch::MeshError& e) {
+    fmt::print(stderr, "stitch: error: {}\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "stitch: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "stitch: internal error: {}\n", e.what());
+    return 3;
+  }
+  return 0;
+}

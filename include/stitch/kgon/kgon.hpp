@@ -1,0 +1,83 @@
+// K-gons: the shape handles of the surface (method.md, section 2).
+//
+// One K-gon per face (K = degree), per vertex (K = valence) and per edge (K = 4). Point k of a
+// K-gon belongs to one corner of the input mesh, and every corner has exactly four K-gon points:
+// one in its face's K-gon, one in its vertex's K-gon, and one in each of the edge K-gons of the
+// two face edges that meet at the corner.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+enum class KgonKind { face, vertex, edge };
+
+/// The user's controls on one K-gon (paper, section "Discussion"). The defaults change nothing.
+struct KgonControl {
+  double scale = 1.0;        ///< scale about the centroid
+  double rotate_deg = 0.0;   ///< rotation about the K-gon normal, in the K-gon plane
+  Vec3 offset = Vec3::Zero();  ///< translation of the whole K-gon (moves the centre)
+  bool regularize = false;   ///< replace by the best-fitting affinely regular polygon
+  bool operator==(const KgonControl&) const = default;
+};
+
+/// Where the K-gons of faces come from.
+enum class KgonConstruction {
+  /// Section 2 as it stands: corner points of one Doo-Sabin step, shrunk once more.
+  doo_sabin,
+};
+
+struct KgonOptions {
+  KgonConstruction construction = KgonConstruction::doo_sabin;
+  /// Applies to every face and vertex K-gon with K != 4 (the extraordinary ones); quads and
+  /// edge K-gons keep their shape unless a per-element control names them.
+  KgonControl global;
+  /// Per-element controls, keyed by element index; they replace `global` for that element.
+  std::unordered_map<int, KgonControl> face, vertex, edge;
+};
+
+struct Kgon {
+  std::vector<Vec3> points;  ///< in the order of `corners`
+  std::vector<Corner> corners;
+  Vec3 centroid = Vec3::Zero();
+  /// Unit normal of the least-squares plane, oriented like the surface. For K = 2 there is
+  /// no plane: the normal is the average of the adjacent faces' normals (see build_kgons).
+  Vec3 normal = Vec3::UnitZ();
+  [[nodiscard]] int size() const { return static_cast<int>(points.size()); }
+};
+
+/// All K-gons of a mesh, indexed by element index, plus per-corner look-ups.
+struct KgonSet {
+  std::vector<Kgon> face, vertex, edge;  ///< empty Kgon for deleted elements
+  /// Doo-Sabin corner point w(f, i) of every corner, indexed by half-edge.
+  std::vector<Vec3> corner_point;
+  /// Index of the corner's point in its face, vertex, next-edge (edge(h)) and
+  /// previous-edge (edge(prev(h))) K-gon, indexed by half-edge.
+  std::vector<int> in_face, in_vertex, in_next_edge, in_prev_edge;
+
+  [[nodiscard]] const Vec3& face_point(const HalfedgeMesh& m, Corner c) const {
+    return face[m.face(c).idx].points[in_face[c.idx]];
+  }
+  [[nodiscard]] const Vec3& vertex_point(const HalfedgeMesh& m, Corner c) const {
+    return vertex[m.origin(c).idx].points[in_vertex[c.idx]];
+  }
+  [[nodiscard]] const Vec3& next_edge_point(Corner c) const {
+    return edge[HalfedgeMesh::edge(c).idx].points[in_next_edge[c.idx]];
+  }
+  [[nodiscard]] const Vec3& prev_edge_point(const HalfedgeMesh& m, Corner c) const {
+    return edge[HalfedgeMesh::edge(m.prev(c)).idx].points[in_prev_edge[c.idx]];
+  }
+};
+
+/// Doo-Sabin weights for an n-sided loop: a0 = 1/4 + 5/(4n), ak = (3 + 2cos(2 pi k/n))/(4n).
+std::vector<double> doo_sabin_weights(int n);
+/// The DS point of every corner of the loop (point i = sum_j a_((j-i) mod n) p_j).
+std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop);
+
+/// Builds every K-gon of a valid mesh. Default options reproduce method.md section 2 exactly.
+KgonSet build_kgons(const HalfedgeMesh& mesh, const KgonOptions& options = {});
+
+}  // namespace stitch

@@ -1,0 +1,165 @@
+// The half-edge mesh every stage works on.
+//
+// Index-based handles and plain arrays (after pmp-library): connectivity lives in this class,
+// every other attribute (K-gon settings, colours, ...) lives in arrays beside it, indexed by the
+// handle's idx. The mesh is always closed: every half-edge has a face, so there are no boundary
+// half-edges. It can hold everything the topology operators create: 2-sided faces, several edges
+// between the same two vertices, and faces whose loop runs along the same edge twice.
+//
+// Half-edges come in pairs: the two half-edges of edge e are 2e and 2e+1, so twin(h) = h ^ 1.
+// A *corner* (a face and one position in its loop) is the half-edge of that face leaving the
+// corner's vertex; everything downstream is defined per corner, never per vertex id.
+//
+// Elements are removed by marking them deleted, so the numbers of untouched elements stay stable
+// while a sequence of operators runs; garbage_collection() compacts the arrays, keeping order.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stitch {
+
+using Vec3 = Eigen::Vector3d;
+
+/// Error raised for invalid meshes, invalid input and refused operations. The message says
+/// what is wrong and where.
+class MeshError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <class Tag>
+struct Handle {
+  int idx = -1;
+  constexpr Handle() = default;
+  constexpr explicit Handle(int i) : idx(i) {}
+  [[nodiscard]] constexpr bool valid() const { return idx >= 0; }
+  constexpr auto operator<=>(const Handle&) const = default;
+};
+
+struct VertexTag {};
+struct HalfedgeTag {};
+struct EdgeTag {};
+struct FaceTag {};
+using Vertex = Handle<VertexTag>;
+using Halfedge = Handle<HalfedgeTag>;
+using Edge = Handle<EdgeTag>;
+using Face = Handle<FaceTag>;
+/// A corner is identified with the half-edge of its face that leaves its vertex.
+using Corner = Halfedge;
+
+class HalfedgeMesh {
+ public:
+  // --- navigation -------------------------------------------------------------------------
+  [[nodiscard]] Halfedge next(Halfedge h) const { return Halfedge(he_next_[h.idx]); }
+  [[nodiscard]] Halfedge prev(Halfedge h) const { return Halfedge(he_prev_[h.idx]); }
+  [[nodiscard]] static Halfedge twin(Halfedge h) { return Halfedge(h.idx ^ 1); }
+  [[nodiscard]] static Edge edge(Halfedge h) { return Edge(h.idx >> 1); }
+  [[nodiscard]] static Halfedge halfedge(Edge e, int side) { return Halfedge(2 * e.idx + side); }
+  [[nodiscard]] Vertex origin(Halfedge h) const { return Vertex(he_origin_[h.idx]); }
+  [[nodiscard]] Vertex target(Halfedge h) const { return origin(twin(h)); }
+  [[nodiscard]] Face face(Halfedge h) const { return Face(he_face_[h.idx]); }
+  /// One half-edge of the face's loop.
+  [[nodiscard]] Halfedge halfedge(Face f) const { return Halfedge(face_he_[f.idx]); }
+  /// One outgoing half-edge of the vertex (invalid for an isolated vertex).
+  [[nodiscard]] Halfedge halfedge(Vertex v) const { return Halfedge(vertex_he_[v.idx]); }
+  /// The next outgoing half-edge counter-clockwise around origin(h) (seen from the side the
+  /// faces point to).
+  [[nodiscard]] Halfedge rotate_ccw(Halfedge h) const { return twin(prev(h)); }
+  /// The inverse of rotate_ccw.
+  [[nodiscard]] Halfedge rotate_cw(Halfedge h) const { return next(twin(h)); }
+
+  [[nodiscard]] const Vec3& position(Vertex v) const { return positions_[v.idx]; }
+  Vec3& position(Vertex v) { return positions_[v.idx]; }
+  [[nodiscard]] const std::vector<Vec3>& positions() const { return positions_; }
+
+  // --- sizes and iteration ----------------------------------------------------------------
+  // *_capacity() counts deleted elements too (handles index arrays of that size);
+  // num_*() counts live elements.
+  [[nodiscard]] int vertex_capacity() const { return static_cast<int>(positions_.size()); }
+  [[nodiscard]] int halfedge_capacity() const { return static_cast<int>(he_next_.size()); }
+  [[nodiscard]] int edge_capacity() const { return halfedge_capacity() / 2; }
+  [[nodiscard]] int face_capacity() const { return static_cast<int>(face_he_.size()); }
+  [[nodiscard]] int num_vertices() const { return vertex_capacity() - deleted_vertices_; }
+  [[nodiscard]] int num_edges() const { return edge_capacity() - deleted_edges_; }
+  [[nodiscard]] int num_halfedges() const { return 2 * num_edges(); }
+  [[nodiscard]] int num_faces() const { return face_capacity() - deleted_faces_; }
+  [[nodiscard]] bool has_garbage() const {
+    return deleted_vertices_ + deleted_edges_ + deleted_faces_ > 0;
+  }
+
+  [[nodiscard]] bool is_deleted(Vertex v) const { return vertex_deleted_[v.idx] != 0; }
+  [[nodiscard]] bool is_deleted(Edge e) const { return edge_deleted_[e.idx] != 0; }
+  [[nodiscard]] bool is_deleted(Halfedge h) const { return is_deleted(edge(h)); }
+  [[nodiscard]] bool is_deleted(Face f) const { return face_deleted_[f.idx] != 0; }
+
+  /// Live elements in index order.
+  [[nodiscard]] std::vector<Vertex> vertices() const;
+  [[nodiscard]] std::vector<Edge> edges() const;
+  [[nodiscard]] std::vector<Halfedge> halfedges() const;
+  [[nodiscard]] std::vector<Face> faces() const;
+
+  /// The half-edges of the face's loop, starting at halfedge(f), in loop order.
+  [[nodiscard]] std::vector<Halfedge> face_loop(Face f) const;
+  /// The half-edges of the loop starting at h, in loop order.
+  [[nodiscard]] std::vector<Halfedge> loop_from(Halfedge h) const;
+  /// The outgoing half-edges (= corners) around v, counter-clockwise, starting at halfedge(v).
+  [[nodiscard]] std::vector<Halfedge> vertex_fan(Vertex v) const;
+  [[nodiscard]] int degree(Face f) const;
+  [[nodiscard]] int valence(Vertex v) const;
+  /// The position of h in its face's loop counted from halfedge(face(h)).
+  [[nodiscard]] int index_in_face(Halfedge h) const;
+
+  // --- low-level editing, for the builders and the topology operators ---------------------
+  // These do not keep the mesh valid on their own; callers finish with a valid mesh
+  // (validate() checks).
+  Vertex add_vertex(const Vec3& p);
+  Face add_face();
+  /// Adds edge (a, b): returns the half-edge a->b; its twin is b->a. next/prev/face unset.
+  Halfedge add_edge(Vertex a, Vertex b);
+  /// Links h -> n (sets next(h) = n and prev(n) = h).
+  void link(Halfedge h, Halfedge n) {
+    he_next_[h.idx] = n.idx;
+    he_prev_[n.idx] = h.idx;
+  }
+  void set_face(Halfedge h, Face f) { he_face_[h.idx] = f.idx; }
+  void set_origin(Halfedge h, Vertex v) { he_origin_[h.idx] = v.idx; }
+  void set_halfedge(Face f, Halfedge h) { face_he_[f.idx] = h.idx; }
+  void set_halfedge(Vertex v, Halfedge h) { vertex_he_[v.idx] = h.idx; }
+  /// Sets face(h) = f for every half-edge of the loop through h and makes h the face's start.
+  void assign_loop(Halfedge h, Face f);
+  void delete_vertex(Vertex v);
+  void delete_edge(Edge e);
+  void delete_face(Face f);
+
+  /// Maps from old to new indices produced by garbage_collection() (-1 for removed).
+  struct Remap {
+    std::vector<int> vertex, edge, face;
+  };
+  /// Removes deleted elements, keeping the relative order of the rest.
+  Remap garbage_collection();
+
+  /// Exact equality of connectivity and positions (element numbering included).
+  [[nodiscard]] bool operator==(const HalfedgeMesh& o) const = default;
+
+ private:
+  std::vector<Vec3> positions_;
+  std::vector<int> vertex_he_;
+  std::vector<std::uint8_t> vertex_deleted_;
+  std::vector<int> he_next_, he_prev_, he_origin_, he_face_;
+  std::vector<std::uint8_t> edge_deleted_;
+  std::vector<int> face_he_;
+  std::vector<std::uint8_t> face_deleted_;
+  int deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+};
+
+}  // namespace stitch
+
+template <class Tag>
+struct std::hash<stitch::Handle<Tag>> {
+  size_t operator()(const stitch::Handle<Tag>& h) const noexcept { return std::hash<int>()(h.idx); }
+};

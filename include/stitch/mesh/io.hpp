@@ -1,0 +1,38 @@
+// Reading and writing polygon meshes: OBJ, OFF, PLY (ASCII and binary) in; OBJ, OFF, PLY, STL out.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "stitch/mesh/build.hpp"
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+/// Reads a polygon soup; the format is chosen by the file's extension (.obj, .off, .ply).
+/// OBJ: faces of any degree, texture/normal indices and negative (relative) indices accepted,
+/// OpenSubdiv's `t` tag lines and other unsupported statements ignored (one warning each kind).
+/// Throws MeshError naming the file and line (or element) for anything malformed.
+PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+/// read_polygon_soup + build_mesh.
+HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options = {},
+                       BuildReport* report = nullptr, std::vector<std::string>* warnings = nullptr);
+
+/// Writes the soup; format by extension (.obj, .off, .ply as ASCII, .stl as binary triangles
+/// with each polygon fanned). Atomic: written to a temporary file beside `path`, then renamed.
+void write_polygon_soup(const std::string& path, const PolygonSoup& soup);
+void write_mesh(const std::string& path, const HalfedgeMesh& mesh);
+
+/// Runs `write` on a stream to a temporary file in the same folder as `path` and renames it
+/// into place when `write` returns; on any error the temporary file is removed, `path` is left
+/// as it was, and the error is rethrown (as MeshError for I/O failures).
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
+                           bool binary = false);
+
+/// Lower-case extension of a path including the dot (".obj"), or "" when it has none.
+std::string file_extension(const std::string& path);
+
+}  // namespace stitch

@@ -1,0 +1,164 @@
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+namespace {
+template <class H>
+std::vector<H> live(int capacity, const std::vector<std::uint8_t>& deleted) {
+  std::vector<H> out;
+  out.reserve(capacity);
+  for (int i = 0; i < capacity; ++i)
+    if (!deleted[i]) out.emplace_back(i);
+  return out;
+}
+}  // namespace
+
+std::vector<Vertex> HalfedgeMesh::vertices() const {
+  return live<Vertex>(vertex_capacity(), vertex_deleted_);
+}
+std::vector<Edge> HalfedgeMesh::edges() const { return live<Edge>(edge_capacity(), edge_deleted_); }
+std::vector<Face> HalfedgeMesh::faces() const { return live<Face>(face_capacity(), face_deleted_); }
+std::vector<Halfedge> HalfedgeMesh::halfedges() const {
+  std::vector<Halfedge> out;
+  out.reserve(halfedge_capacity());
+  for (int e = 0; e < edge_capacity(); ++e)
+    if (!edge_deleted_[e]) {
+      out.emplace_back(2 * e);
+      out.emplace_back(2 * e + 1);
+    }
+  return out;
+}
+
+std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
+  std::vector<Halfedge> out;
+  Halfedge h = start;
+  do {
+    out.push_back(h);
+    h = next(h);
+    if (static_cast<int>(out.size()) > halfedge_capacity())
+      throw MeshError("internal error: face loop does not close");
+  } while (h != start);
+  return out;
+}
+
+std::vector<Halfedge> HalfedgeMesh::face_loop(Face f) const { return loop_from(halfedge(f)); }
+
+std::vector<Halfedge> HalfedgeMesh::vertex_fan(Vertex v) const {
+  std::vector<Halfedge> out;
+  const Halfedge start = halfedge(v);
+  if (!start.valid()) return out;
+  Halfedge h = start;
+  do {
+    out.push_back(h);
+    h = rotate_ccw(h);
+    if (static_cast<int>(out.size()) > halfedge_capacity())
+      throw MeshError("internal error: vertex fan does not close");
+  } while (h != start);
+  return out;
+}
+
+int HalfedgeMesh::degree(Face f) const { return static_cast<int>(face_loop(f).size()); }
+int HalfedgeMesh::valence(Vertex v) const { return static_cast<int>(vertex_fan(v).size()); }
+
+int HalfedgeMesh::index_in_face(Halfedge h) const {
+  int i = 0;
+  for (Halfedge g = halfedge(face(h)); g != h; g = next(g)) ++i;
+  return i;
+}
+
+Vertex HalfedgeMesh::add_vertex(const Vec3& p) {
+  positions_.push_back(p);
+  vertex_he_.push_back(-1);
+  vertex_deleted_.push_back(0);
+  return Vertex(vertex_capacity() - 1);
+}
+
+Face HalfedgeMesh::add_face() {
+  face_he_.push_back(-1);
+  face_deleted_.push_back(0);
+  return Face(face_capacity() - 1);
+}
+
+Halfedge HalfedgeMesh::add_edge(Vertex a, Vertex b) {
+  const int h = halfedge_capacity();
+  for (int i = 0; i < 2; ++i) {
+    he_next_.push_back(-1);
+    he_prev_.push_back(-1);
+    he_face_.push_back(-1);
+  }
+  he_origin_.push_back(a.idx);
+  he_origin_.push_back(b.idx);
+  edge_deleted_.push_back(0);
+  return Halfedge(h);
+}
+
+void HalfedgeMesh::assign_loop(Halfedge h, Face f) {
+  for (Halfedge g : loop_from(h)) set_face(g, f);
+  set_halfedge(f, h);
+}
+
+void HalfedgeMesh::delete_vertex(Vertex v) {
+  if (!vertex_deleted_[v.idx]) {
+    vertex_deleted_[v.idx] = 1;
+    ++deleted_vertices_;
+  }
+}
+void HalfedgeMesh::delete_edge(Edge e) {
+  if (!edge_deleted_[e.idx]) {
+    edge_deleted_[e.idx] = 1;
+    ++deleted_edges_;
+  }
+}
+void HalfedgeMesh::delete_face(Face f) {
+  if (!face_deleted_[f.idx]) {
+    face_deleted_[f.idx] = 1;
+    ++deleted_faces_;
+  }
+}
+
+HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
+  Remap map;
+  auto build = [](const std::vector<std::uint8_t>& deleted, std::vector<int>& m) {
+    m.assign(deleted.size(), -1);
+    int n = 0;
+    for (size_t i = 0; i < deleted.size(); ++i)
+      if (!deleted[i]) m[i] = n++;
+    return n;
+  };
+  const int nv = build(vertex_deleted_, map.vertex);
+  const int ne = build(edge_deleted_, map.edge);
+  const int nf = build(face_deleted_, map.face);
+  auto he_map = [&](int h) { return h < 0 ? -1 : 2 * map.edge[h >> 1] + (h & 1); };
+  auto map_or_invalid = [](const std::vector<int>& m, int i) { return i < 0 ? -1 : m[i]; };
+
+  HalfedgeMesh out;
+  out.positions_.resize(nv);
+  out.vertex_he_.resize(nv);
+  out.vertex_deleted_.assign(nv, 0);
+  for (size_t v = 0; v < positions_.size(); ++v) {
+    if (map.vertex[v] < 0) continue;
+    out.positions_[map.vertex[v]] = positions_[v];
+    out.vertex_he_[map.vertex[v]] = he_map(vertex_he_[v]);
+  }
+  out.he_next_.resize(2 * ne);
+  out.he_prev_.resize(2 * ne);
+  out.he_origin_.resize(2 * ne);
+  out.he_face_.resize(2 * ne);
+  out.edge_deleted_.assign(ne, 0);
+  for (int h = 0; h < halfedge_capacity(); ++h) {
+    const int nh = he_map(h);
+    if (map.edge[h >> 1] < 0) continue;
+    out.he_next_[nh] = he_map(he_next_[h]);
+    out.he_prev_[nh] = he_map(he_prev_[h]);
+    out.he_origin_[nh] = map_or_invalid(map.vertex, he_origin_[h]);
+    out.he_face_[nh] = map_or_invalid(map.face, he_face_[h]);
+  }
+  out.face_he_.resize(nf);
+  out.face_deleted_.assign(nf, 0);
+  for (size_t f = 0; f < face_he_.size(); ++f)
+    if (map.face[f] >= 0) out.face_he_[map.face[f]] = he_map(face_he_[f]);
+  *this = std::move(out);
+  return map;
+}
+
+}  // namespace stitch

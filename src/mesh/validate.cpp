@@ -1,0 +1,127 @@
+#include "stitch/mesh/validate.hpp"
+
+#include <fmt/format.h>
+
+#include <numeric>
+
+namespace stitch {
+
+std::vector<std::string> find_problems(const HalfedgeMesh& m) {
+  std::vector<std::string> problems;
+  auto bad = [&](std::string s) { problems.push_back(std::move(s)); };
+  const int nh = m.halfedge_capacity();
+  auto live_he = [&](Halfedge h) { return h.idx >= 0 && h.idx < nh && !m.is_deleted(h); };
+  auto live_v = [&](Vertex v) {
+    return v.idx >= 0 && v.idx < m.vertex_capacity() && !m.is_deleted(v);
+  };
+  auto live_f = [&](Face f) { return f.idx >= 0 && f.idx < m.face_capacity() && !m.is_deleted(f); };
+
+  for (Halfedge h : m.halfedges()) {
+    const Halfedge n = m.next(h), p = m.prev(h);
+    if (!live_he(n) || !live_he(p)) {
+      bad(fmt::format("half-edge {} links to a missing half-edge", h.idx));
+      continue;
+    }
+    if (m.prev(n) != h || m.next(p) != h)
+      bad(fmt::format("half-edge {}: next/prev links disagree", h.idx));
+    if (!live_v(m.origin(h))) bad(fmt::format("half-edge {} starts at a missing vertex", h.idx));
+    if (!live_f(m.face(h))) bad(fmt::format("half-edge {} has no face (a boundary)", h.idx));
+    if (m.origin(n) != m.target(h))
+      bad(fmt::format("half-edge {} ends at vertex {} but its successor starts at {}", h.idx,
+                      m.target(h).idx + 1, m.origin(n).idx + 1));
+    if (m.origin(h) == m.target(h))
+      bad(fmt::format("edge {} is a loop at vertex {}", HalfedgeMesh::edge(h).idx + 1,
+                      m.origin(h).idx + 1));
+    if (problems.size() > 20) return problems;
+  }
+  if (!problems.empty()) return problems;
+
+  std::vector<int> seen(nh, 0);
+  for (Face f : m.faces()) {
+    const Halfedge start = m.halfedge(f);
+    if (!live_he(start) || m.face(start) != f) {
+      bad(fmt::format("face {} does not own its start half-edge", f.idx + 1));
+      continue;
+    }
+    int degree = 0;
+    for (Halfedge h : m.face_loop(f)) {
+      if (m.face(h) != f) bad(fmt::format("face {}: its loop runs into another face", f.idx + 1));
+      ++seen[h.idx];
+      ++degree;
+    }
+    if (degree < 2) bad(fmt::format("face {} has degree {}", f.idx + 1, degree));
+  }
+  for (Halfedge h : m.halfedges())
+    if (seen[h.idx] != 1)
+      bad(fmt::format("half-edge {} lies on {} face loops", h.idx, seen[h.idx]));
+
+  std::vector<int> outgoing(m.vertex_capacity(), 0);
+  for (Halfedge h : m.halfedges()) ++outgoing[m.origin(h).idx];
+  for (Vertex v : m.vertices()) {
+    const Halfedge h = m.halfedge(v);
+    if (!live_he(h) || m.origin(h) != v) {
+      bad(fmt::format("vertex {} has no outgoing edge (isolated vertex)", v.idx + 1));
+      continue;
+    }
+    const int fan = static_cast<int>(m.vertex_fan(v).size());
+    if (fan != outgoing[v.idx])
+      bad(fmt::format("vertex {} is non-manifold: one fan holds {} of its {} corners", v.idx + 1,
+                      fan, outgoing[v.idx]));
+    if (fan < 2) bad(fmt::format("vertex {} has valence {}", v.idx + 1, fan));
+  }
+  return problems;
+}
+
+void validate(const HalfedgeMesh& mesh) {
+  const auto problems = find_problems(mesh);
+  if (problems.empty()) return;
+  std::string msg = "invalid mesh: " + problems[0];
+  for (size_t i = 1; i < problems.size() && i < 5; ++i) msg += "; " + problems[i];
+  if (problems.size() > 5) msg += fmt::format("; and {} more", problems.size() - 5);
+  throw MeshError(msg);
+}
+
+std::vector<int> connected_components(const HalfedgeMesh& mesh, int* count) {
+  std::vector<int> parent(mesh.vertex_capacity());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (Edge e : mesh.edges()) {
+    const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+    parent[find(mesh.origin(h).idx)] = find(mesh.target(h).idx);
+  }
+  std::vector<int> id(mesh.vertex_capacity(), -1), root_id(mesh.vertex_capacity(), -1);
+  int n = 0;
+  for (Vertex v : mesh.vertices()) {
+    const int r = find(v.idx);
+    if (root_id[r] < 0) root_id[r] = n++;
+    id[v.idx] = root_id[r];
+  }
+  if (count) *count = n;
+  return id;
+}
+
+TopologyStats topology_stats(const HalfedgeMesh& mesh) {
+  TopologyStats s;
+  s.vertices = mesh.num_vertices();
+  s.edges = mesh.num_edges();
+  s.faces = mesh.num_faces();
+  connected_components(mesh, &s.components);
+  s.euler = s.vertices - s.edges + s.faces;
+  s.genus = (2 * s.components - s.euler) / 2;
+  for (Vertex v : mesh.vertices()) {
+    const int k = mesh.valence(v);
+    ++s.valence_histogram[k];
+    if (k != 4) ++s.extraordinary_vertices;
+  }
+  for (Face f : mesh.faces()) {
+    const int k = mesh.degree(f);
+    ++s.degree_histogram[k];
+    if (k != 4) ++s.extraordinary_faces;
+  }
+  return s;
+}
+
+}  // namespace stitch
