@@ -24,4 +24,9 @@ void add_smooth_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 // more commands: registered below this line by their own files
+void add_render_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
+void add_edit_command(CLI::App& app);
+void add_primitive_command(CLI::App& app);
+void add_check_surface_command(CLI::App& app);
 }  // namespace stitch::cli

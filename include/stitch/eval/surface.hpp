@@ -27,14 +27,13 @@ class Surface {
   Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options = {});
 
   [[nodiscard]] Method method() const { return method_; }
-  [[nodiscard]] const std::vector<Corner>& corners() const { return corners_; }
+  [[nodiscard]] const std::vector<Corner>& corners() const { return bezier_.corners; }
   /// The Bézier patches (also built for cc, for overlays).
   [[nodiscard]] const BezierSurface& bezier() const { return bezier_; }
   [[nodiscard]] SurfacePoint evaluate(Corner c, double u, double v) const;
 
  private:
   Method method_;
-  std::vector<Corner> corners_;
   BezierSurface bezier_;
   std::shared_ptr<const CatmullClarkSurface> cc_;
 };

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // Vec3::cross
 #include <cstdint>
 #include <functional>
 #include <stdexcept>

@@ -1,0 +1,94 @@
+// stitch analyze IN: the continuity of each method's surface, as numbers.
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "options.hpp"
+#include "stitch/analysis/continuity.hpp"
+
+namespace stitch::cli {
+
+namespace {
+
+struct AnalyzeArgs {
+  InputOptions in;
+  std::string method = "all";
+  bool json = false;
+  bool progress = false;
+  int samples = 8;
+  KgonCliOptions kgon;
+};
+
+nlohmann::json to_json(const ContinuityReport& r) {
+  auto stats = [](const JumpStats& s) {
+    return nlohmann::json{{"max_deg", s.max_deg}, {"mean_deg", s.mean_deg}, {"samples", s.samples}};
+  };
+  nlohmann::json j{{"method", to_string(r.method)},
+                   {"touching_extraordinary", stats(r.touching_ev)},
+                   {"away_from_extraordinary", stats(r.away_from_ev)},
+                   {"max_position_gap_relative", r.max_gap},
+                   {"extraordinary_points", r.extraordinary_points},
+                   {"g1_normal_spread_at_extraordinary_points_deg", r.ev_normal_spread_deg}};
+  for (const auto& [d, jump] : r.jump_by_distance)
+    j["max_jump_by_distance"].push_back({{"distance", d}, {"max_deg", jump}});
+  return j;
+}
+
+void run_analyze(const AnalyzeArgs& a) {
+  StageReporter stage(a.progress || stderr_is_terminal());
+  const HalfedgeMesh mesh = load_input(a.in);
+  std::vector<Method> methods;
+  if (a.method == "all")
+    methods = {Method::asc, Method::mdc, Method::cc};
+  else
+    methods = {parse_method(a.method)};
+
+  ContinuityOptions opt;
+  opt.samples_per_side = a.samples;
+  nlohmann::json out;
+  out["file"] = a.in.path;
+  if (!a.json)
+    fmt::print(
+        "{}: normal jump across patch boundaries, degrees (samples away from patch corners)\n"
+        "{:<6} {:>24} {:>24} {:>13} {:>18}\n",
+        a.in.path, "method", "touching EV: max / mean", "elsewhere: max / mean", "gap (rel.)",
+        "G1 at EVs: spread");
+  for (Method m : methods) {
+    stage.begin("analyzing " + to_string(m));
+    const Surface surface(mesh, m, to_kgon_options(a.kgon));
+    const ContinuityReport r = analyze_continuity(mesh, surface, opt);
+    stage.end();
+    if (a.json) {
+      out["methods"].push_back(to_json(r));
+      continue;
+    }
+    fmt::print("{:<6} {:>11.3e} / {:<10.3e} {:>11.3e} / {:<10.3e} {:>13.3e} {:>18.3e}\n",
+               to_string(m), r.touching_ev.max_deg, r.touching_ev.mean_deg, r.away_from_ev.max_deg,
+               r.away_from_ev.mean_deg, r.max_gap, r.ev_normal_spread_deg);
+  }
+  if (a.json) fmt::print("{}\n", out.dump(2));
+}
+
+}  // namespace
+
+void add_analyze_command(CLI::App& app) {
+  auto args = std::make_shared<AnalyzeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "analyze",
+      "Measure continuity: the largest and mean normal jump across patch boundaries, near "
+      "extraordinary points and elsewhere, and the tangent plane at extraordinary points");
+  add_input_options(cmd, args->in);
+  add_method_option(cmd, args->method, true);
+  cmd->add_flag("--json", args->json, "print JSON (includes the jump against distance from "
+                                      "extraordinary points)");
+  cmd->add_option("--samples", args->samples, "evenly spaced samples per patch side")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  add_kgon_options(cmd, args->kgon);
+  add_progress_option(cmd, args->progress);
+  cmd->callback([args] { run_analyze(*args); });
+}
+
+}  // namespace stitch::cli

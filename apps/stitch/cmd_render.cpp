@@ -1,0 +1,145 @@
+// stitch render IN -o OUT.png: a picture of the smooth surface (or the input mesh) with
+// overlays, headless through EGL.
+#include <fmt/format.h>
+
+#include <memory>
+#include <optional>
+
+#include "commands.hpp"
+#include "options.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/render/gl_context.hpp"
+#include "stitch/render/image.hpp"
+#include "stitch/render/options.hpp"
+#include "stitch/render/scene.hpp"
+
+namespace stitch::cli {
+
+namespace {
+
+struct RenderArgs {
+  InputOptions in;
+  std::string out;
+  std::string method = "mdc";
+  std::string mode = "shaded";
+  std::string show;
+  std::string size = "800x600";
+  std::string view;
+  std::string eye, target;
+  bool focus_ev = false;
+  double zoom = 0.6;
+  int resolution = 8;
+  int stripes = 24;
+  std::string draw = "smooth";
+  bool progress = false;
+  KgonCliOptions kgon;
+};
+
+void run_render(const RenderArgs& a) {
+  // Every option is checked before any work, so a bad one costs nothing and writes nothing.
+  if (file_extension(a.out) != ".png") {
+    throw MeshError(fmt::format("the output '{}' must be a .png file", a.out));
+  }
+  const ImageSize size = parse_image_size(a.size);
+  RenderStyle style;
+  style.mode = parse_shading_mode(a.mode);
+  style.stripes = a.stripes;
+  parse_overlays(a.show, style);
+  style.draw_surface = a.draw != "none";
+  const int camera_choices = (!a.view.empty() ? 1 : 0) + (!a.eye.empty() ? 1 : 0) + (a.focus_ev ? 1 : 0);
+  if (camera_choices > 1) {
+    throw std::invalid_argument("choose one camera: --view, --eye/--target or --focus-ev");
+  }
+  if (!a.target.empty() && a.eye.empty()) {
+    throw std::invalid_argument("--target needs --eye");
+  }
+  const View view = parse_view(a.view.empty() ? "iso" : a.view);
+  const std::optional<Vec3> eye =
+      a.eye.empty() ? std::nullopt : std::optional(parse_point(a.eye, "--eye"));
+  const std::optional<Vec3> target =
+      a.target.empty() ? std::nullopt : std::optional(parse_point(a.target, "--target"));
+
+  StageReporter stage(a.progress || stderr_is_terminal());
+  stage.begin("reading " + a.in.path);
+  const HalfedgeMesh mesh = load_input(a.in);
+  stage.end();
+  stage.begin(fmt::format("building and tessellating the {} surface", a.method));
+  const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
+  const SceneGeometry scene = build_scene(mesh, surface, a.resolution);
+  stage.end();
+
+  const double aspect = static_cast<double>(size.width) / size.height;
+  Camera camera;
+  if (a.focus_ev) {
+    camera = focus_camera(highest_valence_point(scene.extraordinary), scene, aspect, a.zoom);
+  } else if (eye) {
+    camera = look_at(*eye, target.value_or(scene.bounds.center()), scene.bounds);
+  } else {
+    camera = frame_view(view, scene.bounds, aspect);
+  }
+
+  stage.begin(fmt::format("rendering {}x{}", size.width, size.height));
+  const OffscreenContext context;
+  Renderer renderer;
+  upload_scene(renderer, scene, a.draw == "input");
+  const Image image = render_image(renderer, camera, style, size.width, size.height);
+  stage.end();
+  write_png(a.out, image);
+  fmt::print("wrote {} ({}x{}, method {}, mode {}, {})\n", a.out, size.width, size.height, a.method,
+             a.mode,
+             a.focus_ev ? "focus on the extraordinary point of highest valence"
+             : eye      ? "eye/target"
+                        : "view " + to_string(view));
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
+                "isophotes, levels, patches, with the mesh, K-gons, nets and extraordinary points");
+  add_input_options(cmd, args->in);
+  cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")
+      ->required();
+  add_method_option(cmd, args->method);
+  cmd->add_option("--mode", args->mode,
+                  "shaded, zebra (reflection lines), isophote, levels (hierarchy level of the "
+                  "sub-patch) or patches")
+      ->check(CLI::IsMember({"shaded", "zebra", "isophote", "levels", "patches"}))
+      ->capture_default_str();
+  cmd->add_option("--show", args->show,
+                  "overlays, comma-separated: mesh (input wireframe), kgons, nets (4x4 control "
+                  "nets), ev (extraordinary points), tess (the tessellation's quads)");
+  cmd->add_option("--size", args->size, "image size WxH")->capture_default_str();
+  cmd->add_option("--view", args->view,
+                  "front, back, left, right, top, bottom or iso (default), framing the model");
+  cmd->add_option("--eye", args->eye, "camera position x,y,z (with --target)");
+  cmd->add_option("--target", args->target,
+                  "point looked at, x,y,z (default: the centre of the model)");
+  cmd->add_flag("--focus-ev", args->focus_ev,
+                "close-up of the extraordinary point of highest valence, seen along its normal "
+                "tilted by 30 degrees");
+  cmd->add_option("--zoom", args->zoom,
+                  "with --focus-ev: radius of the region shown around the point, in edge lengths")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--resolution", args->resolution, "segments per patch side")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  cmd->add_option("--stripes", args->stripes,
+                  "zebra stripes around the full circle of reflected directions, or isophote "
+                  "bands from 0 to 180 degrees")
+      ->check(CLI::Range(2, 512))
+      ->capture_default_str();
+  cmd->add_option("--draw", args->draw,
+                  "what is shaded: smooth (the surface), input (the input polygons, flat) or "
+                  "none (overlays only)")
+      ->check(CLI::IsMember({"smooth", "input", "none"}))
+      ->capture_default_str();
+  add_kgon_options(cmd, args->kgon);
+  add_progress_option(cmd, args->progress);
+  cmd->callback([args] { run_render(*args); });
+}
+
+}  // namespace stitch::cli

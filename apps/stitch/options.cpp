@@ -1,0 +1,96 @@
+#include "options.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+
+namespace stitch::cli {
+
+void add_input_options(CLI::App* cmd, InputOptions& in) {
+  cmd->add_option("IN", in.path, "input mesh (.obj, .off, .ply): closed, orientable, manifold")
+      ->required();
+  cmd->add_flag("--fill-holes", in.fill_holes,
+                "close every boundary loop with one face instead of refusing the mesh");
+}
+
+HalfedgeMesh load_input(const InputOptions& in) {
+  BuildOptions opt;
+  opt.fill_holes = in.fill_holes;
+  BuildReport report;
+  std::vector<std::string> warnings;
+  HalfedgeMesh mesh = read_mesh(in.path, opt, &report, &warnings);
+  warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  for (Vertex v : mesh.vertices())
+    if (mesh.valence(v) == 2)
+      warnings.push_back(fmt::format(
+          "vertex {} has valence 2: its K-gon is a 2-gon with no plane; the surface there is "
+          "finite but its normal is taken from the faces around it",
+          v.idx + 1));
+  for (Face f : mesh.faces())
+    if (mesh.degree(f) == 2)
+      warnings.push_back(fmt::format(
+          "face {} has 2 sides: its K-gon has no plane; the normal there comes from the faces "
+          "around it",
+          f.idx + 1));
+  for (const std::string& w : warnings) fmt::print(stderr, "stitch: warning: {}: {}\n", in.path, w);
+  return mesh;
+}
+
+void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
+  cmd->add_option("--kgon-scale", k.scale,
+                  "scale every K-gon with K != 4 about its centroid (default 1)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--kgon-rotate", k.rotate_deg,
+                  "rotate every K-gon with K != 4 in its plane, degrees (default 0)");
+  cmd->add_flag("--regularize", k.regularize,
+                "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
+                "(makes star-shaped K-gons convex)");
+}
+
+KgonOptions to_kgon_options(const KgonCliOptions& k) {
+  KgonOptions o;
+  o.global.scale = k.scale;
+  o.global.rotate_deg = k.rotate_deg;
+  o.global.regularize = k.regularize;
+  return o;
+}
+
+void add_method_option(CLI::App* cmd, std::string& method, bool allow_all) {
+  auto* opt = cmd->add_option(
+      "--method", method,
+      std::string("mdc: modified de Casteljau (the paper's), asc: AS&C baseline (the same "
+                  "patches as plain polynomials), cc: Catmull-Clark through OpenSubdiv") +
+          (allow_all ? ", all: every method" : ""));
+  if (allow_all)
+    opt->check(CLI::IsMember({"mdc", "asc", "cc", "all"}));
+  else
+    opt->check(CLI::IsMember({"mdc", "asc", "cc"}));
+  opt->capture_default_str();
+}
+
+bool stderr_is_terminal() { return isatty(fileno(stderr)) != 0; }
+
+StageReporter::StageReporter(bool enabled) : enabled_(enabled) {}
+
+void StageReporter::begin(const std::string& stage) {
+  start_ = std::chrono::steady_clock::now();
+  if (enabled_) fmt::print(stderr, "stitch: {}...", stage);
+}
+
+void StageReporter::end() {
+  if (!enabled_) return;
+  const double s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  fmt::print(stderr, " {:.2f} s\n", s);
+}
+
+void add_progress_option(CLI::App* cmd, bool& progress) {
+  cmd->add_flag("--progress", progress,
+                "print each stage and its time on stderr (default when stderr is a terminal)");
+}
+
+}  // namespace stitch::cli

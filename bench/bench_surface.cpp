@@ -1,0 +1,273 @@
+// Mesh -> tessellated smooth surface: the paper's modified de Casteljau (mdc) against the
+// Catmull-Clark limit surface through OpenSubdiv (cc), on generated meshes of about 1k, 10k and
+// 100k faces.
+//
+// What is counted (the same for both methods): one sample = one evaluated point (position,
+// derivatives, unit normal) of the (8+1)^2 grid of every corner patch, i.e. 81 samples per
+// corner of the input mesh. The benchmark "compare" times, in each iteration:
+//   mdc      stitch::Surface(mesh, mdc) + stitch::tessellate(resolution 8, welded)
+//   cc       stitch::Surface(mesh, cc)  + stitch::tessellate(resolution 8, welded)
+//            (Surface also builds the Bézier patches for cc, for overlays; that time is in here)
+//   mdc_eval building the Bézier patches + evaluating every corner grid (the same parallel loop
+//            as tessellate's sampling, keeping a checksum instead of storing the samples)
+//   cc_eval  building the OpenSubdiv Bfr surfaces + evaluating every corner grid (same loop)
+//   mdc_build, cc_build: the building part of mdc_eval and cc_eval
+// and reports the times, samples/s and the ratios cc/mdc and cc_eval/mdc_eval as counters.
+// "osd_native" is OpenSubdiv's own route for reference: Far::TopologyDescriptor ->
+// Bfr::RefinerSurfaceFactory -> Bfr::Tessellation with a uniform rate of 16 per face edge
+// (17^2 = 289 points per quad face against the 4 * 81 = 324 of the corner grids); it reports its
+// own sample count.
+#include <benchmark/benchmark.h>
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/bfr/surfaceFactoryCache.h>
+#include <opensubdiv/bfr/tessellation.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <shared_mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stitch/eval/catmull_clark.hpp"
+#include "stitch/eval/surface.hpp"
+#include "stitch/mesh/build.hpp"
+#include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/insert_edge.hpp"
+#include "stitch/topology/primitives.hpp"
+
+namespace {
+
+using stitch::Corner;
+using stitch::HalfedgeMesh;
+
+constexpr int kResolution = 8;
+constexpr int kSamplesPerPatch = (kResolution + 1) * (kResolution + 1);
+
+enum MeshKind : int { quad_torus = 0, mixed_torus = 1 };
+
+// A torus of m x n quads, all vertices regular.
+HalfedgeMesh make_quad_torus(int m, int n) { return stitch::make_torus(m, n); }
+
+// The same torus with the diagonal of every fourth quad inserted (a quarter of the quads become
+// two triangles): many extraordinary vertices (valence 5 and 6) and non-quad faces, where the
+// hierarchical evaluation of mdc and the irregular patches of Bfr do extra work.
+HalfedgeMesh make_mixed_torus(int m, int n) {
+  HalfedgeMesh mesh = stitch::make_torus(m, n);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < n; ++j) {
+      if ((i + 2 * j) % 4 != 0) continue;
+      const Corner a = mesh.halfedge(stitch::Face(i * n + j));
+      stitch::insert_edge(mesh, a, mesh.next(mesh.next(a)));
+    }
+  }
+  return mesh;
+}
+
+// Grid sizes giving about 1k, 10k and 100k faces.
+std::pair<int, int> torus_grid(MeshKind kind, int target_faces) {
+  const double quads = kind == quad_torus ? target_faces : target_faces / 1.25;
+  const int side = static_cast<int>(std::lround(std::sqrt(quads)));
+  return {side, side};
+}
+
+const HalfedgeMesh& bench_mesh(MeshKind kind, int target_faces) {
+  static std::map<std::pair<int, int>, HalfedgeMesh> cache;
+  const auto key = std::make_pair(static_cast<int>(kind), target_faces);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    const auto [m, n] = torus_grid(kind, target_faces);
+    it = cache.emplace(key, kind == quad_torus ? make_quad_torus(m, n) : make_mixed_torus(m, n))
+             .first;
+  }
+  return it->second;
+}
+
+std::string mesh_label(MeshKind kind, const HalfedgeMesh& mesh) {
+  return std::string(kind == quad_torus ? "quad torus" : "tris+quads torus") + ", " +
+         std::to_string(mesh.num_faces()) + " faces";
+}
+
+// Evaluates every corner grid the way tessellate() samples (in parallel over corners), keeping
+// only a checksum: this measures evaluation without the memory traffic of storing 81 samples
+// per corner (gigabytes at 100k faces).
+template <class Evaluate>
+double sample_corner_grids(const std::vector<Corner>& corners, const Evaluate& evaluate) {
+  std::vector<double> checksum(corners.size(), 0.0);
+  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t k) {
+    double sum = 0.0;
+    for (int i = 0; i <= kResolution; ++i) {
+      for (int j = 0; j <= kResolution; ++j) {
+        const stitch::SurfacePoint s = evaluate(corners[k], static_cast<double>(i) / kResolution,
+                                                static_cast<double>(j) / kResolution);
+        sum += s.position.sum() + s.normal.sum();
+      }
+    }
+    checksum[k] = sum;
+  });
+  double total = 0.0;
+  for (double x : checksum) total += x;
+  return total;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void BM_compare(benchmark::State& state) {
+  const auto kind = static_cast<MeshKind>(state.range(0));
+  const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
+  const std::vector<Corner> corners = mesh.halfedges();
+  const stitch::TessellationOptions options{kResolution, true};
+  double mdc = 0, cc = 0, mdc_eval = 0, cc_eval = 0, mdc_build = 0, cc_build = 0;
+  for (auto _ : state) {
+    const double before = mdc + cc + mdc_eval + cc_eval;
+    auto start = std::chrono::steady_clock::now();
+    {
+      const stitch::Surface surface(mesh, stitch::Method::mdc);
+      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+    }
+    mdc += seconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    {
+      const stitch::Surface surface(mesh, stitch::Method::cc);
+      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+    }
+    cc += seconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    {
+      const stitch::BezierSurface bezier = stitch::build_bezier_surface(mesh);
+      mdc_build += seconds_since(start);
+      benchmark::DoNotOptimize(sample_corner_grids(corners, [&](Corner c, double u, double v) {
+        return bezier.evaluate(c, u, v, stitch::BezierRule::mdc);
+      }));
+    }
+    mdc_eval += seconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    {
+      const stitch::CatmullClarkSurface surface(mesh);
+      cc_build += seconds_since(start);
+      benchmark::DoNotOptimize(sample_corner_grids(
+          corners, [&](Corner c, double u, double v) { return surface.evaluate(c, u, v); }));
+    }
+    cc_eval += seconds_since(start);
+    state.SetIterationTime(mdc + cc + mdc_eval + cc_eval - before);
+  }
+  const double n = static_cast<double>(state.iterations());
+  const double samples = static_cast<double>(corners.size()) * kSamplesPerPatch;
+  state.SetLabel(mesh_label(kind, mesh));
+  state.counters["samples"] = samples;
+  state.counters["mdc_s"] = mdc / n;
+  state.counters["cc_s"] = cc / n;
+  state.counters["mdc_eval_s"] = mdc_eval / n;
+  state.counters["cc_eval_s"] = cc_eval / n;
+  state.counters["mdc_build_s"] = mdc_build / n;  // the part of mdc_eval_s building the patches
+  state.counters["cc_build_s"] = cc_build / n;    // the part of cc_eval_s building Bfr surfaces
+  state.counters["mdc_samples/s"] = samples * n / mdc;
+  state.counters["cc_samples/s"] = samples * n / cc;
+  state.counters["mdc_eval_samples/s"] = samples * n / mdc_eval;
+  state.counters["cc_eval_samples/s"] = samples * n / cc_eval;
+  state.counters["cc/mdc"] = cc / mdc;
+  state.counters["cc_eval/mdc_eval"] = cc_eval / mdc_eval;
+}
+
+namespace Osd = OpenSubdiv;
+using ThreadSafeCache =
+    Osd::Bfr::SurfaceFactoryCacheThreaded<std::shared_mutex, std::shared_lock<std::shared_mutex>,
+                                          std::unique_lock<std::shared_mutex>>;
+
+// OpenSubdiv's own mesh -> tessellation route: positions and unit normals of every point, kept
+// as a checksum like the *_eval variants. Returns the number of points.
+size_t osd_native_tessellation(const HalfedgeMesh& mesh, double& checksum) {
+  const stitch::PolygonSoup soup = stitch::to_polygon_soup(mesh);
+  std::vector<int> sizes, indices;
+  for (const auto& f : soup.faces) {
+    sizes.push_back(static_cast<int>(f.size()));
+    indices.insert(indices.end(), f.begin(), f.end());
+  }
+  Osd::Far::TopologyDescriptor desc;
+  desc.numVertices = static_cast<int>(soup.positions.size());
+  desc.numFaces = static_cast<int>(soup.faces.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  using Factory = Osd::Far::TopologyRefinerFactory<Osd::Far::TopologyDescriptor>;
+  const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(
+      Factory::Create(desc, Factory::Options(Osd::Sdc::SCHEME_CATMARK, Osd::Sdc::Options())));
+  const Osd::Bfr::RefinerSurfaceFactory<ThreadSafeCache> factory(*refiner);
+  std::vector<double> points(3 * soup.positions.size());
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    for (int k = 0; k < 3; ++k) points[3 * i + k] = soup.positions[i][k];
+  }
+  const int num_faces = desc.numFaces;
+  constexpr int kRate = 2 * kResolution;
+  const Osd::Bfr::Tessellation::Options tess_options;
+  std::vector<size_t> offset(static_cast<size_t>(num_faces) + 1, 0);
+  for (int f = 0; f < num_faces; ++f) {
+    const Osd::Bfr::Tessellation tess(
+        Osd::Bfr::Parameterization(Osd::Sdc::SCHEME_CATMARK, sizes[f]), kRate, tess_options);
+    offset[f + 1] = offset[f] + static_cast<size_t>(tess.GetNumCoords());
+  }
+  std::vector<double> face_sum(static_cast<size_t>(num_faces), 0.0);
+  tbb::parallel_for(0, num_faces, [&](int f) {
+    Osd::Bfr::Surface<double> surface;
+    factory.InitVertexSurface(f, &surface);
+    std::vector<double> patch(3 * static_cast<size_t>(surface.GetNumPatchPoints()));
+    const Osd::Bfr::Surface<double>::PointDescriptor xyz(3);
+    surface.PreparePatchPoints(points.data(), xyz, patch.data(), xyz);
+    const Osd::Bfr::Tessellation tess(surface.GetParameterization(), kRate, tess_options);
+    std::vector<double> uv(2 * static_cast<size_t>(tess.GetNumCoords()));
+    tess.GetCoords(uv.data());
+    double sum = 0.0;
+    for (int i = 0; i < tess.GetNumCoords(); ++i) {
+      double p[3], du[3], dv[3];
+      surface.Evaluate(&uv[2 * i], patch.data(), xyz, p, du, dv);
+      const Eigen::Vector3d nrm =
+          Eigen::Vector3d(du[0], du[1], du[2]).cross(Eigen::Vector3d(dv[0], dv[1], dv[2])).normalized();
+      sum += p[0] + p[1] + p[2] + nrm.sum();
+    }
+    face_sum[f] = sum;
+  });
+  checksum = 0.0;
+  for (double x : face_sum) checksum += x;
+  return offset.back();
+}
+
+void BM_osd_native(benchmark::State& state) {
+  const auto kind = static_cast<MeshKind>(state.range(0));
+  const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
+  double checksum = 0.0;
+  size_t samples = 0;
+  for (auto _ : state) {
+    samples = osd_native_tessellation(mesh, checksum);
+    benchmark::DoNotOptimize(checksum);
+  }
+  state.SetLabel(mesh_label(kind, mesh));
+  state.counters["samples"] = static_cast<double>(samples);
+  state.counters["samples/s"] =
+      benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void mesh_sizes(benchmark::internal::Benchmark* b) {
+  for (int kind : {quad_torus, mixed_torus}) {
+    for (int faces : {1000, 10000, 100000}) b->Args({kind, faces});
+  }
+  b->ArgNames({"mesh", "faces"});
+  b->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+// The 100k meshes take seconds per iteration: a few iterations are enough for stable figures.
+BENCHMARK(BM_compare)->Apply(mesh_sizes)->UseManualTime()->MinTime(2.0);
+BENCHMARK(BM_osd_native)->Apply(mesh_sizes)->MinTime(1.0)->UseRealTime();
+
+BENCHMARK_MAIN();

@@ -1,0 +1,76 @@
+// Checks of a triangulated surface: self-intersecting triangles, folds (adjacent triangles whose
+// normals point opposite ways) and degenerate triangles; and segments against the surface
+// (e.g. "the hole is really open": the axis of a handle meets no triangle).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "stitch/mesh/build.hpp"
+#include "stitch/tess/surface_mesh.hpp"
+
+namespace stitch {
+
+/// Triangles over shared vertices. source[t] says where triangle t came from (the quad or
+/// polygon index), for messages.
+struct TriangleSoup {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> source;
+};
+
+/// Each quad split along its 0-2 diagonal (two triangles with source = the quad's index).
+TriangleSoup triangulate(const SurfaceMesh& surface);
+/// Each polygon fanned from its first corner; vertices at exactly equal positions are merged
+/// first, so a file written without shared vertices still has its adjacency.
+TriangleSoup triangulate(const PolygonSoup& soup);
+
+struct SurfaceCheckOptions {
+  /// Adjacent triangles fold when the angle between their normals exceeds this (degrees).
+  /// 90: "pointing opposite ways" (negative dot product).
+  double fold_angle_deg = 90;
+  /// A triangle is degenerate when twice its area is below this times the squared bounding-box
+  /// diagonal (1e-14: well above round-off for coordinates of order 1, far below any real
+  /// triangle of a resolution-16 tessellation).
+  double degenerate_relative_area = 1e-14;
+  /// At most this many of each kind are listed (all are counted).
+  int max_listed = 20;
+};
+
+struct SurfaceCheckReport {
+  int triangles = 0;
+  int self_intersections = 0;  ///< pairs of triangles that cross
+  int folds = 0;               ///< pairs of edge-adjacent triangles that fold
+  int degenerate = 0;          ///< triangles of (almost) zero area
+  int inconsistent_edges = 0;  ///< edges both adjacent triangles run along in the same direction
+  std::vector<std::array<int, 2>> intersecting_pairs, folded_pairs;  ///< triangle indices
+  std::vector<int> degenerate_triangles;
+  [[nodiscard]] bool clean() const {
+    return self_intersections == 0 && folds == 0 && degenerate == 0 && inconsistent_edges == 0;
+  }
+  /// A few lines for people: the counts and the first listed problems (with their sources).
+  [[nodiscard]] std::string describe(const TriangleSoup& soup) const;
+};
+
+/// Runs all checks. Pairs of triangles sharing an edge are tested for folds only; pairs sharing
+/// one vertex are tested by the opposite edge of each against the other (coplanar overlap of such
+/// pairs is not detected); all other pairs near each other (uniform grid) by Moller's
+/// triangle-triangle test, touching at a point not counting as crossing.
+SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options = {});
+
+/// Moller's interval test (1997) with a coplanar fallback: do the closed triangles intersect?
+/// `eps` is the distance below which a vertex counts as on the other's plane.
+bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
+                         const Vec3& b1, const Vec3& b2, double eps = 0);
+
+struct SegmentHit {
+  int triangle = -1;
+  double t = 0;  ///< position along the segment, 0 at p, 1 at q
+};
+
+/// Where segment p-q crosses triangles of the soup (Moller-Trumbore, a hit on an edge counts),
+/// sorted by t.
+std::vector<SegmentHit> segment_hits(const TriangleSoup& soup, const Vec3& p, const Vec3& q);
+
+}  // namespace stitch

@@ -1,0 +1,92 @@
+// Draws a tessellated surface and its overlays into the current OpenGL 3.3 core context.
+//
+// The Renderer owns GPU buffers and shaders but no context and no framebuffer: it draws into
+// whatever framebuffer is bound (an offscreen target from image.hpp, or the modeler's window).
+// Create, use and destroy it with the same context current.
+//
+// Surface buffers are laid out for partial updates: the vertex buffer is the SurfaceMesh's own
+// vertex array, so a tessellation with one contiguous vertex block per patch (tessellate with
+// welded = false) lets an editor re-upload only the patches it changed (patch_vertex_ranges +
+// update_surface_vertices), without touching the index buffer.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stitch/render/camera.hpp"
+#include "stitch/render/overlays.hpp"
+#include "stitch/tess/surface_mesh.hpp"
+
+namespace stitch {
+
+enum class ShadingMode {
+  shaded,    ///< Blinn-Phong from the analytic normals
+  zebra,     ///< reflection lines of an environment of parallel stripes
+  isophote,  ///< bands of constant angle between normal and light
+  levels,    ///< colour by hierarchy level of the sub-patch a sample came from
+  patches,   ///< colour by patch
+};
+
+/// Parses "shaded", "zebra", "isophote", "levels", "patches"; throws std::invalid_argument.
+ShadingMode parse_shading_mode(const std::string& name);
+std::string to_string(ShadingMode mode);
+
+enum class Overlay { mesh, kgons, nets, tessellation };
+inline constexpr int num_overlays = 4;
+
+struct RenderStyle {
+  ShadingMode mode = ShadingMode::shaded;
+  bool draw_surface = true;
+  std::array<bool, num_overlays> overlays{};  ///< indexed by Overlay
+  bool markers = false;                       ///< extraordinary points
+  int stripes = 16;          ///< zebra stripes around the full circle / isophote bands
+  Colour background{1.0f, 1.0f, 1.0f};
+  Colour surface_colour{0.80f, 0.82f, 0.86f};
+  float line_width_px = 1.5f;
+  float marker_size_px = 9.0f;
+  /// Opacity of overlay parts hidden behind the surface (0 hides them).
+  float hidden_alpha = 0.25f;
+
+  [[nodiscard]] bool shows(Overlay o) const { return overlays[static_cast<int>(o)]; }
+  void show(Overlay o, bool on = true) { overlays[static_cast<int>(o)] = on; }
+};
+
+/// Vertex ranges of a tessellation, one per maximal run of equal SurfaceMesh::patch values.
+struct PatchRange {
+  int patch = -1;
+  int first_vertex = 0;
+  int num_vertices = 0;
+};
+std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface);
+
+class Renderer {
+ public:
+  /// Compiles the shaders; needs a current GL >= 3.3 core context. Throws RenderError.
+  Renderer();
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  /// Uploads vertices and quads (replacing any previous surface).
+  void set_surface(const SurfaceMesh& surface);
+  /// Re-uploads vertices [first, first + count) of `surface`, which must have the same vertex
+  /// count and quads as the one given to set_surface. Throws std::out_of_range.
+  void update_surface_vertices(const SurfaceMesh& surface, int first, int count);
+  void set_overlay(Overlay overlay, const LineSet& lines);
+  void set_markers(const MarkerSet& markers);
+
+  /// Clears and draws into the currently bound framebuffer, viewport (0, 0, width, height).
+  /// `pixel_scale` multiplies line widths and marker sizes (for supersampled targets).
+  void draw(const Camera& camera, const RenderStyle& style, int width, int height,
+            float pixel_scale = 1.0f) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace stitch

@@ -1,0 +1,35 @@
+// Everything drawn for one mesh and method, built on the CPU in one call: the glue between
+// the evaluation pipeline and the Renderer, shared by `stitch render`, `stitch compare` and
+// the modeler.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "stitch/eval/surface.hpp"
+#include "stitch/render/overlays.hpp"
+#include "stitch/render/renderer.hpp"
+
+namespace stitch {
+
+struct SceneGeometry {
+  SurfaceMesh surface;      ///< unwelded: one vertex block per patch
+  SurfaceMesh input;        ///< the input polygons (input_faces)
+  std::array<LineSet, num_overlays> overlays;  ///< indexed by Overlay
+  std::vector<ExtraordinaryPoint> extraordinary;
+  BoundingBox bounds;       ///< of the surface and the input mesh
+};
+
+/// Tessellates `surface` at `resolution` segments per patch side and builds every overlay.
+SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution);
+
+/// Uploads the scene: the smooth surface, or the input polygons when `input_polygons`.
+void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_polygons = false);
+
+/// A close-up of an extraordinary point: seen along its normal tilted by 30 degrees towards the
+/// world's up (so reflection lines cross the patch boundaries leaving it), framing the sphere
+/// of radius `radius_edges` times its mean edge length (ExtraordinaryPoint::extent).
+Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
+                    double radius_edges = 0.6);
+
+}  // namespace stitch

@@ -1,0 +1,23 @@
+// Connecting two faces with a handle (a tube of quads), built from insert_edge.
+#pragma once
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+struct ConnectFacesResult {
+  int first_edge = -1;  ///< the k new edges are first_edge .. first_edge+k-1 (0-based)
+  int degree = 0;       ///< k
+};
+
+/// Removes faces f and g (both of degree k) and joins their loops with a tube of k quads.
+/// With corners f_0..f_{k-1} of f and g_0..g_{k-1} of g (each from the face's first corner, in
+/// loop order), corner f_i is joined to corner g_{(twist - i) mod k}; twist turns the tube.
+/// Faces on one component: genus + 1; on two components: they join. E + k, F + k - 2.
+/// Numbering: the first new edge (f_0 - g_twist) merges f and g into the smaller of their
+/// numbers; each further edge i = 1..k-1 cuts one quad off it as a new face, and the last
+/// remaining quad keeps the smaller number. Refused: f == g, different degrees, or a pair of
+/// corners to be joined at the same vertex (the edge would be a loop).
+ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist = 0);
+
+}  // namespace stitch

@@ -1,0 +1,22 @@
+// Subdividing and collapsing one edge.
+#pragma once
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+struct SubdivideEdgeResult {
+  Vertex vertex;  ///< the new valence-2 vertex (next vertex number), at the edge's midpoint
+  Edge edge;      ///< the new edge (next edge number): new vertex -> the old edge's second end
+};
+
+/// Splits edge e (from origin(2e) to origin(2e+1)) at its midpoint. Edge e keeps the part at its
+/// first end; both faces gain one corner. Never refused on a valid mesh.
+SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e);
+
+/// Collapses edge e into vertex `keep` (one of its ends), which moves to the edge's midpoint; the
+/// other end and the edge are removed, both faces lose a corner. Refused when another edge also
+/// joins the two ends (it would become a loop; this covers 2-sided faces on e).
+void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep);
+
+}  // namespace stitch

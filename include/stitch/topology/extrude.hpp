@@ -1,0 +1,24 @@
+// Extruding a face.
+#pragma once
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch {
+
+struct ExtrudeResult {
+  int first_vertex = -1;  ///< the k new vertices are first_vertex .. first_vertex+k-1 (0-based)
+  int first_face = -1;    ///< the k new side faces are first_face .. first_face+k-1 (0-based)
+  int degree = 0;         ///< k
+};
+
+/// Extrudes face f by `distance` along its (Newell) normal: f moves to the top, with one new
+/// vertex per corner (numbered in f's loop order from its first corner), and a quad side face
+/// per edge of f (numbered in the same order: side i stands on the edge from corner i to corner
+/// i+1). V + k, E + 2k, F + k; Euler characteristic, genus and components unchanged.
+/// Refused: a non-finite distance, or a face without a normal (zero area, e.g. a 2-sided face).
+ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance);
+
+/// The face's unit normal by Newell's method (zero vector for a face of zero area).
+Vec3 face_normal(const HalfedgeMesh& mesh, Face f);
+
+}  // namespace stitch

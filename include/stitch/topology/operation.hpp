@@ -1,0 +1,39 @@
+// Operation lines: the text form of the topology operators, shared by `stitch edit` and the
+// modeler. Syntax and numbering are documented in docs/editing.md. Numbers are 1-based as in OBJ
+// and refer to the mesh as it stands (deleted elements leave gaps, new ones take the next
+// numbers), so a sequence of operations can be written against one numbering.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/mesh/validate.hpp"
+
+namespace stitch {
+
+struct OperationReport {
+  std::string what;     ///< what changed, e.g. "split face 3 into faces 3 and 7 by new edge 13"
+  TopologyStats stats;  ///< counts after the operation
+  /// One line: the operation, what changed, then V E F, Euler characteristic, genus, components.
+  [[nodiscard]] std::string summary(std::string_view op_text) const;
+};
+
+/// Parses and applies one operation line ("insert-edge 1@1 5@2", "extrude-face 3 0.5", ...).
+/// Leading/trailing blanks and a trailing `# comment` are ignored. Throws MeshError (the mesh is
+/// unchanged) for an unknown operation, bad arguments, or a refused operation, saying why.
+/// A blank or comment-only line does nothing and returns an empty `what`.
+OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line);
+
+/// The operations with their arguments, one per entry, for help texts.
+std::vector<std::string> operation_synopsis();
+
+/// Resolves `V@F` or `V@F#k` to the corner (the half-edge of face F leaving vertex V).
+Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text);
+
+/// Resolves an edge given as its two end vertices `V W`, or `V W@F` to pick the one on face F's
+/// loop when several edges join V and W. The returned edge's ends are V and W in either order.
+Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_view w_text);
+
+}  // namespace stitch

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages stitch needs. Idempotent: does nothing when all are present.
+set -euo pipefail
+packages=(
+  build-essential cmake ccache pkg-config
+  libeigen3-dev libosd-dev libtbb-dev libfmt-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libepoxy-dev libegl-dev libegl1-mesa-dev libgl-dev libgbm-dev libosmesa6-dev libgl1-mesa-dri
+  libglfw3-dev libimgui-dev libstb-dev
+  xvfb xauth gnuplot-nox
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "stitch: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,115 @@
+#include "stitch/analysis/continuity.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace stitch {
+
+double angle_deg(const Vec3& a, const Vec3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / std::numbers::pi;
+}
+
+namespace {
+
+struct SideResult {
+  double max_deg = 0, sum_deg = 0, max_gap = 0;
+  long count = 0;
+  bool touches_ev = false;
+  std::vector<std::pair<double, double>> by_distance;  // (distance from the EV, jump)
+};
+
+}  // namespace
+
+ContinuityReport analyze_continuity(const HalfedgeMesh& mesh, const Surface& surface,
+                                    const ContinuityOptions& options) {
+  std::vector<double> ts;
+  for (int k = 0; k < options.samples_per_side; ++k)
+    ts.push_back((k + 0.5) / options.samples_per_side);
+  for (int k = 2; k <= options.max_halvings; ++k) {
+    ts.push_back(std::ldexp(1.0, -k));
+    ts.push_back(1.0 - std::ldexp(1.0, -k));
+  }
+  std::sort(ts.begin(), ts.end());
+
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (Vertex v : mesh.vertices()) {
+    lo = lo.cwiseMin(mesh.position(v));
+    hi = hi.cwiseMax(mesh.position(v));
+  }
+  const double diagonal = std::max((hi - lo).norm(), 1e-300);
+
+  // Sides 0 and 1 of every patch cover every boundary once (sides 3 and 2 are their partners).
+  const auto& corners = surface.corners();
+  std::vector<SideResult> results(corners.size() * 2);
+  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t k) {
+    const Corner c = corners[k];
+    for (int side = 0; side < 2; ++side) {
+      SideResult& r = results[2 * k + side];
+      // Side 0 starts at the mesh vertex, side 1 ends at the face centre; the other ends are
+      // edge midpoints, where K = 4 always.
+      const int ev_k = side == 0 ? mesh.valence(mesh.origin(c)) : mesh.degree(mesh.face(c));
+      r.touches_ev = ev_k != 4;
+      const PatchNeighbour nb = neighbour_across(mesh, c, side);
+      for (double t : ts) {
+        const auto [u0, v0] = side_point(side, t);
+        const auto [u1, v1] = side_point(nb.side, t);
+        const SurfacePoint a = surface.evaluate(c, u0, v0);
+        const SurfacePoint b = surface.evaluate(nb.corner, u1, v1);
+        const double jump = angle_deg(a.normal, b.normal);
+        r.max_deg = std::max(r.max_deg, jump);
+        r.sum_deg += jump;
+        r.max_gap = std::max(r.max_gap, (a.position - b.position).norm() / diagonal);
+        ++r.count;
+        if (r.touches_ev) r.by_distance.emplace_back(side == 0 ? t : 1.0 - t, jump);
+      }
+    }
+  });
+
+  ContinuityReport rep;
+  rep.method = surface.method();
+  std::map<double, double> by_distance;
+  double sum_ev = 0, sum_reg = 0;
+  for (const SideResult& r : results) {
+    JumpStats& s = r.touches_ev ? rep.touching_ev : rep.away_from_ev;
+    s.max_deg = std::max(s.max_deg, r.max_deg);
+    s.samples += r.count;
+    (r.touches_ev ? sum_ev : sum_reg) += r.sum_deg;
+    rep.max_gap = std::max(rep.max_gap, r.max_gap);
+    for (const auto& [d, j] : r.by_distance) by_distance[d] = std::max(by_distance[d], j);
+  }
+  if (rep.touching_ev.samples) rep.touching_ev.mean_deg = sum_ev / rep.touching_ev.samples;
+  if (rep.away_from_ev.samples) rep.away_from_ev.mean_deg = sum_reg / rep.away_from_ev.samples;
+  rep.jump_by_distance.assign(by_distance.begin(), by_distance.end());
+
+  // G1 at extraordinary points: one tangent plane shared by every patch meeting there.
+  auto spread = [&](const std::vector<std::pair<Corner, std::array<double, 2>>>& at) {
+    Vec3 mean = Vec3::Zero();
+    std::vector<Vec3> normals;
+    for (const auto& [c, uv] : at) normals.push_back(surface.evaluate(c, uv[0], uv[1]).normal);
+    for (const Vec3& n : normals) mean += n;
+    double worst = 0;
+    for (const Vec3& n : normals) worst = std::max(worst, angle_deg(n, mean.normalized()));
+    return worst;
+  };
+  for (Vertex v : mesh.vertices()) {
+    if (mesh.valence(v) == 4) continue;
+    std::vector<std::pair<Corner, std::array<double, 2>>> at;
+    for (Corner c : mesh.vertex_fan(v)) at.push_back({c, {0.0, 0.0}});
+    rep.ev_normal_spread_deg = std::max(rep.ev_normal_spread_deg, spread(at));
+    ++rep.extraordinary_points;
+  }
+  for (Face f : mesh.faces()) {
+    if (mesh.degree(f) == 4) continue;
+    std::vector<std::pair<Corner, std::array<double, 2>>> at;
+    for (Corner c : mesh.face_loop(f)) at.push_back({c, {1.0, 1.0}});
+    rep.ev_normal_spread_deg = std::max(rep.ev_normal_spread_deg, spread(at));
+    ++rep.extraordinary_points;
+  }
+  return rep;
+}
+
+}  // namespace stitch

@@ -1,0 +1,328 @@
+#include "stitch/eval/catmull_clark.hpp"
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/bfr/surfaceFactoryCache.h>
+#include <opensubdiv/far/topologyRefiner.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <shared_mutex>
+#include <string>
+#include <vector>
+
+namespace stitch {
+namespace {
+
+namespace Osd = OpenSubdiv;
+
+// The live elements of a half-edge mesh numbered densely, as OpenSubdiv wants them. Face f's
+// vertices are given in the order of face_loop(f), so corner c is face vertex index_in_face(c).
+struct OsdTopology {
+  const HalfedgeMesh* mesh = nullptr;
+  std::vector<Vertex> vertices;
+  std::vector<Edge> edges;
+  std::vector<Face> faces;
+  std::vector<int> vertex_id, edge_id, face_id;  // mesh index -> dense index (-1 if deleted)
+  mutable std::vector<std::string> problems;     // filled by OpenSubdiv's topology validation
+
+  explicit OsdTopology(const HalfedgeMesh& m) : mesh(&m) {
+    vertices = m.vertices();
+    edges = m.edges();
+    faces = m.faces();
+    vertex_id.assign(static_cast<size_t>(m.vertex_capacity()), -1);
+    edge_id.assign(static_cast<size_t>(m.edge_capacity()), -1);
+    face_id.assign(static_cast<size_t>(m.face_capacity()), -1);
+    for (size_t i = 0; i < vertices.size(); ++i) vertex_id[vertices[i].idx] = static_cast<int>(i);
+    for (size_t i = 0; i < edges.size(); ++i) edge_id[edges[i].idx] = static_cast<int>(i);
+    for (size_t i = 0; i < faces.size(); ++i) face_id[faces[i].idx] = static_cast<int>(i);
+  }
+  [[nodiscard]] int id(Vertex v) const { return vertex_id[v.idx]; }
+  [[nodiscard]] int id(Edge e) const { return edge_id[e.idx]; }
+  [[nodiscard]] int id(Face f) const { return face_id[f.idx]; }
+};
+
+}  // namespace
+}  // namespace stitch
+
+// The half-edge mesh knows every relation OpenSubdiv needs, so the topology is given in full
+// (with explicit edges): inferring edges from face-vertices would merge the several edges
+// between one pair of vertices that the topology operators create into one non-manifold edge.
+namespace OpenSubdiv {
+namespace OPENSUBDIV_VERSION {
+namespace Far {
+
+using stitch::OsdTopology;
+
+template <>
+bool TopologyRefinerFactory<OsdTopology>::resizeComponentTopology(TopologyRefiner& refiner,
+                                                                  const OsdTopology& topo) {
+  const stitch::HalfedgeMesh& mesh = *topo.mesh;
+  setNumBaseVertices(refiner, static_cast<int>(topo.vertices.size()));
+  for (size_t i = 0; i < topo.vertices.size(); ++i) {
+    // Closed mesh: as many incident edges as incident faces.
+    const int valence = mesh.valence(topo.vertices[i]);
+    setNumBaseVertexFaces(refiner, static_cast<Index>(i), valence);
+    setNumBaseVertexEdges(refiner, static_cast<Index>(i), valence);
+  }
+  setNumBaseFaces(refiner, static_cast<int>(topo.faces.size()));
+  for (size_t i = 0; i < topo.faces.size(); ++i) {
+    setNumBaseFaceVertices(refiner, static_cast<Index>(i), mesh.degree(topo.faces[i]));
+  }
+  setNumBaseEdges(refiner, static_cast<int>(topo.edges.size()));
+  for (size_t i = 0; i < topo.edges.size(); ++i) setNumBaseEdgeFaces(refiner, static_cast<Index>(i), 2);
+  return true;
+}
+
+template <>
+bool TopologyRefinerFactory<OsdTopology>::assignComponentTopology(TopologyRefiner& refiner,
+                                                                  const OsdTopology& topo) {
+  using stitch::HalfedgeMesh;
+  const HalfedgeMesh& mesh = *topo.mesh;
+  for (size_t i = 0; i < topo.faces.size(); ++i) {
+    IndexArray face_vertices = getBaseFaceVertices(refiner, static_cast<Index>(i));
+    IndexArray face_edges = getBaseFaceEdges(refiner, static_cast<Index>(i));
+    const auto loop = mesh.face_loop(topo.faces[i]);
+    for (size_t j = 0; j < loop.size(); ++j) {
+      face_vertices[static_cast<int>(j)] = topo.id(mesh.origin(loop[j]));
+      face_edges[static_cast<int>(j)] = topo.id(HalfedgeMesh::edge(loop[j]));
+    }
+  }
+  for (size_t i = 0; i < topo.edges.size(); ++i) {
+    IndexArray edge_vertices = getBaseEdgeVertices(refiner, static_cast<Index>(i));
+    IndexArray edge_faces = getBaseEdgeFaces(refiner, static_cast<Index>(i));
+    LocalIndexArray edge_in_face = getBaseEdgeFaceLocalIndices(refiner, static_cast<Index>(i));
+    for (int side = 0; side < 2; ++side) {
+      const stitch::Halfedge h = HalfedgeMesh::halfedge(topo.edges[i], side);
+      edge_vertices[side] = topo.id(mesh.origin(h));
+      edge_faces[side] = topo.id(mesh.face(h));
+      edge_in_face[side] = static_cast<LocalIndex>(mesh.index_in_face(h));
+    }
+  }
+  // OpenSubdiv orders the faces around a vertex counter-clockwise with edge i leading out of
+  // face i (the edge from the vertex to the next vertex of the face) and face i+1 across the
+  // trailing edge of face i: that is vertex_fan's order, corner i+1 = rotate_ccw(corner i).
+  for (size_t i = 0; i < topo.vertices.size(); ++i) {
+    const auto v = static_cast<Index>(i);
+    IndexArray vertex_faces = getBaseVertexFaces(refiner, v);
+    IndexArray vertex_edges = getBaseVertexEdges(refiner, v);
+    LocalIndexArray in_face = getBaseVertexFaceLocalIndices(refiner, v);
+    LocalIndexArray in_edge = getBaseVertexEdgeLocalIndices(refiner, v);
+    const auto fan = mesh.vertex_fan(topo.vertices[i]);
+    for (size_t k = 0; k < fan.size(); ++k) {
+      const auto kk = static_cast<int>(k);
+      vertex_faces[kk] = topo.id(mesh.face(fan[k]));
+      in_face[kk] = static_cast<LocalIndex>(mesh.index_in_face(fan[k]));
+      vertex_edges[kk] = topo.id(HalfedgeMesh::edge(fan[k]));
+      in_edge[kk] = static_cast<LocalIndex>(fan[k].idx & 1);  // side 1 of an edge starts at its v1
+    }
+  }
+  return true;
+}
+
+template <>
+void TopologyRefinerFactory<OsdTopology>::reportInvalidTopology(TopologyError /*code*/,
+                                                                const char* msg,
+                                                                const OsdTopology& topo) {
+  topo.problems.emplace_back(msg);
+}
+
+}  // namespace Far
+}  // namespace OPENSUBDIV_VERSION
+}  // namespace OpenSubdiv
+
+namespace stitch {
+namespace {
+
+using SurfaceCache =
+    Osd::Bfr::SurfaceFactoryCacheThreaded<std::shared_mutex, std::shared_lock<std::shared_mutex>,
+                                          std::unique_lock<std::shared_mutex>>;
+using SurfaceFactory = Osd::Bfr::RefinerSurfaceFactory<SurfaceCache>;
+
+// OpenSubdiv's (s, t) of the four vertices of a quad face, in face order.
+constexpr std::array<std::array<double, 2>, 4> kQuadVertexCoord{
+    {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}};
+
+// Faces OpenSubdiv cannot represent: Vtr identifies a face's edges by position in the face, so
+// an edge may not appear twice in one face ("the same edge cannot appear twice in a face",
+// far/topologyRefinerFactory.h).
+void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
+  for (Face f : mesh.faces()) {
+    for (Halfedge h : mesh.face_loop(f)) {
+      if (mesh.face(HalfedgeMesh::twin(h)) == f) {
+        throw MeshError(fmt::format(
+            "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: its loop runs along edge "
+            "{} (vertices {} and {}) twice, which OpenSubdiv cannot represent; use mdc or asc",
+            f.idx, HalfedgeMesh::edge(h).idx, mesh.origin(h).idx, mesh.target(h).idx));
+      }
+    }
+  }
+}
+
+// Bfr builds no surface for a face with a 2-sided face at one of its vertices (seen on a cube
+// with one edge doubled by a 2-gon); name that cause when it is present.
+[[noreturn]] void throw_no_limit_surface(const HalfedgeMesh& mesh, Face f) {
+  std::string cause;
+  for (Halfedge c : mesh.face_loop(f)) {
+    for (Halfedge around : mesh.vertex_fan(mesh.origin(c))) {
+      if (cause.empty() && mesh.degree(mesh.face(around)) == 2) {
+        cause = fmt::format(" (its vertex {} has the 2-sided face {}, which OpenSubdiv's Bfr does "
+                            "not support)",
+                            mesh.origin(c).idx, mesh.face(around).idx);
+      }
+    }
+  }
+  throw MeshError(fmt::format(
+      "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
+      "surface{}; use mdc or asc",
+      f.idx, cause));
+}
+
+}  // namespace
+
+struct CatmullClarkSurface::Impl {
+  std::vector<Osd::Bfr::Surface<double>> surfaces;  // per dense face
+  std::vector<double> patch_points;                 // xyz, all faces one after the other
+  std::vector<size_t> patch_offset;                 // per dense face, into patch_points
+  std::vector<int> corner_face;                     // per half-edge: dense face, -1 if deleted
+  std::vector<int> corner_index;                    // per half-edge: index in its face's loop
+};
+
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : impl_(std::make_unique<Impl>()) {
+  if (mesh.num_faces() == 0) throw MeshError("cc: the mesh has no faces");
+  refuse_unsupported_topology(mesh);
+
+  const OsdTopology topo(mesh);
+  using RefinerFactory = Osd::Far::TopologyRefinerFactory<OsdTopology>;
+  Osd::Sdc::Options sdc_options;
+  sdc_options.SetVtxBoundaryInterpolation(Osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, sdc_options);
+  options.validateFullTopology = true;
+  const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
+  if (!refiner || !topo.problems.empty()) {
+    throw MeshError(fmt::format(
+        "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: OpenSubdiv refused its "
+        "topology{}{}",
+        topo.problems.empty() ? "" : ": ", topo.problems.empty() ? "" : topo.problems.front()));
+  }
+  // OpenSubdiv accepts some topology only by tagging it non-manifold (then sharpened) or as a
+  // hole (faces of fewer than 3 sides): the result would not be the Catmull-Clark limit surface.
+  const Osd::Far::TopologyLevel& level = refiner->GetLevel(0);
+  for (int v = 0; v < level.GetNumVertices(); ++v) {
+    if (level.IsVertexNonManifold(v)) {
+      throw MeshError(fmt::format(
+          "cc (Catmull-Clark through OpenSubdiv) cannot handle vertex {}: OpenSubdiv treats its "
+          "neighbourhood as non-manifold; use mdc or asc",
+          topo.vertices[v].idx));
+    }
+  }
+  for (int f = 0; f < level.GetNumFaces(); ++f) {
+    if (level.IsFaceHole(f)) {
+      throw MeshError(fmt::format(
+          "cc (Catmull-Clark through OpenSubdiv) cannot handle face {} of degree {}: OpenSubdiv "
+          "makes it a hole; use mdc or asc",
+          topo.faces[f].idx, mesh.degree(topo.faces[f])));
+    }
+  }
+
+  const SurfaceFactory factory(*refiner, SurfaceFactory::Options());
+  const int num_faces = static_cast<int>(topo.faces.size());
+  Impl& impl = *impl_;
+  impl.surfaces.resize(static_cast<size_t>(num_faces));
+  std::vector<char> ok(static_cast<size_t>(num_faces), 0);
+  tbb::parallel_for(0, num_faces, [&](int f) {
+    ok[f] = factory.InitVertexSurface(f, &impl.surfaces[f]) ? 1 : 0;
+  });
+  for (int f = 0; f < num_faces; ++f) {
+    if (ok[f] == 0) throw_no_limit_surface(mesh, topo.faces[f]);
+  }
+
+  impl.patch_offset.resize(static_cast<size_t>(num_faces) + 1);
+  impl.patch_offset[0] = 0;
+  for (int f = 0; f < num_faces; ++f) {
+    impl.patch_offset[f + 1] =
+        impl.patch_offset[f] + 3 * static_cast<size_t>(impl.surfaces[f].GetNumPatchPoints());
+  }
+  impl.patch_points.resize(impl.patch_offset.back());
+  std::vector<double> mesh_points(3 * topo.vertices.size());
+  for (size_t i = 0; i < topo.vertices.size(); ++i) {
+    const Vec3& p = mesh.position(topo.vertices[i]);
+    for (int k = 0; k < 3; ++k) mesh_points[3 * i + k] = p[k];
+  }
+  const Osd::Bfr::Surface<double>::PointDescriptor xyz(3);
+  tbb::parallel_for(0, num_faces, [&](int f) {
+    impl.surfaces[f].PreparePatchPoints(mesh_points.data(), xyz,
+                                        impl.patch_points.data() + impl.patch_offset[f], xyz);
+  });
+
+  impl.corner_face.assign(static_cast<size_t>(mesh.halfedge_capacity()), -1);
+  impl.corner_index.assign(static_cast<size_t>(mesh.halfedge_capacity()), -1);
+  for (int f = 0; f < num_faces; ++f) {
+    const auto loop = mesh.face_loop(topo.faces[f]);
+    for (size_t k = 0; k < loop.size(); ++k) {
+      impl.corner_face[loop[k].idx] = f;
+      impl.corner_index[loop[k].idx] = static_cast<int>(k);
+    }
+  }
+}
+
+CatmullClarkSurface::~CatmullClarkSurface() = default;
+CatmullClarkSurface::CatmullClarkSurface(CatmullClarkSurface&&) noexcept = default;
+CatmullClarkSurface& CatmullClarkSurface::operator=(CatmullClarkSurface&&) noexcept = default;
+
+SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
+  const Impl& impl = *impl_;
+  if (c.idx < 0 || c.idx >= static_cast<int>(impl.corner_face.size()) ||
+      impl.corner_face[c.idx] < 0) {
+    throw MeshError(fmt::format("cc: corner {} is not a live half-edge of the mesh", c.idx));
+  }
+  const int f = impl.corner_face[c.idx];
+  const int k = impl.corner_index[c.idx];
+  const Osd::Bfr::Surface<double>& surface = impl.surfaces[f];
+  const Osd::Bfr::Parameterization param = surface.GetParameterization();
+
+  // (s, t) in OpenSubdiv's domain of the face and the Jacobian d(s, t)/d(u, v) (columns
+  // ds_du, ds_dv). Corner patches are half the size of the face's domain on each side.
+  double st[2];
+  std::array<double, 2> st_du{}, st_dv{};
+  if (param.GetType() == Osd::Bfr::Parameterization::QUAD) {
+    const auto& p0 = kQuadVertexCoord[k];
+    const auto& pn = kQuadVertexCoord[(k + 1) % 4];
+    const auto& pp = kQuadVertexCoord[(k + 3) % 4];
+    for (int i = 0; i < 2; ++i) {
+      st_du[i] = 0.5 * (pn[i] - p0[i]);
+      st_dv[i] = 0.5 * (pp[i] - p0[i]);
+      st[i] = p0[i] + u * st_du[i] + v * st_dv[i];
+    }
+  } else {
+    // A sub-face's normalized (0,0) is at its face vertex, its first coordinate runs towards
+    // the next vertex of the face (checked by the patch-side tests).
+    const double sub[2] = {u, v};
+    param.ConvertNormalizedSubFaceToCoord(k, sub, st);
+    st_du = {0.5, 0.0};
+    st_dv = {0.0, 0.5};
+  }
+
+  double pos[3], ds[3], dt[3];
+  surface.Evaluate(st, impl.patch_points.data() + impl.patch_offset[f],
+                   Osd::Bfr::Surface<double>::PointDescriptor(3), pos, ds, dt);
+  SurfacePoint out;
+  out.position = Vec3(pos[0], pos[1], pos[2]);
+  const Vec3 d_s(ds[0], ds[1], ds[2]), d_t(dt[0], dt[1], dt[2]);
+  out.du = st_du[0] * d_s + st_du[1] * d_t;
+  out.dv = st_dv[0] * d_s + st_dv[1] * d_t;
+  const Vec3 n = out.du.cross(out.dv);
+  const double len = n.norm();
+  // Catmull-Clark limit surfaces are regular everywhere (the tangent plane is defined at
+  // extraordinary points too), so a vanishing cross product means a degenerate input.
+  out.normal = len > 0.0 ? Vec3(n / len) : Vec3::UnitZ();
+  out.level = 0;
+  return out;
+}
+
+}  // namespace stitch

@@ -1,0 +1,44 @@
+#include "stitch/eval/surface.hpp"
+
+#include <stdexcept>
+
+namespace stitch {
+
+std::string to_string(Method m) {
+  switch (m) {
+    case Method::mdc:
+      return "mdc";
+    case Method::asc:
+      return "asc";
+    case Method::cc:
+      return "cc";
+  }
+  return "?";
+}
+
+Method parse_method(const std::string& s) {
+  if (s == "mdc") return Method::mdc;
+  if (s == "asc") return Method::asc;
+  if (s == "cc") return Method::cc;
+  throw std::invalid_argument("unknown method '" + s + "' (expected mdc, asc or cc)");
+}
+
+Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
+    : method_(method),
+      bezier_(build_bezier_surface(mesh, kgon_options)) {
+  if (method == Method::cc) cc_ = std::make_shared<const CatmullClarkSurface>(mesh);
+}
+
+SurfacePoint Surface::evaluate(Corner c, double u, double v) const {
+  switch (method_) {
+    case Method::mdc:
+      return bezier_.evaluate(c, u, v, BezierRule::mdc);
+    case Method::asc:
+      return bezier_.evaluate(c, u, v, BezierRule::asc);
+    case Method::cc:
+      return cc_->evaluate(c, u, v);
+  }
+  return {};
+}
+
+}  // namespace stitch

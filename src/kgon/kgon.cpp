@@ -1,0 +1,174 @@
+#include "stitch/kgon/kgon.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+
+namespace stitch {
+
+std::vector<double> doo_sabin_weights(int n) {
+  std::vector<double> a(n);
+  a[0] = 0.25 + 5.0 / (4.0 * n);
+  for (int k = 1; k < n; ++k) a[k] = (3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * k / n)) / (4.0 * n);
+  return a;
+}
+
+std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop) {
+  const int n = static_cast<int>(loop.size());
+  const auto a = doo_sabin_weights(n);
+  std::vector<Vec3> out(n, Vec3::Zero());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out[i] += a[((j - i) % n + n) % n] * loop[j];
+  return out;
+}
+
+namespace {
+
+Vec3 centroid_of(const std::vector<Vec3>& pts) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : pts) c += p;
+  return c / static_cast<double>(pts.size());
+}
+
+/// Newell's normal: area-weighted and oriented by the loop's winding, even for non-planar loops.
+Vec3 newell_normal(const std::vector<Vec3>& pts) {
+  Vec3 n = Vec3::Zero();
+  const size_t k = pts.size();
+  for (size_t i = 0; i < k; ++i) n += pts[i].cross(pts[(i + 1) % k]);
+  return n;
+}
+
+Vec3 face_newell(const HalfedgeMesh& m, Face f) {
+  std::vector<Vec3> pts;
+  for (Halfedge h : m.face_loop(f)) pts.push_back(m.position(m.origin(h)));
+  return newell_normal(pts);
+}
+
+/// Least-squares plane normal through the centroid, oriented like the loop's winding. The
+/// winding decides the side because the smallest-eigenvalue eigenvector has no sign of its own.
+Vec3 plane_normal(const std::vector<Vec3>& pts, const Vec3& centroid, const Vec3& orientation) {
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : pts) cov += (p - centroid) * (p - centroid).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  Vec3 n = solver.eigenvectors().col(0);
+  if (n.dot(orientation) < 0) n = -n;
+  return n;
+}
+
+/// Least-squares fit by an affinely regular polygon: the projection of the loop onto its first
+/// harmonic (k = +-1), which is what repeated midpoint polygons converge to up to scale. It is
+/// convex whatever the input's shape (a star polygon becomes convex).
+void regularize(std::vector<Vec3>& pts, const Vec3& c) {
+  const int k = static_cast<int>(pts.size());
+  if (k < 3) return;
+  Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+  for (int j = 0; j < k; ++j) {
+    const double t = 2.0 * std::numbers::pi * j / k;
+    a += (pts[j] - c) * std::cos(t);
+    b += (pts[j] - c) * std::sin(t);
+  }
+  a *= 2.0 / k;
+  b *= 2.0 / k;
+  for (int j = 0; j < k; ++j) {
+    const double t = 2.0 * std::numbers::pi * j / k;
+    pts[j] = c + a * std::cos(t) + b * std::sin(t);
+  }
+}
+
+void apply_control(Kgon& g, const KgonControl& ctl) {
+  if (ctl == KgonControl{}) return;
+  if (ctl.regularize) regularize(g.points, g.centroid);
+  const Eigen::AngleAxisd rot(ctl.rotate_deg * std::numbers::pi / 180.0, g.normal);
+  for (Vec3& p : g.points) p = g.centroid + ctl.scale * (rot * (p - g.centroid)) + ctl.offset;
+  g.centroid += ctl.offset;
+}
+
+/// Shrinks the polygon over the corner points once more, and flattens it unless K = 4.
+Kgon make_kgon(const KgonSet& set, std::vector<Corner> corners, const Vec3& fallback_normal) {
+  Kgon g;
+  std::vector<Vec3> polygon;
+  for (Corner c : corners) polygon.push_back(set.corner_point[c.idx]);
+  g.corners = std::move(corners);
+  g.points = doo_sabin_shrink(polygon);
+  g.centroid = centroid_of(g.points);
+  const Vec3 winding = newell_normal(g.points);
+  const int k = g.size();
+  if (k == 2) {
+    // Two points span no plane: keep them, and take the normal from the faces around.
+    g.normal = fallback_normal.norm() > 0 ? fallback_normal.normalized() : Vec3::UnitZ();
+    return g;
+  }
+  g.normal = plane_normal(g.points, g.centroid, winding.norm() > 0 ? winding : fallback_normal);
+  if (k != 4)
+    for (Vec3& p : g.points) p -= (p - g.centroid).dot(g.normal) * g.normal;
+  return g;
+}
+
+}  // namespace
+
+KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
+  KgonSet set;
+  const int nh = m.halfedge_capacity();
+  set.corner_point.assign(nh, Vec3::Zero());
+  set.in_face.assign(nh, -1);
+  set.in_vertex.assign(nh, -1);
+  set.in_next_edge.assign(nh, -1);
+  set.in_prev_edge.assign(nh, -1);
+  set.face.resize(m.face_capacity());
+  set.vertex.resize(m.vertex_capacity());
+  set.edge.resize(m.edge_capacity());
+
+  std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
+  for (Face f : m.faces()) {
+    face_normal[f.idx] = face_newell(m, f);
+    const auto loop = m.face_loop(f);
+    std::vector<Vec3> pts;
+    for (Halfedge h : loop) pts.push_back(m.position(m.origin(h)));
+    const auto w = doo_sabin_shrink(pts);
+    for (size_t i = 0; i < loop.size(); ++i) set.corner_point[loop[i].idx] = w[i];
+  }
+  // The normal of the faces around a set of corners, for K-gons too small to have a plane.
+  auto around = [&](const std::vector<Corner>& corners) {
+    Vec3 n = Vec3::Zero();
+    for (Corner c : corners)
+      n += face_normal[m.face(c).idx] + face_normal[m.face(HalfedgeMesh::twin(c)).idx];
+    return n;
+  };
+  auto control_for = [&](const std::unordered_map<int, KgonControl>& per_element, int idx,
+                         int k) -> KgonControl {
+    if (auto it = per_element.find(idx); it != per_element.end()) return it->second;
+    return k != 4 ? options.global : KgonControl{};
+  };
+
+  for (Face f : m.faces()) {
+    auto loop = m.face_loop(f);
+    for (size_t i = 0; i < loop.size(); ++i) set.in_face[loop[i].idx] = static_cast<int>(i);
+    Kgon g = make_kgon(set, loop, around(loop));
+    apply_control(g, control_for(options.face, f.idx, g.size()));
+    set.face[f.idx] = std::move(g);
+  }
+  for (Vertex v : m.vertices()) {
+    auto fan = m.vertex_fan(v);
+    for (size_t i = 0; i < fan.size(); ++i) set.in_vertex[fan[i].idx] = static_cast<int>(i);
+    Kgon g = make_kgon(set, fan, around(fan));
+    apply_control(g, control_for(options.vertex, v.idx, g.size()));
+    set.vertex[v.idx] = std::move(g);
+  }
+  for (Edge e : m.edges()) {
+    // Counter-clockwise seen from the side the faces point to: h = (a -> b) has its face on the
+    // left, so the order is h (left, at a), next(t) (right, at a), t (right, at b), next(h).
+    const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
+    std::vector<Corner> corners{h, m.next(t), t, m.next(h)};
+    set.in_next_edge[h.idx] = 0;
+    set.in_prev_edge[m.next(t).idx] = 1;
+    set.in_next_edge[t.idx] = 2;
+    set.in_prev_edge[m.next(h).idx] = 3;
+    Kgon g = make_kgon(set, corners, around({h}));
+    if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
+    set.edge[e.idx] = std::move(g);
+  }
+  return set;
+}
+
+}  // namespace stitch

@@ -1,0 +1,245 @@
+#include "stitch/mesh/io.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "io_detail.hpp"
+
+namespace stitch {
+
+namespace io_detail {
+
+std::string at_line(const std::string& path, int line) {
+  return fmt::format("{}, line {}", path, line);
+}
+
+namespace {
+
+// std::from_chars does not take a leading '+', which some writers emit.
+std::string_view without_plus(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+')
+    token.remove_prefix(1);
+  return token;
+}
+
+}  // namespace
+
+double parse_double(std::string_view token, const std::string& where) {
+  const std::string_view t = without_plus(token);
+  double value = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    throw MeshError(fmt::format("{}: number '{}' is out of range", where, token));
+  if (ec != std::errc() || end != t.data() + t.size())
+    throw MeshError(fmt::format("{}: '{}' is not a number", where, token));
+  if (!std::isfinite(value))
+    throw MeshError(fmt::format("{}: coordinate '{}' is not finite", where, token));
+  return value;
+}
+
+long long parse_integer(std::string_view token, const std::string& where) {
+  const std::string_view t = without_plus(token);
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    throw MeshError(fmt::format("{}: integer '{}' is out of range", where, token));
+  if (ec != std::errc() || end != t.data() + t.size())
+    throw MeshError(fmt::format("{}: '{}' is not an integer", where, token));
+  return value;
+}
+
+std::vector<std::string_view> tokens(std::string_view line) {
+  if (const size_t hash = line.find('#'); hash != std::string_view::npos)
+    line = line.substr(0, hash);
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    const size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+bool LineReader::next(std::string_view& line) {
+  if (pos_ >= text_.size()) return false;
+  size_t end = text_.find('\n', pos_);
+  if (end == std::string_view::npos) end = text_.size();
+  line = text_.substr(pos_, end - pos_);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  pos_ = end + 1;
+  ++line_;
+  return true;
+}
+
+void require_text(std::string_view line, const std::string& path, int line_number) {
+  for (char c : line) {
+    const auto byte = static_cast<unsigned char>(c);
+    // Control characters other than tab/CR/form feed do not occur in text; bytes >= 0x80 may
+    // (UTF-8 in comments), so they are left to the parsers.
+    if (byte < 0x20 && c != '\t' && c != '\r' && c != '\f')
+      throw MeshError(
+          fmt::format("{}: not a text file (byte 0x{:02x})", at_line(path, line_number), byte));
+  }
+}
+
+}  // namespace io_detail
+
+namespace {
+
+std::string read_whole_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw MeshError(fmt::format("{}: is a folder, not a mesh file", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MeshError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
+  return std::move(buffer).str();
+}
+
+std::string supported_list() {
+  return ".obj, .off, .ply";
+}
+
+constexpr std::string_view kComment = "written by stitch";
+
+}  // namespace
+
+std::string file_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings) {
+  const std::string ext = file_extension(path);
+  if (ext != ".obj" && ext != ".off" && ext != ".ply")
+    throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
+                                ext, supported_list()));
+  const std::string text = read_whole_file(path);
+  if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
+    throw MeshError(fmt::format("{}: the file is empty", path));
+  PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings)
+                     : ext == ".off" ? io_detail::read_off(text, path, warnings)
+                                     : io_detail::read_ply(text, path, warnings);
+  soup.source = path;
+  if (soup.faces.empty()) throw MeshError(fmt::format("{}: the file contains no faces", path));
+  return soup;
+}
+
+HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report,
+                       std::vector<std::string>* warnings) {
+  const PolygonSoup soup = read_polygon_soup(path, warnings);
+  try {
+    return build_mesh(soup, options, report);
+  } catch (const MeshError& e) {
+    // build_mesh names the file only where it knows a line (not for binary PLY, nor for
+    // problems of the whole mesh); every message about a file must say which file.
+    if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
+    throw MeshError(fmt::format("{}: {}", path, e.what()));
+  }
+}
+
+void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
+  const std::string ext = file_extension(path);
+  const int nv = static_cast<int>(soup.positions.size());
+  for (const auto& loop : soup.faces)
+    for (int v : loop)
+      if (v < 0 || v >= nv)
+        throw MeshError(
+            fmt::format("cannot write {}: a face refers to vertex {} of {}", path, v + 1, nv));
+  using namespace io_detail;
+  if (ext == ".obj")
+    write_file_atomically(path, [&](std::ostream& out) {
+      write_obj(out, soup.positions, nullptr, soup.faces, kComment);
+    });
+  else if (ext == ".off")
+    write_file_atomically(
+        path, [&](std::ostream& out) { write_off(out, soup.positions, soup.faces, kComment); });
+  else if (ext == ".ply")
+    write_file_atomically(path, [&](std::ostream& out) {
+      write_ply_ascii(out, soup.positions, nullptr, soup.faces, kComment);
+    });
+  else if (ext == ".stl")
+    write_file_atomically(
+        path, [&](std::ostream& out) { write_stl(out, soup.positions, soup.faces, kComment); },
+        true);
+  else
+    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {}, .stl)",
+                                path, ext, supported_list()));
+}
+
+void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
+  write_polygon_soup(path, to_polygon_soup(mesh));
+}
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
+                           bool binary) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw MeshError(
+        fmt::format("cannot write {}: folder '{}' does not exist", path, folder.string()));
+  if (fs::is_directory(target, ec))
+    throw MeshError(fmt::format("cannot write {}: it is a folder", path));
+
+  // A fresh name beside the target (same file system, so the rename is atomic). O_EXCL makes
+  // sure we never write into someone else's file; mode 0666 lets the umask decide permissions.
+  std::random_device entropy;
+  fs::path temporary;
+  int fd = -1;
+  for (int attempt = 0; attempt < 16 && fd < 0; ++attempt) {
+    temporary = folder / fmt::format(".{}.tmp-{:08x}", target.filename().string(), entropy());
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) break;
+  }
+  if (fd < 0)
+    throw MeshError(fmt::format("cannot write {}: cannot create a file in '{}': {}", path,
+                                folder.string(), std::strerror(errno)));
+  ::close(fd);
+
+  try {
+    {
+      std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+      if (!out)
+        throw MeshError(
+            fmt::format("cannot write {}: {}", temporary.string(), std::strerror(errno)));
+      write(out);
+      out.flush();
+      if (!out) throw MeshError(fmt::format("cannot write {}: write error (disk full?)", path));
+      out.close();
+      if (out.fail()) throw MeshError(fmt::format("cannot write {}: error closing the file", path));
+    }
+    // Make the data durable before the rename makes it visible under the final name.
+    if (const int sync_fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC); sync_fd >= 0) {
+      const int synced = ::fsync(sync_fd);
+      ::close(sync_fd);
+      if (synced != 0)
+        throw MeshError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+    }
+    fs::rename(temporary, target, ec);
+    if (ec) throw MeshError(fmt::format("cannot write {}: {}", path, ec.message()));
+  } catch (...) {
+    fs::remove(temporary, ec);
+    throw;
+  }
+}
+
+}  // namespace stitch

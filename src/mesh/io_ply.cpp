@@ -1,0 +1,364 @@
+// Stanford PLY, ASCII and binary (either byte order): vertex x y z and a face list of vertex
+// indices; every other element and property is read past and ignored.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
+#include <limits>
+#include <optional>
+
+#include "io_detail.hpp"
+
+namespace stitch::io_detail {
+
+namespace {
+
+enum class Format { ascii, binary_little_endian, binary_big_endian };
+
+struct Type {
+  int size = 0;
+  bool is_float = false;
+  bool is_signed = false;
+};
+
+std::optional<Type> parse_type(std::string_view name) {
+  if (name == "char" || name == "int8") return Type{1, false, true};
+  if (name == "uchar" || name == "uint8") return Type{1, false, false};
+  if (name == "short" || name == "int16") return Type{2, false, true};
+  if (name == "ushort" || name == "uint16") return Type{2, false, false};
+  if (name == "int" || name == "int32") return Type{4, false, true};
+  if (name == "uint" || name == "uint32") return Type{4, false, false};
+  if (name == "float" || name == "float32") return Type{4, true, true};
+  if (name == "double" || name == "float64") return Type{8, true, true};
+  return std::nullopt;
+}
+
+struct Property {
+  std::string name;
+  Type type;  // of the value, or of the list items
+  std::optional<Type> list_count;
+};
+
+struct Element {
+  std::string name;
+  long long count = 0;
+  std::vector<Property> properties;
+  int header_line = 0;
+};
+
+struct Header {
+  Format format = Format::ascii;
+  std::vector<Element> elements;
+  size_t body_offset = 0;
+  int body_line = 0;  // line number of the first body line (ASCII)
+};
+
+Header read_header(std::string_view text, const std::string& path) {
+  LineReader lines(text);
+  std::string_view line;
+  if (!lines.next(line) || line != "ply")
+    throw MeshError(
+        fmt::format("{}: not a PLY file (the first line must be 'ply')", at_line(path, 1)));
+  Header header;
+  bool have_format = false;
+  while (lines.next(line)) {
+    const int number = lines.line_number();
+    const std::string where = at_line(path, number);
+    require_text(line, path, number);
+    // Comments may contain '#', so split them by hand rather than with tokens().
+    if (line.starts_with("comment") || line.starts_with("obj_info")) continue;
+    const auto words = tokens(line);
+    if (words.empty()) continue;
+    if (words[0] == "end_header") {
+      if (!have_format) throw MeshError(fmt::format("{}: header has no 'format' line", where));
+      header.body_offset = lines.offset();
+      header.body_line = number + 1;
+      return header;
+    }
+    if (words[0] == "format") {
+      if (words.size() != 3 || words[2] != "1.0")
+        throw MeshError(
+            fmt::format("{}: expected 'format <ascii|binary_little_endian|"
+                        "binary_big_endian> 1.0'",
+                        where));
+      if (words[1] == "ascii")
+        header.format = Format::ascii;
+      else if (words[1] == "binary_little_endian")
+        header.format = Format::binary_little_endian;
+      else if (words[1] == "binary_big_endian")
+        header.format = Format::binary_big_endian;
+      else
+        throw MeshError(fmt::format("{}: unknown PLY format '{}'", where, words[1]));
+      have_format = true;
+    } else if (words[0] == "element") {
+      if (words.size() != 3)
+        throw MeshError(fmt::format("{}: expected 'element <name> <count>'", where));
+      Element element{std::string(words[1]), parse_integer(words[2], where), {}, number};
+      if (element.count < 0 || element.count > std::numeric_limits<int>::max())
+        throw MeshError(fmt::format("{}: invalid element count {}", where, element.count));
+      header.elements.push_back(std::move(element));
+    } else if (words[0] == "property") {
+      if (header.elements.empty())
+        throw MeshError(fmt::format("{}: property before any element", where));
+      Property property;
+      if (words.size() == 5 && words[1] == "list") {
+        property.list_count = parse_type(words[2]);
+        const auto item = parse_type(words[3]);
+        if (!property.list_count || property.list_count->is_float || !item)
+          throw MeshError(
+              fmt::format("{}: invalid list property types '{} {}'", where, words[2], words[3]));
+        property.type = *item;
+        property.name = words[4];
+      } else if (words.size() == 3) {
+        const auto type = parse_type(words[1]);
+        if (!type) throw MeshError(fmt::format("{}: unknown property type '{}'", where, words[1]));
+        property.type = *type;
+        property.name = words[2];
+      } else {
+        throw MeshError(
+            fmt::format("{}: expected 'property <type> <name>' or 'property list "
+                        "<count type> <item type> <name>'",
+                        where));
+      }
+      header.elements.back().properties.push_back(std::move(property));
+    } else {
+      throw MeshError(fmt::format("{}: unknown header line '{}'", where, words[0]));
+    }
+  }
+  throw MeshError(fmt::format("{}: the header has no 'end_header' line", path));
+}
+
+/// Which properties of the vertex and face elements carry the mesh.
+struct Roles {
+  int vertex_element = -1, face_element = -1;
+  std::array<int, 3> xyz{-1, -1, -1};
+  int indices = -1;
+};
+
+Roles find_roles(const Header& header, const std::string& path) {
+  Roles roles;
+  for (int e = 0; e < static_cast<int>(header.elements.size()); ++e) {
+    const Element& element = header.elements[e];
+    const std::string where = at_line(path, element.header_line);
+    if (element.name == "vertex") {
+      roles.vertex_element = e;
+      for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
+        const Property& property = element.properties[p];
+        for (int k = 0; k < 3; ++k)
+          if (property.name == std::string_view("xyz" + k, 1)) {
+            if (property.list_count)
+              throw MeshError(
+                  fmt::format("{}: vertex property {} is a list", where, property.name));
+            roles.xyz[k] = p;
+          }
+      }
+      for (int k = 0; k < 3; ++k)
+        if (roles.xyz[k] < 0)
+          throw MeshError(
+              fmt::format("{}: the vertex element has no '{}' property", where, "xyz"[k]));
+    } else if (element.name == "face") {
+      roles.face_element = e;
+      for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
+        const Property& property = element.properties[p];
+        if (property.name == "vertex_indices" || property.name == "vertex_index") {
+          if (!property.list_count || property.type.is_float)
+            throw MeshError(fmt::format("{}: face property {} must be a list of integers", where,
+                                        property.name));
+          roles.indices = p;
+        }
+      }
+      if (roles.indices < 0)
+        throw MeshError(
+            fmt::format("{}: the face element has no 'vertex_indices' list property", where));
+    }
+  }
+  if (roles.vertex_element < 0)
+    throw MeshError(fmt::format("{}: the header declares no 'vertex' element", path));
+  if (roles.face_element < 0)
+    throw MeshError(fmt::format("{}: the header declares no 'face' element", path));
+  return roles;
+}
+
+/// Reads the values of one element instance (ASCII: one line; binary: a run of bytes) and hands
+/// each scalar or list item to `use(property index, item index, value)`.
+class BodyReader {
+ public:
+  BodyReader(std::string_view text, const Header& header, const std::string& path)
+      : header_(header), path_(path), body_(text.substr(header.body_offset)), lines_(body_) {}
+
+  /// Returns the element's line (0 for binary files, which have none).
+  template <class Use>
+  int read(const Element& element, long long index, Use&& use) {
+    if (header_.format != Format::ascii) {
+      read_binary(element, index, use);
+      return 0;
+    }
+    read_ascii(element, index, use);
+    return line_number();
+  }
+
+  /// True when nothing but white space follows the last element.
+  bool at_end() {
+    if (header_.format != Format::ascii) return position_ == body_.size();
+    std::string_view line;
+    while (lines_.next(line))
+      if (!tokens(line).empty()) return false;
+    return true;
+  }
+
+ private:
+  template <class Use>
+  void read_ascii(const Element& element, long long index, Use& use) {
+    std::string_view line;
+    std::vector<std::string_view> words;
+    while (words.empty()) {
+      if (!lines_.next(line))
+        throw MeshError(
+            fmt::format("{}: the file ends after {} of the {} '{}' elements declared "
+                        "in the header (line {}; truncated?)",
+                        at_line(path_, header_.body_line + lines_.line_number() - 1), index,
+                        element.count, element.name, element.header_line));
+      require_text(line, path_, line_number());
+      words = tokens(line);
+    }
+    const std::string where = at_line(path_, line_number());
+    size_t next = 0;
+    auto take = [&](const Type& type) {
+      if (next == words.size())
+        throw MeshError(fmt::format("{}: too few values for a '{}' element", where, element.name));
+      const std::string_view word = words[next++];
+      return type.is_float ? parse_double(word, where)
+                           : static_cast<double>(parse_integer(word, where));
+    };
+    for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
+      const Property& property = element.properties[p];
+      if (!property.list_count) {
+        use(p, -1, take(property.type));
+        continue;
+      }
+      const double count = take(*property.list_count);
+      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where, count));
+      use(p, -1, count);
+      for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
+    }
+    if (next != words.size())
+      throw MeshError(fmt::format("{}: {} values more than a '{}' element has", where,
+                                  words.size() - next, element.name));
+  }
+
+  template <class Use>
+  void read_binary(const Element& element, long long index, Use& use) {
+    const std::string where =
+        fmt::format("{}, {} element {} (counting from 0, binary data)", path_, element.name, index);
+    auto take = [&](const Type& type) {
+      if (position_ + type.size > body_.size())
+        throw MeshError(
+            fmt::format("{}: the file ends in {} element {} of the {} declared in the "
+                        "header (truncated?)",
+                        path_, element.name, index, element.count));
+      std::array<unsigned char, 8> bytes{};
+      std::memcpy(bytes.data(), body_.data() + position_, type.size);
+      position_ += type.size;
+      const bool big = header_.format == Format::binary_big_endian;
+      if (big != (std::endian::native == std::endian::big))
+        std::reverse(bytes.begin(), bytes.begin() + type.size);
+      if (type.is_float) {
+        double value;
+        if (type.size == 4) {
+          float f;
+          std::memcpy(&f, bytes.data(), 4);
+          value = f;
+        } else {
+          std::memcpy(&value, bytes.data(), 8);
+        }
+        return value;
+      }
+      std::uint32_t raw = 0;
+      std::memcpy(&raw, bytes.data(), type.size);  // little-endian host assumed below
+      if constexpr (std::endian::native == std::endian::big) raw >>= 8 * (4 - type.size);
+      if (type.is_signed) {
+        const int shift = 32 - 8 * type.size;
+        return static_cast<double>(static_cast<std::int32_t>(raw << shift) >> shift);
+      }
+      return static_cast<double>(raw);
+    };
+    for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
+      const Property& property = element.properties[p];
+      if (!property.list_count) {
+        use(p, -1, take(property.type));
+        continue;
+      }
+      const double count = take(*property.list_count);
+      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where, count));
+      use(p, -1, count);
+      for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
+    }
+  }
+
+  [[nodiscard]] int line_number() const { return header_.body_line + lines_.line_number() - 1; }
+
+  const Header& header_;
+  const std::string& path_;
+  std::string_view body_;
+  LineReader lines_;
+  size_t position_ = 0;
+};
+
+}  // namespace
+
+PolygonSoup read_ply(std::string_view text, const std::string& path,
+                     std::vector<std::string>* warnings) {
+  const Header header = read_header(text, path);
+  const Roles roles = find_roles(header, path);
+  const long long nv = header.elements[roles.vertex_element].count;
+  PolygonSoup soup;
+  BodyReader body(text, header, path);
+  const bool ascii = header.format == Format::ascii;
+  for (int e = 0; e < static_cast<int>(header.elements.size()); ++e) {
+    const Element& element = header.elements[e];
+    for (long long i = 0; i < element.count; ++i) {
+      if (e == roles.vertex_element) {
+        Vec3 p = Vec3::Zero();
+        const int line = body.read(element, i, [&](int property, int, double value) {
+          for (int k = 0; k < 3; ++k)
+            if (property == roles.xyz[k]) p[k] = value;
+        });
+        if (!p.allFinite())
+          throw MeshError(
+              fmt::format("{}, vertex element {} (counting from 0): coordinate is not "
+                          "finite",
+                          path, i));
+        soup.positions.push_back(p);
+        // For binary files there is no line (0); build_mesh then names the vertex number only.
+        soup.vertex_lines.push_back(line);
+      } else if (e == roles.face_element) {
+        std::vector<int> loop;
+        std::string bad_index;
+        const int line = body.read(element, i, [&](int property, int item, double value) {
+          if (property != roles.indices || item < 0) return;
+          if ((value < 0 || value >= static_cast<double>(nv)) && bad_index.empty())
+            bad_index = fmt::format(
+                "face refers to vertex {} (0-based), but the file has {} "
+                "vertices",
+                value, nv);
+          loop.push_back(static_cast<int>(value));
+        });
+        if (!bad_index.empty())
+          throw MeshError(
+              fmt::format("{}: {}",
+                          ascii ? at_line(path, line)
+                                : fmt::format("{}, face element {} (counting from 0)", path, i),
+                          bad_index));
+        soup.faces.push_back(std::move(loop));
+        soup.face_lines.push_back(line);
+      } else {
+        body.read(element, i, [](int, int, double) {});
+      }
+    }
+  }
+  if (!body.at_end() && warnings)
+    warnings->push_back(fmt::format("{}: ignoring data after the last declared element", path));
+  return soup;
+}
+
+}  // namespace stitch::io_detail

@@ -1,0 +1,362 @@
+#include "stitch/render/renderer.hpp"
+
+#include <Eigen/Geometry>
+#include <epoxy/gl.h>
+#include <fmt/format.h>
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+
+#include "shaders.hpp"
+#include "stitch/render/gl_context.hpp"
+
+namespace stitch {
+
+namespace {
+
+constexpr std::array<const char*, 5> kModeNames{"shaded", "zebra", "isophote", "levels",
+                                                "patches"};
+
+struct SurfaceVertex {
+  float position[3];
+  float normal[3];
+  std::int32_t patch;
+  std::int32_t level;
+};
+static_assert(sizeof(SurfaceVertex) == 32);
+
+struct LineVertex {
+  float position[3];
+  float colour[3];
+};
+
+GLuint compile(GLenum type, const char* source, const char* name) {
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    std::array<char, 4096> log{};
+    glGetShaderInfoLog(shader, log.size(), nullptr, log.data());
+    glDeleteShader(shader);
+    throw RenderError(fmt::format("compiling the {} shader failed: {}", name, log.data()));
+  }
+  return shader;
+}
+
+GLuint link(const char* name, const char* vertex, const char* fragment,
+            const char* geometry = nullptr) {
+  const GLuint program = glCreateProgram();
+  std::array<GLuint, 3> shaders{compile(GL_VERTEX_SHADER, vertex, name),
+                                compile(GL_FRAGMENT_SHADER, fragment, name),
+                                geometry ? compile(GL_GEOMETRY_SHADER, geometry, name) : 0};
+  for (const GLuint s : shaders) {
+    if (s != 0) glAttachShader(program, s);
+  }
+  glLinkProgram(program);
+  for (const GLuint s : shaders) {
+    if (s != 0) glDeleteShader(s);
+  }
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    std::array<char, 4096> log{};
+    glGetProgramInfoLog(program, log.size(), nullptr, log.data());
+    glDeleteProgram(program);
+    throw RenderError(fmt::format("linking the {} shader program failed: {}", name, log.data()));
+  }
+  return program;
+}
+
+SurfaceVertex surface_vertex(const SurfaceMesh& s, int i) {
+  SurfaceVertex v{};
+  for (int k = 0; k < 3; ++k) {
+    v.position[k] = static_cast<float>(s.positions[i][k]);
+    v.normal[k] = static_cast<float>(s.normals[i][k]);
+  }
+  v.patch = i < static_cast<int>(s.patch.size()) ? s.patch[i] : 0;
+  v.level = i < static_cast<int>(s.level.size()) ? s.level[i] : 0;
+  return v;
+}
+
+void check_surface(const SurfaceMesh& s) {
+  const size_t n = s.positions.size();
+  if (s.normals.size() != n || (!s.patch.empty() && s.patch.size() != n) ||
+      (!s.level.empty() && s.level.size() != n)) {
+    throw std::invalid_argument(
+        fmt::format("surface mesh attributes disagree: {} positions, {} normals, {} patch ids, "
+                    "{} levels",
+                    n, s.normals.size(), s.patch.size(), s.level.size()));
+  }
+}
+
+struct Buffer {
+  GLuint vao = 0, vbo = 0, ebo = 0;
+  GLsizei count = 0;
+
+  void create(bool indexed) {
+    glGenVertexArrays(1, &vao);
+    glGenBuffers(1, &vbo);
+    if (indexed) glGenBuffers(1, &ebo);
+  }
+  void destroy() {
+    if (ebo != 0) glDeleteBuffers(1, &ebo);
+    if (vbo != 0) glDeleteBuffers(1, &vbo);
+    if (vao != 0) glDeleteVertexArrays(1, &vao);
+    vao = vbo = ebo = 0;
+  }
+};
+
+void upload_lines(Buffer& buffer, const std::vector<Vec3>& points,
+                  const std::vector<Colour>& colours, bool per_segment_colour) {
+  std::vector<LineVertex> data(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Colour& c = colours[per_segment_colour ? i / 2 : i];
+    for (int k = 0; k < 3; ++k) {
+      data[i].position[k] = static_cast<float>(points[i][k]);
+      data[i].colour[k] = c[k];
+    }
+  }
+  glBindVertexArray(buffer.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(LineVertex)),
+               data.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
+                        reinterpret_cast<void*>(offsetof(LineVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
+                        reinterpret_cast<void*>(offsetof(LineVertex, colour)));
+  glBindVertexArray(0);
+  buffer.count = static_cast<GLsizei>(data.size());
+}
+
+void set_uniform(GLuint program, const char* name, const Eigen::Vector3f& v) {
+  glUniform3f(glGetUniformLocation(program, name), v.x(), v.y(), v.z());
+}
+void set_uniform(GLuint program, const char* name, float v) {
+  glUniform1f(glGetUniformLocation(program, name), v);
+}
+
+}  // namespace
+
+ShadingMode parse_shading_mode(const std::string& name) {
+  for (size_t i = 0; i < kModeNames.size(); ++i) {
+    if (name == kModeNames[i]) return static_cast<ShadingMode>(i);
+  }
+  throw std::invalid_argument("unknown mode '" + name +
+                              "' (expected shaded, zebra, isophote, levels or patches)");
+}
+
+std::string to_string(ShadingMode mode) { return kModeNames[static_cast<size_t>(mode)]; }
+
+std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface) {
+  std::vector<PatchRange> ranges;
+  for (int i = 0; i < static_cast<int>(surface.patch.size()); ++i) {
+    if (ranges.empty() || ranges.back().patch != surface.patch[i]) {
+      ranges.push_back({surface.patch[i], i, 0});
+    }
+    ++ranges.back().num_vertices;
+  }
+  return ranges;
+}
+
+struct Renderer::Impl {
+  GLuint surface_program = 0, line_program = 0, marker_program = 0;
+  Buffer surface;
+  int surface_vertices = 0;
+  std::array<Buffer, num_overlays> overlays;
+  Buffer markers;
+
+  Impl() {
+    if (epoxy_gl_version() < 33) {
+      throw RenderError("the renderer needs a current OpenGL 3.3 core context");
+    }
+    surface_program = link("surface", shaders::surface_vertex, shaders::surface_fragment);
+    line_program =
+        link("line", shaders::line_vertex, shaders::line_fragment, shaders::line_geometry);
+    marker_program = link("marker", shaders::marker_vertex, shaders::marker_fragment);
+    surface.create(true);
+    for (Buffer& b : overlays) b.create(false);
+    markers.create(false);
+  }
+  ~Impl() {
+    surface.destroy();
+    for (Buffer& b : overlays) b.destroy();
+    markers.destroy();
+    glDeleteProgram(surface_program);
+    glDeleteProgram(line_program);
+    glDeleteProgram(marker_program);
+  }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+void Renderer::set_surface(const SurfaceMesh& s) {
+  check_surface(s);
+  std::vector<SurfaceVertex> vertices(s.positions.size());
+  for (int i = 0; i < s.num_vertices(); ++i) vertices[i] = surface_vertex(s, i);
+  std::vector<std::uint32_t> indices;
+  indices.reserve(s.quads.size() * 6);
+  for (const auto& q : s.quads) {
+    for (const int i : q) {
+      if (i < 0 || i >= s.num_vertices()) {
+        throw std::out_of_range(fmt::format("surface quad refers to vertex {} of {}", i,
+                                            s.num_vertices()));
+      }
+    }
+    // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
+    for (const auto& t : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+      indices.insert(indices.end(), t.begin(), t.end());
+    }
+  }
+  Buffer& b = impl_->surface;
+  glBindVertexArray(b.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  // DYNAMIC_DRAW: the modeler rewrites vertex ranges of edited patches.
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(SurfaceVertex)),
+               vertices.data(), GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+               GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(SurfaceVertex),
+                        reinterpret_cast<void*>(offsetof(SurfaceVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(SurfaceVertex),
+                        reinterpret_cast<void*>(offsetof(SurfaceVertex, normal)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribIPointer(2, 1, GL_INT, sizeof(SurfaceVertex),
+                         reinterpret_cast<void*>(offsetof(SurfaceVertex, patch)));
+  glEnableVertexAttribArray(3);
+  glVertexAttribIPointer(3, 1, GL_INT, sizeof(SurfaceVertex),
+                         reinterpret_cast<void*>(offsetof(SurfaceVertex, level)));
+  glBindVertexArray(0);
+  b.count = static_cast<GLsizei>(indices.size());
+  impl_->surface_vertices = s.num_vertices();
+}
+
+void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
+  check_surface(s);
+  if (s.num_vertices() != impl_->surface_vertices || first < 0 || count < 0 ||
+      first + count > s.num_vertices()) {
+    throw std::out_of_range(fmt::format(
+        "cannot update vertices [{}, {}) of a surface of {} vertices (uploaded: {})", first,
+        first + count, s.num_vertices(), impl_->surface_vertices));
+  }
+  std::vector<SurfaceVertex> vertices(count);
+  for (int i = 0; i < count; ++i) vertices[i] = surface_vertex(s, first + i);
+  glBindBuffer(GL_ARRAY_BUFFER, impl_->surface.vbo);
+  glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first * sizeof(SurfaceVertex)),
+                  static_cast<GLsizeiptr>(count * sizeof(SurfaceVertex)), vertices.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::set_overlay(Overlay overlay, const LineSet& lines) {
+  upload_lines(impl_->overlays[static_cast<int>(overlay)], lines.points, lines.colours, true);
+}
+
+void Renderer::set_markers(const MarkerSet& markers) {
+  upload_lines(impl_->markers, markers.positions, markers.colours, false);
+}
+
+void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, int height,
+                    float pixel_scale) const {
+  const Impl& r = *impl_;
+  const double aspect = static_cast<double>(width) / std::max(height, 1);
+  const Eigen::Matrix4f view_projection =
+      projection_matrix(camera, aspect) * view_matrix(camera);
+
+  glViewport(0, 0, width, height);
+  glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  // Camera frame in world space, for lights and the zebra environment.
+  const Eigen::Matrix4f view = view_matrix(camera);
+  const Eigen::Vector3f right = view.block<1, 3>(0, 0).transpose();
+  const Eigen::Vector3f up = view.block<1, 3>(1, 0).transpose();
+  const Eigen::Vector3f back = view.block<1, 3>(2, 0).transpose();
+
+  if (style.draw_surface && r.surface.count > 0) {
+    glUseProgram(r.surface_program);
+    glUniformMatrix4fv(glGetUniformLocation(r.surface_program, "u_view_projection"), 1, GL_FALSE,
+                       view_projection.data());
+    glUniform1i(glGetUniformLocation(r.surface_program, "u_mode"), static_cast<int>(style.mode));
+    set_uniform(r.surface_program, "u_eye", camera.eye.cast<float>());
+    // Key light above-left of the camera.
+    set_uniform(r.surface_program, "u_light", (back + 0.5f * up - 0.35f * right).normalized());
+    // Stripe cylinder axis: the image's horizontal, tilted so that stripes are never parallel
+    // to the axis-aligned edges of boxy models. Its poles (reflected rays along the axis) then
+    // only appear near the left and right silhouettes, and close-ups tilted up or down (as
+    // focus_camera makes) stay clear of them. x points at the viewer so the atan seam lies
+    // behind the surface.
+    const Eigen::Vector3f axis = (right + 0.35f * up).normalized();
+    const Eigen::Vector3f sx = (back - back.dot(axis) * axis).normalized();
+    set_uniform(r.surface_program, "u_stripe_x", sx);
+    set_uniform(r.surface_program, "u_stripe_y", axis.cross(sx));
+    set_uniform(r.surface_program, "u_stripes", static_cast<float>(style.stripes));
+    set_uniform(r.surface_program, "u_base", style.surface_colour);
+    glBindVertexArray(r.surface.vao);
+    glDrawElements(GL_TRIANGLES, r.surface.count, GL_UNSIGNED_INT, nullptr);
+  }
+
+  // Overlays: parts behind the surface faintly, then the visible parts; no depth writes, so
+  // overlays never hide each other.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  const float depth_bias = 1e-3f;
+  for (const bool hidden_pass : {true, false}) {
+    const float alpha = hidden_pass ? style.hidden_alpha : 1.0f;
+    if (alpha <= 0.0f) continue;
+    glDepthFunc(hidden_pass ? GL_GREATER : GL_LEQUAL);
+    glUseProgram(r.line_program);
+    glUniformMatrix4fv(glGetUniformLocation(r.line_program, "u_view_projection"), 1, GL_FALSE,
+                       view_projection.data());
+    set_uniform(r.line_program, "u_depth_bias", depth_bias);
+    glUniform2f(glGetUniformLocation(r.line_program, "u_viewport"), static_cast<float>(width),
+                static_cast<float>(height));
+    set_uniform(r.line_program, "u_alpha", alpha);
+    for (int o = 0; o < num_overlays; ++o) {
+      if (!style.overlays[o] || r.overlays[o].count == 0) continue;
+      // The tessellation's quads are dense: thinner lines keep the surface visible.
+      const float width_px = style.line_width_px * pixel_scale *
+                             (o == static_cast<int>(Overlay::tessellation) ? 0.6f : 1.0f);
+      set_uniform(r.line_program, "u_width", width_px);
+      glBindVertexArray(r.overlays[o].vao);
+      glDrawArrays(GL_LINES, 0, r.overlays[o].count);
+    }
+    if (style.markers && r.markers.count > 0) {
+      glUseProgram(r.marker_program);
+      glUniformMatrix4fv(glGetUniformLocation(r.marker_program, "u_view_projection"), 1, GL_FALSE,
+                         view_projection.data());
+      set_uniform(r.marker_program, "u_depth_bias", depth_bias);
+      set_uniform(r.marker_program, "u_size", style.marker_size_px * pixel_scale);
+      set_uniform(r.marker_program, "u_alpha", alpha);
+      glBindVertexArray(r.markers.vao);
+      glDrawArrays(GL_POINTS, 0, r.markers.count);
+    }
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace stitch

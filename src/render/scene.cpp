@@ -1,0 +1,48 @@
+#include "stitch/render/scene.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "stitch/tess/tessellate.hpp"
+
+namespace stitch {
+
+SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution) {
+  SceneGeometry scene;
+  TessellationOptions options;
+  options.resolution = resolution;
+  options.welded = false;
+  scene.surface = tessellate(mesh, surface, options);
+  scene.input = input_faces(mesh);
+  const BezierSurface& bezier = surface.bezier();
+  scene.overlays[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
+  scene.overlays[static_cast<int>(Overlay::kgons)] = kgon_lines(bezier.kgons);
+  scene.overlays[static_cast<int>(Overlay::nets)] = control_net_lines(bezier.nets, bezier.corners);
+  scene.overlays[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
+  scene.extraordinary = extraordinary_points(mesh, bezier.kgons);
+  for (const Vec3& p : scene.surface.positions) scene.bounds.extend(p);
+  for (const Vertex v : mesh.vertices()) scene.bounds.extend(mesh.position(v));
+  return scene;
+}
+
+void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_polygons) {
+  renderer.set_surface(input_polygons ? scene.input : scene.surface);
+  for (int o = 0; o < num_overlays; ++o) {
+    renderer.set_overlay(static_cast<Overlay>(o), scene.overlays[o]);
+  }
+  renderer.set_markers(extraordinary_markers(scene.extraordinary));
+}
+
+Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
+                    double radius_edges) {
+  const Vec3 n = point.normal.normalized();
+  // Tilt towards the world's up (or z when the normal is vertical) so the view is oblique.
+  Vec3 towards = Vec3::UnitY() - Vec3::UnitY().dot(n) * n;
+  if (towards.norm() < 1e-6) towards = Vec3::UnitZ() - Vec3::UnitZ().dot(n) * n;
+  const double tilt = 30.0 * std::numbers::pi / 180.0;
+  const Vec3 from = std::cos(tilt) * n + std::sin(tilt) * towards.normalized();
+  const double extent = point.extent > 0 ? point.extent : scene.bounds.radius() * 0.25;
+  return frame_sphere(point.position, radius_edges * extent, from, aspect, scene.bounds);
+}
+
+}  // namespace stitch

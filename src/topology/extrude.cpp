@@ -1,0 +1,63 @@
+#include "stitch/topology/extrude.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "raw_mesh.hpp"
+
+namespace stitch {
+
+namespace td = topology_detail;
+
+Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
+  Vec3 n = Vec3::Zero();
+  for (Halfedge h : mesh.face_loop(f))
+    n += mesh.position(mesh.origin(h)).cross(mesh.position(mesh.target(h)));
+  const double len = n.norm();
+  return len > 0 ? Vec3(n / len) : Vec3::Zero();
+}
+
+ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance) {
+  td::check_face(mesh, f, "extrude-face");
+  if (!std::isfinite(distance))
+    throw MeshError("extrude-face: the distance must be a finite number");
+  const Vec3 n = face_normal(mesh, f);
+  // Scale-aware test: a face whose area is tiny against its size has no usable direction.
+  if (n.isZero()) throw MeshError(fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
+  const std::vector<Halfedge> loop = mesh.face_loop(f);
+  const int k = static_cast<int>(loop.size());
+
+  ExtrudeResult result;
+  result.degree = k;
+  std::vector<Vertex> top(k);
+  for (int i = 0; i < k; ++i) {
+    top[i] = mesh.add_vertex(mesh.position(mesh.origin(loop[i])) + distance * n);
+    if (i == 0) result.first_vertex = top[i].idx;
+  }
+  std::vector<Face> side(k);
+  for (int i = 0; i < k; ++i) {
+    side[i] = mesh.add_face();
+    if (i == 0) result.first_face = side[i].idx;
+  }
+  // up[i]: bottom corner i -> top corner i (its twin runs down); rim[i]: top i -> top i+1.
+  std::vector<Halfedge> up(k), rim(k);
+  for (int i = 0; i < k; ++i) up[i] = mesh.add_edge(mesh.origin(loop[i]), top[i]);
+  for (int i = 0; i < k; ++i) rim[i] = mesh.add_edge(top[i], top[(i + 1) % k]);
+  for (int i = 0; i < k; ++i) {
+    const int j = (i + 1) % k;
+    // Side i: loop[i] (v_i -> v_j), up[j], twin(rim[i]) (w_j -> w_i), twin(up[i]) (w_i -> v_i).
+    const Halfedge down_i = HalfedgeMesh::twin(up[i]), rim_back = HalfedgeMesh::twin(rim[i]);
+    mesh.link(loop[i], up[j]);
+    mesh.link(up[j], rim_back);
+    mesh.link(rim_back, down_i);
+    mesh.link(down_i, loop[i]);
+    mesh.assign_loop(loop[i], side[i]);
+    mesh.link(rim[i], rim[j]);
+    mesh.set_halfedge(top[i], rim[i]);
+  }
+  mesh.assign_loop(rim[0], f);
+  return result;
+}
+
+}  // namespace stitch
