@@ -53,7 +53,9 @@ constexpr int kSamplesPerPatch = (kResolution + 1) * (kResolution + 1);
 enum MeshKind : int { quad_torus = 0, mixed_torus = 1 };
 
 // A torus of m x n quads, all vertices regular.
-HalfedgeMesh make_quad_torus(int m, int n) { return stitch::make_torus(m, n); }
+HalfedgeMesh make_quad_torus(int m, int n) {
+  return stitch::make_torus(m, n);
+}
 
 // The same torus with the diagonal of every fourth quad inserted (a quarter of the quads become
 // two triangles): many extraordinary vertices (valence 5 and 6) and non-quad faces, where the
@@ -230,8 +232,9 @@ size_t osd_native_tessellation(const HalfedgeMesh& mesh, double& checksum) {
     for (int i = 0; i < tess.GetNumCoords(); ++i) {
       double p[3], du[3], dv[3];
       surface.Evaluate(&uv[2 * i], patch.data(), xyz, p, du, dv);
-      const Eigen::Vector3d nrm =
-          Eigen::Vector3d(du[0], du[1], du[2]).cross(Eigen::Vector3d(dv[0], dv[1], dv[2])).normalized();
+      const Eigen::Vector3d nrm = Eigen::Vector3d(du[0], du[1], du[2])
+                                      .cross(Eigen::Vector3d(dv[0], dv[1], dv[2]))
+                                      .normalized();
       sum += p[0] + p[1] + p[2] + nrm.sum();
     }
     face_sum[f] = sum;
@@ -252,8 +255,8 @@ void BM_osd_native(benchmark::State& state) {
   }
   state.SetLabel(mesh_label(kind, mesh));
   state.counters["samples"] = static_cast<double>(samples);
-  state.counters["samples/s"] =
-      benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["samples/s"] = benchmark::Counter(static_cast<double>(samples),
+                                                   benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void mesh_sizes(benchmark::internal::Benchmark* b) {

@@ -45,9 +45,12 @@ constexpr std::array<Method, 3> kMethods{Method::asc, Method::mdc, Method::cc};
 
 std::string method_title(Method m) {
   switch (m) {
-    case Method::asc: return "AS&amp;C (patches as plain polynomials)";
-    case Method::mdc: return "modified de Casteljau (ours)";
-    case Method::cc: return "Catmull-Clark (OpenSubdiv)";
+    case Method::asc:
+      return "AS&amp;C (patches as plain polynomials)";
+    case Method::mdc:
+      return "modified de Casteljau (ours)";
+    case Method::cc:
+      return "Catmull-Clark (OpenSubdiv)";
   }
   return "";
 }
@@ -106,7 +109,8 @@ std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>&
   if (status == 127) {
     fs::remove(dir / temporary.filename());
     return "gnuplot was not found (Debian: apt-get install gnuplot-nox); the data and script "
-           "are in " + data.string() + " and " + script.string();
+           "are in " +
+           data.string() + " and " + script.string();
   }
   if (status != 0 || !fs::exists(dir / temporary.filename())) {
     fs::remove(dir / temporary.filename());
@@ -116,7 +120,9 @@ std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>&
   return "";
 }
 
-std::string number(double x) { return fmt::format("{:.3e}", x); }
+std::string number(double x) {
+  return fmt::format("{:.3e}", x);
+}
 
 void write_index(const fs::path& dir, const std::string& input, const CompareArgs& a,
                  const std::vector<ContinuityReport>& reports,
@@ -150,10 +156,11 @@ void write_index(const fs::path& dir, const std::string& input, const CompareArg
       out << "<p><strong>Not shown:</strong> " << r << "</p>\n";
     }
     std::string order;
-    for (const ContinuityReport& r : reports) order += (order.empty() ? "" : " | ") + to_string(r.method);
+    for (const ContinuityReport& r : reports)
+      order += (order.empty() ? "" : " | ") + to_string(r.method);
     const auto row = [&](const std::string& name, const std::string& heading) {
-      out << "<h2>" << heading << "</h2>\n<p><img src=\"" << name
-          << ".png\" alt=\"" << order << "\"></p>\n<div>";
+      out << "<h2>" << heading << "</h2>\n<p><img src=\"" << name << ".png\" alt=\"" << order
+          << "\"></p>\n<div>";
       for (const ContinuityReport& r : reports) {
         out << "<figure><img src=\"" << name << "_" << to_string(r.method)
             << ".png\" width=\"240\"><figcaption>" << method_title(r.method)
@@ -229,9 +236,9 @@ void run_compare(const CompareArgs& a) {
         const ExtraordinaryPoint& p = highest_valence_point(scene.extraordinary);
         closeup_camera = focus_camera(p, scene, aspect, a.zoom);
         has_closeup = true;
-        closeup_note = fmt::format("the extraordinary point of highest valence ({} {}, K = {})",
-                                   p.kind == KgonKind::vertex ? "vertex" : "face",
-                                   p.element + 1, p.k);
+        closeup_note =
+            fmt::format("the extraordinary point of highest valence ({} {}, K = {})",
+                        p.kind == KgonKind::vertex ? "vertex" : "face", p.element + 1, p.k);
       }
     }
     upload_scene(renderer, scene);
@@ -259,8 +266,7 @@ void run_compare(const CompareArgs& a) {
   std::string names;
   for (const Method m : shown) names += (names.empty() ? "" : ", ") + to_string(m);
   fmt::print("wrote {}/index.html (zebra images of {}{}{})\n", a.out, names,
-             has_closeup ? ", whole and close-up" : "",
-             plot_problem.empty() ? ", jump plot" : "");
+             has_closeup ? ", whole and close-up" : "", plot_problem.empty() ? ", jump plot" : "");
   if (!plot_problem.empty()) fmt::print(stderr, "stitch: warning: {}\n", plot_problem);
 }
 
@@ -283,7 +289,8 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--stripes", args->stripes, "zebra stripes around the full circle")
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
-  cmd->add_option("--zoom", args->zoom, "radius of the region shown in the close-up, in edge lengths")
+  cmd->add_option("--zoom", args->zoom,
+                  "radius of the region shown in the close-up, in edge lengths")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   add_kgon_options(cmd, args->kgon);

@@ -46,7 +46,8 @@ void run_render(const RenderArgs& a) {
   style.stripes = a.stripes;
   parse_overlays(a.show, style);
   style.draw_surface = a.draw != "none";
-  const int camera_choices = (!a.view.empty() ? 1 : 0) + (!a.eye.empty() ? 1 : 0) + (a.focus_ev ? 1 : 0);
+  const int camera_choices =
+      (!a.view.empty() ? 1 : 0) + (!a.eye.empty() ? 1 : 0) + (a.focus_ev ? 1 : 0);
   if (camera_choices > 1) {
     throw std::invalid_argument("choose one camera: --view, --eye/--target or --focus-ev");
   }
@@ -97,11 +98,11 @@ void run_render(const RenderArgs& a) {
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "render", "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
-                "isophotes, levels, patches, with the mesh, K-gons, nets and extraordinary points");
+      "render",
+      "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
+      "isophotes, levels, patches, with the mesh, K-gons, nets and extraordinary points");
   add_input_options(cmd, args->in);
-  cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")
-      ->required();
+  cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")->required();
   add_method_option(cmd, args->method);
   cmd->add_option("--mode", args->mode,
                   "shaded, zebra (reflection lines), isophote, levels (hierarchy level of the "

@@ -141,8 +141,8 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2, const V
   double lo_a, hi_a, lo_b, hi_b;
   if (!interval(pa, dist_a, lo_a, hi_a) || !interval(pb, dist_b, lo_b, hi_b))
     return coplanar_overlap(na, a, b);
-  // Open overlap: triangles that only touch at a point do not cross.
-  return hi_a > lo_b && hi_b > lo_a;
+  // Overlap of positive length: triangles that only touch at a point do not cross.
+  return std::min(hi_a, hi_b) > std::max(lo_a, lo_b);
 }
 
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options) {

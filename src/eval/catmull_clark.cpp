@@ -1,6 +1,5 @@
 #include "stitch/eval/catmull_clark.hpp"
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
@@ -9,7 +8,10 @@
 #include <opensubdiv/far/topologyRefinerFactory.h>
 #include <tbb/parallel_for.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
@@ -75,7 +77,8 @@ bool TopologyRefinerFactory<OsdTopology>::resizeComponentTopology(TopologyRefine
     setNumBaseFaceVertices(refiner, static_cast<Index>(i), mesh.degree(topo.faces[i]));
   }
   setNumBaseEdges(refiner, static_cast<int>(topo.edges.size()));
-  for (size_t i = 0; i < topo.edges.size(); ++i) setNumBaseEdgeFaces(refiner, static_cast<Index>(i), 2);
+  for (size_t i = 0; i < topo.edges.size(); ++i)
+    setNumBaseEdgeFaces(refiner, static_cast<Index>(i), 2);
   return true;
 }
 
@@ -171,9 +174,10 @@ void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
   for (Halfedge c : mesh.face_loop(f)) {
     for (Halfedge around : mesh.vertex_fan(mesh.origin(c))) {
       if (cause.empty() && mesh.degree(mesh.face(around)) == 2) {
-        cause = fmt::format(" (its vertex {} has the 2-sided face {}, which OpenSubdiv's Bfr does "
-                            "not support)",
-                            mesh.origin(c).idx, mesh.face(around).idx);
+        cause = fmt::format(
+            " (its vertex {} has the 2-sided face {}, which OpenSubdiv's Bfr does "
+            "not support)",
+            mesh.origin(c).idx, mesh.face(around).idx);
       }
     }
   }
@@ -181,6 +185,43 @@ void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
       "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
       "surface{}; use mdc or asc",
       f.idx, cause));
+}
+
+// A face visiting one vertex twice, or several edges between two vertices. OpenSubdiv accepts
+// such topology given in full, but Bfr's surfaces around it can be wrong without any error
+// (a cube with a handle made of two edges between the same two vertices gave gaps of the size of
+// the mesh between neighbouring faces), so the surface is checked when the mesh has any.
+std::string unusual_topology(const HalfedgeMesh& mesh) {
+  for (Face f : mesh.faces()) {
+    std::vector<Vertex> seen;
+    for (Halfedge h : mesh.face_loop(f)) {
+      if (std::find(seen.begin(), seen.end(), mesh.origin(h)) != seen.end()) {
+        return fmt::format("face {} visits vertex {} twice", f.idx, mesh.origin(h).idx);
+      }
+      seen.push_back(mesh.origin(h));
+    }
+  }
+  for (Vertex v : mesh.vertices()) {
+    std::vector<Vertex> seen;
+    for (Halfedge h : mesh.vertex_fan(v)) {
+      if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end()) {
+        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx,
+                           mesh.target(h).idx);
+      }
+      seen.push_back(mesh.target(h));
+    }
+  }
+  return {};
+}
+
+double bounding_box_diagonal(const HalfedgeMesh& mesh) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (Vertex v : mesh.vertices()) {
+    lo = lo.cwiseMin(mesh.position(v));
+    hi = hi.cwiseMax(mesh.position(v));
+  }
+  return (hi - lo).norm();
 }
 
 }  // namespace
@@ -193,7 +234,8 @@ struct CatmullClarkSurface::Impl {
   std::vector<int> corner_index;                    // per half-edge: index in its face's loop
 };
 
-CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : impl_(std::make_unique<Impl>()) {
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
+    : impl_(std::make_unique<Impl>()) {
   if (mesh.num_faces() == 0) throw MeshError("cc: the mesh has no faces");
   refuse_unsupported_topology(mesh);
 
@@ -267,6 +309,33 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : impl_(std::
     for (size_t k = 0; k < loop.size(); ++k) {
       impl.corner_face[loop[k].idx] = f;
       impl.corner_index[loop[k].idx] = static_cast<int>(k);
+    }
+  }
+
+  const std::string unusual = unusual_topology(mesh);
+  if (!unusual.empty()) check_patch_sides(mesh, unusual);
+}
+
+// Neighbouring patches must share their sides (the side table of control_net.hpp); a gap
+// larger than round-off (1e-9 of the mesh size, against ~1e-16 measured on valid surfaces)
+// means OpenSubdiv misread the topology.
+void CatmullClarkSurface::check_patch_sides(const HalfedgeMesh& mesh,
+                                            const std::string& unusual) const {
+  const double tolerance = 1e-9 * bounding_box_diagonal(mesh);
+  for (Corner c : mesh.halfedges()) {
+    for (double t : {0.0, 0.5, 1.0}) {
+      const double gap_across_edge =
+          (evaluate(c, t, 0.0).position - evaluate(mesh.rotate_cw(c), 0.0, t).position).norm();
+      const double gap_in_face =
+          (evaluate(c, 1.0, t).position - evaluate(mesh.next(c), t, 1.0).position).norm();
+      if (gap_across_edge > tolerance || gap_in_face > tolerance) {
+        throw MeshError(fmt::format(
+            "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}, and OpenSubdiv's "
+            "limit surface comes apart there (gap {:.3g} at the patch of corner {}, vertex {}, "
+            "face {}); use mdc or asc",
+            unusual, std::max(gap_across_edge, gap_in_face), c.idx, mesh.origin(c).idx,
+            mesh.face(c).idx));
+      }
     }
   }
 }

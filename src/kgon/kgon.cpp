@@ -4,6 +4,9 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <optional>
+
+#include "openings.hpp"
 
 namespace stitch {
 
@@ -107,6 +110,81 @@ Kgon make_kgon(const KgonSet& set, std::vector<Corner> corners, const Vec3& fall
 
 }  // namespace
 
+namespace {
+
+/// The per-element steps of build_kgons, shared with update_kgons so both give identical K-gons.
+/// `normal_of(f)` is face f's Newell normal.
+void set_corner_points(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f) {
+  if (options.construction == KgonConstruction::openings)
+    if (const auto openings = detail::find_two_openings(m, f)) {
+      detail::set_opening_corner_points(m, *openings, set.corner_point);
+      return;
+    }
+  const auto loop = m.face_loop(f);
+  std::vector<Vec3> pts;
+  for (Halfedge h : loop) pts.push_back(m.position(m.origin(h)));
+  const auto w = doo_sabin_shrink(pts);
+  for (size_t i = 0; i < loop.size(); ++i) set.corner_point[loop[i].idx] = w[i];
+}
+
+/// The normal of the faces around a set of corners, for K-gons too small to have a plane.
+template <class NormalOf>
+Vec3 normal_around(const HalfedgeMesh& m, const std::vector<Corner>& corners, NormalOf& normal_of) {
+  Vec3 n = Vec3::Zero();
+  for (Corner c : corners) n += normal_of(m.face(c)) + normal_of(m.face(HalfedgeMesh::twin(c)));
+  return n;
+}
+
+KgonControl control_for(const KgonOptions& options,
+                        const std::unordered_map<int, KgonControl>& per_element, int idx, int k) {
+  if (auto it = per_element.find(idx); it != per_element.end()) return it->second;
+  return k != 4 ? options.global : KgonControl{};
+}
+
+template <class NormalOf>
+void build_face_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f,
+                     NormalOf& normal_of) {
+  auto loop = m.face_loop(f);
+  for (size_t i = 0; i < loop.size(); ++i) set.in_face[loop[i].idx] = static_cast<int>(i);
+  std::optional<Kgon> placed;
+  if (options.construction == KgonConstruction::openings)
+    if (const auto openings = detail::find_two_openings(m, f))
+      placed = detail::place_tube_kgon(m, f, *openings, set.corner_point);
+  const Vec3 fallback = normal_around(m, loop, normal_of);
+  Kgon g = placed ? std::move(*placed) : make_kgon(set, std::move(loop), fallback);
+  apply_control(g, control_for(options, options.face, f.idx, g.size()));
+  set.face[f.idx] = std::move(g);
+}
+
+template <class NormalOf>
+void build_vertex_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Vertex v,
+                       NormalOf& normal_of) {
+  auto fan = m.vertex_fan(v);
+  for (size_t i = 0; i < fan.size(); ++i) set.in_vertex[fan[i].idx] = static_cast<int>(i);
+  const Vec3 fallback = normal_around(m, fan, normal_of);
+  Kgon g = make_kgon(set, std::move(fan), fallback);
+  apply_control(g, control_for(options, options.vertex, v.idx, g.size()));
+  set.vertex[v.idx] = std::move(g);
+}
+
+template <class NormalOf>
+void build_edge_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Edge e,
+                     NormalOf& normal_of) {
+  // Counter-clockwise seen from the side the faces point to: h = (a -> b) has its face on the
+  // left, so the order is h (left, at a), next(t) (right, at a), t (right, at b), next(h).
+  const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
+  std::vector<Corner> corners{h, m.next(t), t, m.next(h)};
+  set.in_next_edge[h.idx] = 0;
+  set.in_prev_edge[m.next(t).idx] = 1;
+  set.in_next_edge[t.idx] = 2;
+  set.in_prev_edge[m.next(h).idx] = 3;
+  Kgon g = make_kgon(set, corners, normal_around(m, {h}, normal_of));
+  if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
+  set.edge[e.idx] = std::move(g);
+}
+
+}  // namespace
+
 KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   KgonSet set;
   const int nh = m.halfedge_capacity();
@@ -122,53 +200,28 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
   for (Face f : m.faces()) {
     face_normal[f.idx] = face_newell(m, f);
-    const auto loop = m.face_loop(f);
-    std::vector<Vec3> pts;
-    for (Halfedge h : loop) pts.push_back(m.position(m.origin(h)));
-    const auto w = doo_sabin_shrink(pts);
-    for (size_t i = 0; i < loop.size(); ++i) set.corner_point[loop[i].idx] = w[i];
+    set_corner_points(m, options, set, f);
   }
-  // The normal of the faces around a set of corners, for K-gons too small to have a plane.
-  auto around = [&](const std::vector<Corner>& corners) {
-    Vec3 n = Vec3::Zero();
-    for (Corner c : corners)
-      n += face_normal[m.face(c).idx] + face_normal[m.face(HalfedgeMesh::twin(c)).idx];
-    return n;
-  };
-  auto control_for = [&](const std::unordered_map<int, KgonControl>& per_element, int idx,
-                         int k) -> KgonControl {
-    if (auto it = per_element.find(idx); it != per_element.end()) return it->second;
-    return k != 4 ? options.global : KgonControl{};
-  };
-
-  for (Face f : m.faces()) {
-    auto loop = m.face_loop(f);
-    for (size_t i = 0; i < loop.size(); ++i) set.in_face[loop[i].idx] = static_cast<int>(i);
-    Kgon g = make_kgon(set, loop, around(loop));
-    apply_control(g, control_for(options.face, f.idx, g.size()));
-    set.face[f.idx] = std::move(g);
-  }
-  for (Vertex v : m.vertices()) {
-    auto fan = m.vertex_fan(v);
-    for (size_t i = 0; i < fan.size(); ++i) set.in_vertex[fan[i].idx] = static_cast<int>(i);
-    Kgon g = make_kgon(set, fan, around(fan));
-    apply_control(g, control_for(options.vertex, v.idx, g.size()));
-    set.vertex[v.idx] = std::move(g);
-  }
-  for (Edge e : m.edges()) {
-    // Counter-clockwise seen from the side the faces point to: h = (a -> b) has its face on the
-    // left, so the order is h (left, at a), next(t) (right, at a), t (right, at b), next(h).
-    const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
-    std::vector<Corner> corners{h, m.next(t), t, m.next(h)};
-    set.in_next_edge[h.idx] = 0;
-    set.in_prev_edge[m.next(t).idx] = 1;
-    set.in_next_edge[t.idx] = 2;
-    set.in_prev_edge[m.next(h).idx] = 3;
-    Kgon g = make_kgon(set, corners, around({h}));
-    if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
-    set.edge[e.idx] = std::move(g);
-  }
+  auto normal_of = [&](Face f) { return face_normal[f.idx]; };
+  for (Face f : m.faces()) build_face_kgon(m, options, set, f, normal_of);
+  for (Vertex v : m.vertices()) build_vertex_kgon(m, options, set, v, normal_of);
+  for (Edge e : m.edges()) build_edge_kgon(m, options, set, e, normal_of);
   return set;
+}
+
+void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,
+                  const std::vector<Face>& faces, const std::vector<Vertex>& vertices,
+                  const std::vector<Edge>& edges) {
+  std::unordered_map<int, Vec3> cache;
+  auto normal_of = [&](Face f) {
+    auto [it, fresh] = cache.try_emplace(f.idx);
+    if (fresh) it->second = face_newell(m, f);
+    return it->second;
+  };
+  for (Face f : faces) set_corner_points(m, options, set, f);
+  for (Face f : faces) build_face_kgon(m, options, set, f, normal_of);
+  for (Vertex v : vertices) build_vertex_kgon(m, options, set, v, normal_of);
+  for (Edge e : edges) build_edge_kgon(m, options, set, e, normal_of);
 }
 
 }  // namespace stitch

@@ -148,7 +148,8 @@ void write_stl(std::ostream& out, const std::vector<Vec3>& positions, const Face
   std::memcpy(header.data(), comment.data(), std::min(comment.size(), header.size()));
   out.write(header.data(), header.size());
   std::uint32_t triangles = 0;
-  for (const auto& loop : faces) triangles += static_cast<std::uint32_t>(loop_size(loop) - 2);
+  for (const auto& loop : faces)
+    triangles += static_cast<std::uint32_t>(std::max(0, loop_size(loop) - 2));
   put_le(out, triangles);
   for (const auto& loop : faces) {
     const auto* first = std::data(loop);

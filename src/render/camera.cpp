@@ -14,7 +14,9 @@ namespace {
 constexpr std::array<const char*, 7> kViewNames{"front", "back",   "left", "right",
                                                 "top",   "bottom", "iso"};
 
-double deg_to_rad(double d) { return d * std::numbers::pi / 180.0; }
+double deg_to_rad(double d) {
+  return d * std::numbers::pi / 180.0;
+}
 
 // A vector not parallel to `dir`, for an up vector when the requested one is degenerate.
 Vec3 fallback_up(const Vec3& dir) {
@@ -44,7 +46,9 @@ View parse_view(const std::string& name) {
                               "' (expected front, back, left, right, top, bottom or iso)");
 }
 
-std::string to_string(View view) { return kViewNames[static_cast<size_t>(view)]; }
+std::string to_string(View view) {
+  return kViewNames[static_cast<size_t>(view)];
+}
 
 Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double aspect,
                     const BoundingBox& scene) {
@@ -69,10 +73,18 @@ Camera frame_view(View view, const BoundingBox& box, double aspect) {
   Vec3 from = Vec3::UnitZ();
   Vec3 up = Vec3::UnitY();
   switch (view) {
-    case View::front: from = Vec3::UnitZ(); break;
-    case View::back: from = -Vec3::UnitZ(); break;
-    case View::left: from = -Vec3::UnitX(); break;
-    case View::right: from = Vec3::UnitX(); break;
+    case View::front:
+      from = Vec3::UnitZ();
+      break;
+    case View::back:
+      from = -Vec3::UnitZ();
+      break;
+    case View::left:
+      from = -Vec3::UnitX();
+      break;
+    case View::right:
+      from = Vec3::UnitX();
+      break;
     case View::top:
       from = Vec3::UnitY();
       up = -Vec3::UnitZ();
@@ -81,7 +93,9 @@ Camera frame_view(View view, const BoundingBox& box, double aspect) {
       from = -Vec3::UnitY();
       up = Vec3::UnitZ();
       break;
-    case View::iso: from = Vec3(1, 1, 1); break;
+    case View::iso:
+      from = Vec3(1, 1, 1);
+      break;
   }
   // Fit the box's eight corners (tighter than its bounding sphere): each corner at lateral
   // offsets (x, y) and depth z towards the eye needs distance >= z + |x| / tan(half fov x).

@@ -34,9 +34,9 @@ struct Framebuffer {
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
       release();
-      throw RenderError(fmt::format(
-          "cannot create a {}x{} framebuffer with {} samples (status 0x{:x})", width, height,
-          samples, status));
+      throw RenderError(
+          fmt::format("cannot create a {}x{} framebuffer with {} samples (status 0x{:x})", width,
+                      height, samples, status));
     }
   }
   ~Framebuffer() { release(); }
@@ -63,8 +63,8 @@ Image render_image(const Renderer& renderer, const Camera& camera, const RenderS
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   if (width > max_size || height > max_size) {
-    throw std::invalid_argument(fmt::format("image size {}x{} exceeds the OpenGL limit of {}",
-                                            width, height, max_size));
+    throw std::invalid_argument(
+        fmt::format("image size {}x{} exceeds the OpenGL limit of {}", width, height, max_size));
   }
   int factor = std::max(1, aa.supersample);
   while (factor > 1 && std::max(width, height) * factor > max_size) --factor;
@@ -100,8 +100,8 @@ Image render_image(const Renderer& renderer, const Camera& camera, const RenderS
 
 Image downsample(const Image& image, int factor) {
   if (factor < 1 || image.width % factor != 0 || image.height % factor != 0) {
-    throw std::invalid_argument(fmt::format("cannot downsample {}x{} by {}", image.width,
-                                            image.height, factor));
+    throw std::invalid_argument(
+        fmt::format("cannot downsample {}x{} by {}", image.width, image.height, factor));
   }
   Image out(image.width / factor, image.height / factor);
   const int n = factor * factor;
@@ -150,8 +150,8 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
   if (image.width < 1 || image.height < 1 ||
       stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(),
                              image.width * 4) == 0) {
-    throw RenderError(fmt::format("PNG encoding of a {}x{} image failed", image.width,
-                                  image.height));
+    throw RenderError(
+        fmt::format("PNG encoding of a {}x{} image failed", image.width, image.height));
   }
   return bytes;
 }

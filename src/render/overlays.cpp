@@ -17,7 +17,8 @@ std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
     if (kgon.size() == 4) continue;
     double extent = 0.0;
     const auto fan = mesh.vertex_fan(v);
-    for (const Halfedge h : fan) extent += (mesh.position(mesh.target(h)) - mesh.position(v)).norm();
+    for (const Halfedge h : fan)
+      extent += (mesh.position(mesh.target(h)) - mesh.position(v)).norm();
     points.push_back({kgon.centroid, kgon.normal, kgon.size(), KgonKind::vertex, v.idx,
                       extent / static_cast<double>(fan.size())});
   }

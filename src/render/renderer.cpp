@@ -1,9 +1,9 @@
 #include "stitch/render/renderer.hpp"
 
-#include <Eigen/Geometry>
 #include <epoxy/gl.h>
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <stdexcept>
@@ -15,8 +15,7 @@ namespace stitch {
 
 namespace {
 
-constexpr std::array<const char*, 5> kModeNames{"shaded", "zebra", "isophote", "levels",
-                                                "patches"};
+constexpr std::array<const char*, 5> kModeNames{"shaded", "zebra", "isophote", "levels", "patches"};
 
 struct SurfaceVertex {
   float position[3];
@@ -150,7 +149,9 @@ ShadingMode parse_shading_mode(const std::string& name) {
                               "' (expected shaded, zebra, isophote, levels or patches)");
 }
 
-std::string to_string(ShadingMode mode) { return kModeNames[static_cast<size_t>(mode)]; }
+std::string to_string(ShadingMode mode) {
+  return kModeNames[static_cast<size_t>(mode)];
+}
 
 std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface) {
   std::vector<PatchRange> ranges;
@@ -208,8 +209,8 @@ void Renderer::set_surface(const SurfaceMesh& s) {
   for (const auto& q : s.quads) {
     for (const int i : q) {
       if (i < 0 || i >= s.num_vertices()) {
-        throw std::out_of_range(fmt::format("surface quad refers to vertex {} of {}", i,
-                                            s.num_vertices()));
+        throw std::out_of_range(
+            fmt::format("surface quad refers to vertex {} of {}", i, s.num_vertices()));
       }
     }
     // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
@@ -249,9 +250,9 @@ void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int coun
   check_surface(s);
   if (s.num_vertices() != impl_->surface_vertices || first < 0 || count < 0 ||
       first + count > s.num_vertices()) {
-    throw std::out_of_range(fmt::format(
-        "cannot update vertices [{}, {}) of a surface of {} vertices (uploaded: {})", first,
-        first + count, s.num_vertices(), impl_->surface_vertices));
+    throw std::out_of_range(
+        fmt::format("cannot update vertices [{}, {}) of a surface of {} vertices (uploaded: {})",
+                    first, first + count, s.num_vertices(), impl_->surface_vertices));
   }
   std::vector<SurfaceVertex> vertices(count);
   for (int i = 0; i < count; ++i) vertices[i] = surface_vertex(s, first + i);
@@ -273,8 +274,7 @@ void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, i
                     float pixel_scale) const {
   const Impl& r = *impl_;
   const double aspect = static_cast<double>(width) / std::max(height, 1);
-  const Eigen::Matrix4f view_projection =
-      projection_matrix(camera, aspect) * view_matrix(camera);
+  const Eigen::Matrix4f view_projection = projection_matrix(camera, aspect) * view_matrix(camera);
 
   glViewport(0, 0, width, height);
   glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);

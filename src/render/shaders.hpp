@@ -55,7 +55,8 @@ void main() {
   vec3 n = normalize(v_normal);
   vec3 v = normalize(u_eye - v_position);
   if (!gl_FrontFacing) n = -n;
-  float diffuse = max(dot(n, u_light), 0.0);
+  // A key light plus a head light (from the eye), so faces turned from the key are not black.
+  float diffuse = 0.65 * max(dot(n, u_light), 0.0) + 0.35 * max(dot(n, v), 0.0);
   float specular = pow(max(dot(n, normalize(u_light + v)), 0.0), 48.0);
   vec3 colour;
   if (u_mode == 1) {

@@ -148,7 +148,7 @@ HalfedgeMesh catmull_clark_step(const HalfedgeMesh& input) {
   struct Point {
     double p[3] = {0, 0, 0};
     void Clear() { p[0] = p[1] = p[2] = 0; }
-    void AddWithWeight(const Point& s, float w) {
+    void AddWithWeight(const Point& s, double w) {
       for (int i = 0; i < 3; ++i) p[i] += w * s.p[i];
     }
   };
@@ -158,7 +158,8 @@ HalfedgeMesh catmull_clark_step(const HalfedgeMesh& input) {
     for (int i = 0; i < 3; ++i) points[v.idx].p[i] = m.position(v)[i];
   Point* coarse = points.data();
   Point* refined = points.data() + m.num_vertices();
-  Far::PrimvarRefiner(*refiner).Interpolate(1, coarse, refined);
+  // Double-precision weights: the float default would cost ~1e-8 relative accuracy.
+  Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, coarse, refined);
 
   PolygonSoup soup;
   for (int v = 0; v < fine.GetNumVertices(); ++v) {

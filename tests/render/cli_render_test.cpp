@@ -107,13 +107,11 @@ class CliRenderRefuses : public ::testing::TestWithParam<BadOptions> {};
 TEST_P(CliRenderRefuses, WithStatusTwoAndLeavesTheOutputAlone) {
   TempFolder folder;
   const std::string out = folder.write("out.png", "previous content");
-  const std::string input = GetParam().args.find("missing.obj") != std::string::npos
-                                ? folder.file("missing.obj")
-                                : kCube;
+  const std::string input =
+      GetParam().args.find("missing.obj") != std::string::npos ? folder.file("missing.obj") : kCube;
   std::string args = GetParam().args;
   if (const auto at = args.find("missing.obj"); at != std::string::npos) args.erase(at, 11);
-  const std::string output =
-      args.find("-o ") != std::string::npos ? "" : " -o '" + out + "'";
+  const std::string output = args.find("-o ") != std::string::npos ? "" : " -o '" + out + "'";
   EXPECT_EQ(run_stitch(folder, "render '" + input + "'" + output + " " + args), 2) << args;
   const std::string message = read_file(folder.file("stderr.txt"));
   EXPECT_NE(message.find(GetParam().expected_in_message), std::string::npos) << message;
@@ -121,29 +119,29 @@ TEST_P(CliRenderRefuses, WithStatusTwoAndLeavesTheOutputAlone) {
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out.png", "stderr.txt", "stdout.txt"}));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Options, CliRenderRefuses,
-    ::testing::Values(BadOptions{"--size 0x64", "0x64"}, BadOptions{"--size big", "big"},
-                      BadOptions{"--size 64x", "64x"}, BadOptions{"--mode wireframe", "wireframe"},
-                      BadOptions{"--method bezier", "bezier"},
-                      BadOptions{"--show mesh,normals", "normals"},
-                      BadOptions{"--view diagonal", "diagonal"},
-                      BadOptions{"--eye 1,2 --target 0,0,0", "1,2"},
-                      BadOptions{"--eye 0,0,0 --target 0,0,0", "same point"},
-                      BadOptions{"--view top --focus-ev", "one camera"},
-                      BadOptions{"--target 0,0,0", "--target needs --eye"},
-                      BadOptions{"--resolution 0", "resolution"},
-                      BadOptions{"-o out.jpg", "out.jpg"},
-                      BadOptions{"missing.obj", "missing.obj"}));
+INSTANTIATE_TEST_SUITE_P(Options, CliRenderRefuses,
+                         ::testing::Values(BadOptions{"--size 0x64", "0x64"},
+                                           BadOptions{"--size big", "big"},
+                                           BadOptions{"--size 64x", "64x"},
+                                           BadOptions{"--mode wireframe", "wireframe"},
+                                           BadOptions{"--method bezier", "bezier"},
+                                           BadOptions{"--show mesh,normals", "normals"},
+                                           BadOptions{"--view diagonal", "diagonal"},
+                                           BadOptions{"--eye 1,2 --target 0,0,0", "1,2"},
+                                           BadOptions{"--eye 0,0,0 --target 0,0,0", "same point"},
+                                           BadOptions{"--view top --focus-ev", "one camera"},
+                                           BadOptions{"--target 0,0,0", "--target needs --eye"},
+                                           BadOptions{"--resolution 0", "resolution"},
+                                           BadOptions{"-o out.jpg", "out.jpg"},
+                                           BadOptions{"missing.obj", "missing.obj"}));
 
 TEST(CliRender, FocusOnAMeshWithoutExtraordinaryPointsIsRefused) {
   TempFolder folder;
   const std::string out = folder.file("torus.png");
-  EXPECT_EQ(run_stitch(folder, "render '" + std::string(STITCH_EXAMPLES_DIR) +
-                                   "/torus.obj' -o '" + out + "' --focus-ev --size 32x32"),
+  EXPECT_EQ(run_stitch(folder, "render '" + std::string(STITCH_EXAMPLES_DIR) + "/torus.obj' -o '" +
+                                   out + "' --focus-ev --size 32x32"),
             2);
-  EXPECT_NE(read_file(folder.file("stderr.txt")).find("no extraordinary point"),
-            std::string::npos);
+  EXPECT_NE(read_file(folder.file("stderr.txt")).find("no extraordinary point"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
@@ -154,9 +152,9 @@ TEST(CliCompare, WritesImagesPlotAndIndex) {
                                    "' --size 64x64 --resolution 4"),
             0)
       << read_file(folder.file("stderr.txt"));
-  for (const char* name : {"zebra_whole.png", "zebra_closeup.png", "zebra_whole_asc.png",
-                           "zebra_whole_mdc.png", "zebra_whole_cc.png", "index.html",
-                           "jump_by_distance.dat"}) {
+  for (const char* name :
+       {"zebra_whole.png", "zebra_closeup.png", "zebra_whole_asc.png", "zebra_whole_mdc.png",
+        "zebra_whole_cc.png", "index.html", "jump_by_distance.dat"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + name)) << name;
   }
   // Three 64-pixel panels side by side with gaps of 4 pixels.

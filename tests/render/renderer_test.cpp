@@ -1,13 +1,14 @@
 // The renderer on a hand-made sphere: headless context, image size, modes, overlays, partial
 // vertex updates, cameras and PNG encoding. Images are 96x96 to keep the tests fast.
+#include "stitch/render/renderer.hpp"
+
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
 #include <Eigen/Geometry>
-#include <stb_image.h>
 
 #include "stitch/render/gl_context.hpp"
 #include "stitch/render/image.hpp"
-#include "stitch/render/renderer.hpp"
 #include "test_helpers.hpp"
 
 namespace stitch {
@@ -46,8 +47,8 @@ TEST_F(RendererTest, ContextIsOpenGL33OrLater) {
 }
 
 TEST_F(RendererTest, ImageHasRequestedSizeAndIsNotBlank) {
-  camera_ = frame_sphere(Vec3::Zero(), 1.0, Vec3(1, 1, 1), 96.0 / 64.0,
-                         bounding_box(sphere_.positions));
+  camera_ =
+      frame_sphere(Vec3::Zero(), 1.0, Vec3(1, 1, 1), 96.0 / 64.0, bounding_box(sphere_.positions));
   const Image im = render({}, 96, 64);
   EXPECT_EQ(im.width, 96);
   EXPECT_EQ(im.height, 64);

@@ -28,10 +28,15 @@ struct KgonControl {
 enum class KgonConstruction {
   /// Section 2 as it stands: corner points of one Doo-Sabin step, shrunk once more.
   doo_sabin,
+  /// Section 2, except for faces whose loop runs along one edge twice (made by inserting an
+  /// edge between two faces): their corner points come from each opening's own loop and their
+  /// K-gon sits on the wall of the tube joining the openings (see src/kgon/openings.hpp).
+  /// Faces where that placement does not apply keep section 2's K-gon.
+  openings,
 };
 
 struct KgonOptions {
-  KgonConstruction construction = KgonConstruction::doo_sabin;
+  KgonConstruction construction = KgonConstruction::openings;
   /// Applies to every face and vertex K-gon with K != 4 (the extraordinary ones); quads and
   /// edge K-gons keep their shape unless a per-element control names them.
   KgonControl global;
@@ -79,5 +84,13 @@ std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop);
 
 /// Builds every K-gon of a valid mesh. Default options reproduce method.md section 2 exactly.
 KgonSet build_kgons(const HalfedgeMesh& mesh, const KgonOptions& options = {});
+
+/// Local update of a set that build_kgons made for this mesh's connectivity (the modeler's
+/// incremental update): recomputes the corner points of `faces`, then the K-gons of `faces`,
+/// `vertices` and `edges`, exactly as build_kgons would. The caller lists every element whose
+/// K-gon can change (e.g. after a vertex moved: its faces and their vertices and edges).
+void update_kgons(const HalfedgeMesh& mesh, const KgonOptions& options, KgonSet& set,
+                  const std::vector<Face>& faces, const std::vector<Vertex>& vertices,
+                  const std::vector<Edge>& edges);
 
 }  // namespace stitch

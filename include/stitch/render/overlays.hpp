@@ -42,8 +42,8 @@ struct ExtraordinaryPoint {
   Vec3 normal = Vec3::UnitZ();
   int k = 4;
   KgonKind kind = KgonKind::vertex;
-  int element = -1;      ///< vertex or face index
-  double extent = 0.0;   ///< mean distance from the input element to its neighbours: a zoom scale
+  int element = -1;     ///< vertex or face index
+  double extent = 0.0;  ///< mean distance from the input element to its neighbours: a zoom scale
 };
 
 /// Every extraordinary point, vertices first, each in index order.

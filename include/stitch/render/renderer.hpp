@@ -41,7 +41,7 @@ struct RenderStyle {
   bool draw_surface = true;
   std::array<bool, num_overlays> overlays{};  ///< indexed by Overlay
   bool markers = false;                       ///< extraordinary points
-  int stripes = 16;          ///< zebra stripes around the full circle / isophote bands
+  int stripes = 16;  ///< zebra stripes around the full circle / isophote bands
   Colour background{1.0f, 1.0f, 1.0f};
   Colour surface_colour{0.80f, 0.82f, 0.86f};
   float line_width_px = 1.5f;

@@ -13,11 +13,11 @@
 namespace stitch {
 
 struct SceneGeometry {
-  SurfaceMesh surface;      ///< unwelded: one vertex block per patch
-  SurfaceMesh input;        ///< the input polygons (input_faces)
+  SurfaceMesh surface;                         ///< unwelded: one vertex block per patch
+  SurfaceMesh input;                           ///< the input polygons (input_faces)
   std::array<LineSet, num_overlays> overlays;  ///< indexed by Overlay
   std::vector<ExtraordinaryPoint> extraordinary;
-  BoundingBox bounds;       ///< of the surface and the input mesh
+  BoundingBox bounds;  ///< of the surface and the input mesh
 };
 
 /// Tessellates `surface` at `resolution` segments per patch side and builds every overlay.

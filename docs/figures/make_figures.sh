@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Regenerates every figure of docs/gallery.md. Run from anywhere:
+#   docs/figures/make_figures.sh [path/to/stitch]
+# (default: build/bin/stitch). Headless: needs Mesa's EGL (llvmpipe), no display.
+# Each command is printed before it runs; docs/gallery.md quotes the same commands.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+STITCH=${1:-build/bin/stitch}
+if [[ ! -x $STITCH ]]; then
+  echo "make_figures.sh: $STITCH is not an executable (build it, or pass its path)" >&2
+  exit 2
+fi
+failed=()
+run() {
+  echo "+ stitch $*"
+  if ! "$STITCH" "$@" > /dev/null; then
+    failed+=("stitch $*")
+  fi
+}
+F=docs/figures
+T=examples/tetrahedron.obj
+C=examples/cube.obj
+H=examples/cube_hole.obj
+W=examples/two_cubes.obj
+
+# 1. The five steps on a tetrahedron.
+run render $T -o $F/tet_1_mesh.png --size 400x400 --draw input --show mesh,ev
+run render $T -o $F/tet_2_kgons.png --size 400x400 --draw none --show mesh,kgons
+run render $T -o $F/tet_3_nets.png --size 400x400 --draw none --show kgons,nets
+run render $T -o $F/tet_4_surface.png --size 400x400 --mode patches --show mesh
+run render $T -o $F/tet_5_polygon_mesh.png --size 400x400 --show tess --resolution 6
+
+# 2. The cube with an inserted edge (one 10-sided face, genus 1), before and after smoothing.
+run render $H -o $F/cube_hole_mesh.png --size 480x480 --view top --draw input --show mesh,ev
+run render $H -o $F/cube_hole_smooth.png --size 480x480 --view top --show mesh,ev
+run render $H -o $F/cube_hole_smooth_iso.png --size 480x480 --view iso --show ev
+
+# 3. AS&C against ours: zebra close-ups of a 3-valent point and of the 10-valent point.
+run render $C -o $F/valence3_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32
+run render $C -o $F/valence3_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32
+run render $H -o $F/valence10_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32
+run render $H -o $F/valence10_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32
+
+# 4. Catmull-Clark against ours on the cube with a hole and on two cubes joined by an edge.
+run render $H -o $F/cube_hole_cc.png --size 480x480 --view top --method cc --mode zebra
+run render $H -o $F/cube_hole_mdc.png --size 480x480 --view top --method mdc --mode zebra
+run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra
+run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra
+
+# 5. Star-shaped against regularised K-gons (the 10-sided face's K-gon is a star).
+run render $H -o $F/kgon_star.png --size 480x480 --view top --show kgons
+run render $H -o $F/kgon_regularized.png --size 480x480 --view top --show kgons --regularize
+
+# 6. Bulkier against smoother: the size of the extraordinary K-gons.
+run render $C -o $F/kgon_scale_1.4.png --size 400x400 --mode zebra --kgon-scale 1.4
+run render $C -o $F/kgon_scale_1.0.png --size 400x400 --mode zebra
+run render $C -o $F/kgon_scale_0.6.png --size 400x400 --mode zebra --kgon-scale 0.6
+
+# 7. All K-gons rotated.
+run render $C -o $F/kgon_rotate_0.png --size 400x400 --show kgons
+run render $C -o $F/kgon_rotate_30.png --size 400x400 --show kgons --kgon-rotate 30
+
+# 8. stitch compare on the cube (zebra of asc, mdc, cc; jump plot; index.html).
+run compare $C -o $F/compare_cube --size 320x320
+
+if ((${#failed[@]})); then
+  echo "make_figures.sh: these commands failed:" >&2
+  printf '  %s\n' "${failed[@]}" >&2
+  exit 1
+fi

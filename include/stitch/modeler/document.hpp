@@ -1,0 +1,116 @@
+// The modeler's editable document: the mesh and its K-gon controls, changed only through
+// recorded commands so every change can be undone and redone without limit.
+//
+// Commands store what they need to go both ways exactly: a vertex move its positions before and
+// after, a K-gon edit the controls before and after, a topology operation the whole document
+// before and after (operators renumber, so a snapshot is the only exact inverse; it costs memory
+// proportional to the mesh per topology step, which is fine for interactive sessions).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "stitch/kgon/kgon.hpp"
+#include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/operation.hpp"
+
+namespace stitch::modeler {
+
+/// Everything undo restores.
+struct DocumentState {
+  HalfedgeMesh mesh;
+  KgonOptions kgons;
+};
+
+/// What an edit changed, so the surface can update only what depends on it.
+struct Change {
+  enum class Kind { none, geometry, kgons, topology };
+  Kind kind = Kind::none;
+  std::vector<Vertex> moved;  ///< geometry: the vertices that moved
+  /// kgons: the elements whose controls changed (all_kgons: the global control changed).
+  std::vector<Face> faces;
+  std::vector<Vertex> vertices;
+  std::vector<Edge> edges;
+  bool all_kgons = false;
+
+  [[nodiscard]] bool empty() const { return kind == Kind::none; }
+};
+
+/// An element whose K-gon a control applies to; element -1 = the global control.
+struct KgonTarget {
+  KgonKind kind = KgonKind::face;
+  int element = -1;
+  [[nodiscard]] bool global() const { return element < 0; }
+  bool operator==(const KgonTarget&) const = default;
+};
+
+class Document {
+ public:
+  explicit Document(HalfedgeMesh mesh = {}, KgonOptions kgons = {});
+
+  [[nodiscard]] const HalfedgeMesh& mesh() const { return state_.mesh; }
+  [[nodiscard]] const KgonOptions& kgon_options() const { return state_.kgons; }
+  [[nodiscard]] const DocumentState& state() const { return state_; }
+
+  /// Applies one `stitch edit --ops` line (apply_operation). Throws MeshError with the document
+  /// unchanged when the line is refused. A blank line changes nothing and records nothing.
+  Change apply_operation(std::string_view line, OperationReport* report = nullptr);
+  /// Replaces the whole document (new primitive, opened file) as one undoable step.
+  Change replace(DocumentState state, std::string label);
+  /// Moves vertices to `positions`. With `merge`, a move of the same vertices right after
+  /// another one extends that command (one undo step per mouse drag).
+  Change move_vertices(const std::vector<Vertex>& vertices, const std::vector<Vec3>& positions,
+                       bool merge = false);
+  /// Sets the control of one element's K-gon (or the global one). Throws MeshError for an
+  /// element that does not exist.
+  Change set_kgon_control(const KgonTarget& target, const KgonControl& control,
+                          bool merge = false);
+  /// The control in effect for the target (the element's own, else the default).
+  [[nodiscard]] KgonControl kgon_control(const KgonTarget& target) const;
+
+  [[nodiscard]] bool can_undo() const { return !done_.empty(); }
+  [[nodiscard]] bool can_redo() const { return !undone_.empty(); }
+  /// Throw MeshError when there is nothing to undo / redo.
+  Change undo();
+  Change redo();
+  /// Labels of the done commands, oldest first, and of the undone ones, next redo last.
+  [[nodiscard]] std::vector<std::string> undo_labels() const;
+  [[nodiscard]] std::vector<std::string> redo_labels() const;
+
+  /// True when the document differs from the last mark_saved() (or from the start).
+  [[nodiscard]] bool modified() const { return revision_ != saved_revision_; }
+  void mark_saved() { saved_revision_ = revision_; }
+
+ private:
+  struct MoveVertices {
+    std::vector<Vertex> vertices;
+    std::vector<Vec3> before, after;
+  };
+  struct KgonEdit {
+    KgonTarget target;
+    KgonOptions before, after;
+  };
+  struct Snapshot {
+    DocumentState before, after;
+  };
+  struct Command {
+    std::string label;
+    std::variant<MoveVertices, KgonEdit, Snapshot> edit;
+    long revision_before = 0, revision_after = 0;  ///< for modified()
+  };
+
+  Change apply(const Command& command, bool forward);
+  void record(Command command);
+
+  DocumentState state_;
+  std::vector<Command> done_, undone_;
+  long revision_ = 0, next_revision_ = 1, saved_revision_ = 0;
+};
+
+/// Drops per-element K-gon controls whose element no longer exists (after a topology edit); all
+/// of them after a remeshing, which renumbers every element.
+void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered);
+
+}  // namespace stitch::modeler

@@ -1,0 +1,62 @@
+// The modeler's project file (JSON): the mesh, the per-element K-gon controls, the view and the
+// display settings; and where autosaves go.
+//
+// Format (version 1):
+//   { "format": "stitch-modeler-project", "version": 1,
+//     "mesh": { "positions": [[x, y, z], ...], "faces": [[i, j, k, ...], ...] },   // 0-based
+//     "kgons": { "global": CONTROL,
+//                "faces": [{"face": F, CONTROL...}], "vertices": [{"vertex": V, ...}],
+//                "edges": [{"face": F, "corner": K, ...}] },  // the edge of face F's K-th side
+//     "view": { "target": [x, y, z], "distance": d, "yaw": deg, "pitch": deg, "fov": deg },
+//     "display": { "method": "mdc", "resolution": 8, "mode": "shaded", "input": false,
+//                  "overlays": ["mesh", ...], "markers": false, "split": null | "asc" } }
+// where CONTROL is "scale", "rotate" (degrees), "offset" [x, y, z], "regularize". Numbers are
+// those of the mesh as saved (deleted elements compacted away), all 0-based.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "stitch/eval/surface.hpp"
+#include "stitch/modeler/document.hpp"
+#include "stitch/modeler/navigation.hpp"
+#include "stitch/render/renderer.hpp"
+
+namespace stitch::modeler {
+
+struct DisplaySettings {
+  Method method = Method::mdc;
+  int resolution = 8;
+  ShadingMode mode = ShadingMode::shaded;
+  bool input_polygons = false;  ///< show the input polygons instead of the smooth surface
+  std::array<bool, num_overlays> overlays{};
+  bool markers = false;
+  std::optional<Method> split;  ///< the method shown on the right half, if split
+  bool operator==(const DisplaySettings&) const = default;
+};
+
+struct Project {
+  DocumentState state;
+  OrbitView view;
+  DisplaySettings display;
+};
+
+/// ".stitch" and ".json" files are projects; anything else is a mesh file.
+bool is_project_path(const std::string& path);
+
+std::string project_to_json(const Project& project);
+/// Throws MeshError naming `source` and what is wrong.
+Project project_from_json(const std::string& text, const std::string& source);
+/// Atomic (write_file_atomically).
+void save_project(const std::string& path, const Project& project);
+Project load_project(const std::string& path);
+
+/// Where the autosave of `document_path` goes: `.NAME.autosave.stitch` beside the document, or
+/// for an untitled document `$XDG_DATA_HOME/stitch/autosave/untitled.stitch` (default
+/// ~/.local/share/stitch/autosave/untitled.stitch).
+std::string autosave_path(const std::string& document_path);
+/// True when the autosave exists and is newer than the document (or the document is missing).
+bool autosave_is_newer(const std::string& autosave, const std::string& document_path);
+
+}  // namespace stitch::modeler

@@ -1,0 +1,90 @@
+// A modeler session without a window: the document, its file, the view, the display settings,
+// the selection and the live surface; and the script language that drives it (`--script`), which
+// the GUI's buttons also use, so both do exactly the same thing.
+//
+// Script lines (one per line, `#` starts a comment):
+//   any `stitch edit --ops` line (insert-edge 1@1 5@2, delete-edge 1 5, extrude-face 3 0.5, ...)
+//   primitive NAME [PARAMS]          new document from a primitive (undoable)
+//   move-vertex V X Y Z              set vertex V's position;  translate-vertex V DX DY DZ
+//   select vertex V | edge V W[@F] | face F | corner V@F[#k] | none
+//   kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset
+//                                    the selected face/vertex/edge (a corner: its face), or the
+//                                    global control with `global` or when nothing is selected
+//   undo | redo
+//   method mdc|asc|cc     resolution N     mode shaded|zebra|isophote|levels|patches|input
+//   overlay mesh|kgons|nets|tess|markers on|off      split off|mdc|asc|cc
+//   view front|back|left|right|top|bottom|iso        frame all|selection
+//   orbit DYAW DPITCH (degrees)      zoom STEPS
+//   screenshot PATH    save [PATH]    open PATH    info    quit
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stitch/modeler/document.hpp"
+#include "stitch/modeler/live_surface.hpp"
+#include "stitch/modeler/navigation.hpp"
+#include "stitch/modeler/project.hpp"
+
+namespace stitch::modeler {
+
+struct Session {
+  Document document;
+  std::string path;  ///< the document's file; empty when untitled
+  OrbitView view;
+  DisplaySettings display;
+  std::optional<Pick> selection;
+  LiveSurface surface;
+  UpdateStats last_update;
+
+  /// A session on `mesh`, framed in the iso view, surface built.
+  explicit Session(HalfedgeMesh mesh = {});
+  /// Brings the surface up to date after a document change; returns (and keeps) the stats.
+  const UpdateStats& apply(const Change& change);
+  /// Rebuilds the surface from scratch (after replacing the document or the method).
+  void rebuild();
+  /// The bounding box of the live input vertices.
+  [[nodiscard]] BoundingBox mesh_bounds() const;
+  /// The project as it stands (for saving and autosaving).
+  [[nodiscard]] Project project() const;
+};
+
+/// Opens a mesh (OBJ/OFF/PLY) or project file into the session: a fresh history, the view framed
+/// (or the project's). Throws MeshError.
+void open_file(Session& session, const std::string& path);
+/// Saves the project (.stitch/.json) or the mesh (.obj/.off/.ply/.stl), atomically; the path
+/// becomes the document's. Throws MeshError.
+void save_file(Session& session, const std::string& path);
+
+/// What a script line needs from the application.
+struct ScriptHooks {
+  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
+  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
+};
+
+struct ScriptResult {
+  bool quit = false;
+  std::string message;  ///< what happened, for the status bar / log
+};
+
+/// Runs one line. Throws MeshError (or std::invalid_argument) saying what is wrong; the session
+/// is unchanged by a refused line.
+ScriptResult run_script_line(Session& session, std::string_view line, const ScriptHooks& hooks);
+
+/// A script error with its 1-based line number.
+struct ScriptError {
+  int line = 0;
+  std::string message;
+};
+/// Runs lines until the end or `quit`; stops at the first error and returns it. `quit` tells
+/// whether the script asked to quit.
+std::optional<ScriptError> run_script(Session& session, const std::vector<std::string>& lines,
+                                      const ScriptHooks& hooks, bool* quit = nullptr);
+
+/// The selected K-gon, if the selection has one (a corner selects its face's).
+std::optional<KgonTarget> kgon_target(const Session& session);
+
+}  // namespace stitch::modeler

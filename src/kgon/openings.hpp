@@ -1,0 +1,41 @@
+// K-gons of faces whose loop runs around two openings (private to the kgon stage).
+//
+// "Insert edge" between two faces merges them into one face whose loop runs around the first
+// face's boundary, along the new edge (the bridge), around the second face's boundary and back
+// along the bridge. The smooth surface over such a face is a tube joining the two openings
+// (a hole through the solid, or a handle between two solids). Section 2's construction puts
+// the face's K-gon at the centroid of its loop, which lies inside the tube, so the surface is
+// pinched shut there. The "openings" construction instead
+//  - takes each corner point from the Doo-Sabin rule over its own opening's loop, so the rims
+//    keep the shape they had before the merge, and
+//  - puts the K-gon on the tube's wall opposite the bridge, halfway between the openings, in
+//    the wall's tangent plane, as a regular K-gon whose corners of each opening face that
+//    opening.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "stitch/kgon/kgon.hpp"
+
+namespace stitch::detail {
+
+/// The corners of a face with exactly one bridge edge, split by opening: each list runs in loop
+/// order from the corner after a bridge to the bridge corner that leaves the opening.
+struct TwoOpenings {
+  std::vector<Corner> first, second;
+};
+
+/// The two openings of f, or nothing when f's loop does not run along exactly one edge twice.
+std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
+
+/// Doo-Sabin corner points of each opening over that opening's own loop (stored by corner).
+void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& openings,
+                               std::vector<Vec3>& corner_point);
+
+/// The face K-gon placed on the tube wall (corners in face-loop order starting at
+/// halfedge(f)), or nothing when the two openings give no usable tube direction.
+std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& mesh, Face f, const TwoOpenings& openings,
+                                    const std::vector<Vec3>& corner_point);
+
+}  // namespace stitch::detail

@@ -1,0 +1,227 @@
+#include "stitch/modeler/document.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace stitch::modeler {
+
+namespace {
+
+bool is_remeshing(std::string_view line) {
+  const size_t start = line.find_first_not_of(" \t");
+  if (start == std::string_view::npos) return false;
+  const std::string_view rest = line.substr(start);
+  const std::string_view op = rest.substr(0, rest.find_first_of(" \t#"));
+  return op == "doo-sabin" || op == "vertex-insertion" || op == "catmull-clark" || op == "dual";
+}
+
+template <class Pred>
+void erase_if_key(std::unordered_map<int, KgonControl>& map, Pred dead) {
+  std::erase_if(map, [&](const auto& entry) { return dead(entry.first); });
+}
+
+Change kgon_change(const KgonTarget& t) {
+  Change c;
+  c.kind = Change::Kind::kgons;
+  if (t.global()) {
+    c.all_kgons = true;
+  } else if (t.kind == KgonKind::face) {
+    c.faces.emplace_back(t.element);
+  } else if (t.kind == KgonKind::vertex) {
+    c.vertices.emplace_back(t.element);
+  } else {
+    c.edges.emplace_back(t.element);
+  }
+  return c;
+}
+
+template <class Options>  // KgonOptions, const or not
+auto& controls_of(Options& o, KgonKind kind) {
+  return kind == KgonKind::face ? o.face : kind == KgonKind::vertex ? o.vertex : o.edge;
+}
+
+}  // namespace
+
+void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered) {
+  if (renumbered) {
+    kgons.face.clear();
+    kgons.vertex.clear();
+    kgons.edge.clear();
+    return;
+  }
+  erase_if_key(kgons.face, [&](int i) { return i >= mesh.face_capacity() || mesh.is_deleted(Face(i)); });
+  erase_if_key(kgons.vertex,
+               [&](int i) { return i >= mesh.vertex_capacity() || mesh.is_deleted(Vertex(i)); });
+  erase_if_key(kgons.edge, [&](int i) { return i >= mesh.edge_capacity() || mesh.is_deleted(Edge(i)); });
+}
+
+Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
+    : state_{std::move(mesh), std::move(kgons)} {}
+
+Change Document::apply_operation(std::string_view line, OperationReport* report) {
+  DocumentState after = state_;
+  OperationReport r = stitch::apply_operation(after.mesh, line);  // throws with state_ untouched
+  if (report) *report = r;
+  if (r.what.empty()) return {};
+  prune_kgon_controls(after.mesh, after.kgons, is_remeshing(line));
+  std::string label(line);
+  label.erase(0, label.find_first_not_of(" \t"));
+  Command command{std::move(label), Snapshot{state_, std::move(after)}};
+  state_ = std::get<Snapshot>(command.edit).after;
+  record(std::move(command));
+  Change c;
+  c.kind = Change::Kind::topology;
+  return c;
+}
+
+Change Document::replace(DocumentState state, std::string label) {
+  Command command{std::move(label), Snapshot{state_, std::move(state)}};
+  state_ = std::get<Snapshot>(command.edit).after;
+  record(std::move(command));
+  Change c;
+  c.kind = Change::Kind::topology;
+  return c;
+}
+
+Change Document::move_vertices(const std::vector<Vertex>& vertices,
+                               const std::vector<Vec3>& positions, bool merge) {
+  if (vertices.size() != positions.size())
+    throw MeshError("move_vertices: one position per vertex is needed");
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const Vertex v = vertices[i];
+    if (v.idx < 0 || v.idx >= state_.mesh.vertex_capacity() || state_.mesh.is_deleted(v))
+      throw MeshError(fmt::format("move: there is no vertex {}", v.idx + 1));
+    if (!positions[i].allFinite())
+      throw MeshError(fmt::format("move: vertex {} would get a non-finite position", v.idx + 1));
+  }
+  Change c;
+  c.kind = Change::Kind::geometry;
+  c.moved = vertices;
+  MoveVertices* last = nullptr;
+  if (merge && !done_.empty() && undone_.empty())
+    last = std::get_if<MoveVertices>(&done_.back().edit);
+  if (last && last->vertices == vertices) {
+    last->after = positions;
+    for (size_t i = 0; i < vertices.size(); ++i) state_.mesh.position(vertices[i]) = positions[i];
+    done_.back().revision_after = revision_ = next_revision_++;
+    return c;
+  }
+  MoveVertices move{vertices, {}, positions};
+  for (Vertex v : vertices) move.before.push_back(state_.mesh.position(v));
+  std::string label = vertices.size() == 1 ? fmt::format("move vertex {}", vertices[0].idx + 1)
+                                           : fmt::format("move {} vertices", vertices.size());
+  Command command{std::move(label), std::move(move)};
+  apply(command, true);
+  record(std::move(command));
+  return c;
+}
+
+KgonControl Document::kgon_control(const KgonTarget& target) const {
+  if (target.global()) return state_.kgons.global;
+  const auto& map = controls_of(state_.kgons, target.kind);
+  const auto it = map.find(target.element);
+  return it == map.end() ? KgonControl{} : it->second;
+}
+
+Change Document::set_kgon_control(const KgonTarget& target, const KgonControl& control,
+                                  bool merge) {
+  const HalfedgeMesh& m = state_.mesh;
+  if (!target.global()) {
+    const int i = target.element;
+    const bool exists =
+        target.kind == KgonKind::face     ? i < m.face_capacity() && !m.is_deleted(Face(i))
+        : target.kind == KgonKind::vertex ? i < m.vertex_capacity() && !m.is_deleted(Vertex(i))
+                                          : i < m.edge_capacity() && !m.is_deleted(Edge(i));
+    if (!exists) throw MeshError(fmt::format("kgon: there is no such element ({})", i + 1));
+  }
+  if (!control.offset.allFinite() || !std::isfinite(control.scale) ||
+      !std::isfinite(control.rotate_deg))
+    throw MeshError("kgon: the control values must be finite");
+  KgonOptions after = state_.kgons;
+  if (target.global()) {
+    after.global = control;
+  } else if (control == KgonControl{}) {
+    controls_of(after, target.kind).erase(target.element);
+  } else {
+    controls_of(after, target.kind)[target.element] = control;
+  }
+  KgonEdit* last = nullptr;
+  if (merge && !done_.empty() && undone_.empty()) last = std::get_if<KgonEdit>(&done_.back().edit);
+  if (last && last->target == target) {
+    last->after = after;
+    state_.kgons = std::move(after);
+    done_.back().revision_after = revision_ = next_revision_++;
+    return kgon_change(target);
+  }
+  static constexpr const char* kind_names[] = {"face", "vertex", "edge"};
+  std::string label = target.global()
+                          ? std::string("global K-gon control")
+                          : fmt::format("K-gon of {} {}", kind_names[static_cast<int>(target.kind)],
+                                        target.element + 1);
+  Command command{std::move(label), KgonEdit{target, state_.kgons, std::move(after)}};
+  apply(command, true);
+  record(std::move(command));
+  return kgon_change(target);
+}
+
+Change Document::apply(const Command& command, bool forward) {
+  Change c;
+  if (const auto* move = std::get_if<MoveVertices>(&command.edit)) {
+    const auto& to = forward ? move->after : move->before;
+    for (size_t i = 0; i < move->vertices.size(); ++i) state_.mesh.position(move->vertices[i]) = to[i];
+    c.kind = Change::Kind::geometry;
+    c.moved = move->vertices;
+  } else if (const auto* edit = std::get_if<KgonEdit>(&command.edit)) {
+    state_.kgons = forward ? edit->after : edit->before;
+    c = kgon_change(edit->target);
+  } else {
+    const auto& snapshot = std::get<Snapshot>(command.edit);
+    state_ = forward ? snapshot.after : snapshot.before;
+    c.kind = Change::Kind::topology;
+  }
+  return c;
+}
+
+void Document::record(Command command) {
+  command.revision_before = revision_;
+  command.revision_after = revision_ = next_revision_++;
+  done_.push_back(std::move(command));
+  undone_.clear();
+}
+
+Change Document::undo() {
+  if (done_.empty()) throw MeshError("undo: there is nothing to undo");
+  Command command = std::move(done_.back());
+  done_.pop_back();
+  Change c = apply(command, false);
+  revision_ = command.revision_before;
+  undone_.push_back(std::move(command));
+  return c;
+}
+
+Change Document::redo() {
+  if (undone_.empty()) throw MeshError("redo: there is nothing to redo");
+  Command command = std::move(undone_.back());
+  undone_.pop_back();
+  Change c = apply(command, true);
+  revision_ = command.revision_after;
+  done_.push_back(std::move(command));
+  return c;
+}
+
+std::vector<std::string> Document::undo_labels() const {
+  std::vector<std::string> out;
+  for (const Command& c : done_) out.push_back(c.label);
+  return out;
+}
+
+std::vector<std::string> Document::redo_labels() const {
+  std::vector<std::string> out;
+  for (const Command& c : undone_) out.push_back(c.label);
+  return out;
+}
+
+}  // namespace stitch::modeler

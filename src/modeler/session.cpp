@@ -1,0 +1,380 @@
+#include "stitch/modeler/session.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "stitch/topology/primitives.hpp"
+
+namespace stitch::modeler {
+
+namespace {
+
+std::vector<std::string> words_of(std::string_view line) {
+  std::vector<std::string> w;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    size_t j = i;
+    while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+    if (j > i) w.emplace_back(line.substr(i, j - i));
+    i = j;
+  }
+  return w;
+}
+
+/// The line without a `# comment` ('#' after a blank or at the start; V@F#k keeps its '#').
+std::string_view strip_comment(std::string_view line) {
+  for (size_t i = 0; i < line.size(); ++i)
+    if (line[i] == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))))
+      return line.substr(0, i);
+  return line;
+}
+
+double number(const std::string& text, const std::string& what) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v))
+    throw MeshError(fmt::format("{} must be a finite number, not '{}'", what, text));
+  return v;
+}
+
+int integer(const std::string& text, const std::string& what) {
+  int v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc{} || end != text.data() + text.size())
+    throw MeshError(fmt::format("{} must be an integer, not '{}'", what, text));
+  return v;
+}
+
+void expect(const std::vector<std::string>& w, size_t min, size_t max, const char* usage) {
+  if (w.size() - 1 < min || w.size() - 1 > max) throw MeshError(fmt::format("usage: {}", usage));
+}
+
+bool on_off(const std::string& text) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw MeshError(fmt::format("expected on or off, not '{}'", text));
+}
+
+Vertex vertex_number(const HalfedgeMesh& m, const std::string& text) {
+  const int n = integer(text, "a vertex number");
+  if (n < 1 || n > m.vertex_capacity() || m.is_deleted(Vertex(n - 1)))
+    throw MeshError(fmt::format("there is no vertex {}", text));
+  return Vertex(n - 1);
+}
+
+bool is_operation(const std::string& word) {
+  for (const std::string& op : operation_synopsis())
+    if (op.substr(0, op.find(' ')) == word) return true;
+  return false;
+}
+
+const char* const overlay_words[] = {"mesh", "kgons", "nets", "tess"};
+
+}  // namespace
+
+Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
+  rebuild();
+  view.set_standard(View::iso, mesh_bounds());
+}
+
+const UpdateStats& Session::apply(const Change& change) {
+  last_update = surface.update(document.mesh(), document.kgon_options(), change);
+  if (change.kind == Change::Kind::topology) selection.reset();
+  return last_update;
+}
+
+void Session::rebuild() {
+  last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
+                                display.resolution);
+}
+
+BoundingBox Session::mesh_bounds() const {
+  BoundingBox box;
+  for (Vertex v : document.mesh().vertices()) box.extend(document.mesh().position(v));
+  return box;
+}
+
+Project Session::project() const { return {document.state(), view, display}; }
+
+void open_file(Session& session, const std::string& path) {
+  if (is_project_path(path)) {
+    Project p = load_project(path);
+    session.document = Document(std::move(p.state.mesh), std::move(p.state.kgons));
+    session.view = p.view;
+    session.display = p.display;
+  } else {
+    BuildOptions build;
+    build.allow_two_gons = true;
+    session.document = Document(read_mesh(path, build));
+    session.view.set_standard(View::iso, BoundingBox{});
+  }
+  session.path = path;
+  session.selection.reset();
+  session.rebuild();
+  if (!is_project_path(path)) session.view.set_standard(View::iso, session.mesh_bounds());
+}
+
+void save_file(Session& session, const std::string& path) {
+  if (is_project_path(path)) {
+    save_project(path, session.project());
+  } else {
+    write_mesh(path, session.document.mesh());
+  }
+  session.path = path;
+  session.document.mark_saved();
+}
+
+std::optional<KgonTarget> kgon_target(const Session& s) {
+  if (!s.selection) return std::nullopt;
+  const Pick& p = *s.selection;
+  const HalfedgeMesh& m = s.document.mesh();
+  switch (p.kind) {
+    case PickKind::face:
+      return KgonTarget{KgonKind::face, p.index};
+    case PickKind::vertex:
+      return KgonTarget{KgonKind::vertex, p.index};
+    case PickKind::edge:
+      return KgonTarget{KgonKind::edge, HalfedgeMesh::edge(Halfedge(p.index)).idx};
+    case PickKind::corner:
+      return KgonTarget{KgonKind::face, m.face(Halfedge(p.index)).idx};
+  }
+  return std::nullopt;
+}
+
+ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks& hooks) {
+  const std::vector<std::string> w = words_of(strip_comment(raw));
+  ScriptResult result;
+  if (w.empty()) return result;
+  const std::string& cmd = w[0];
+  const HalfedgeMesh& mesh = s.document.mesh();
+
+  if (is_operation(cmd)) {
+    OperationReport report;
+    const Change c = s.document.apply_operation(raw, &report);
+    s.apply(c);
+    result.message = report.summary(strip_comment(raw));
+    if (hooks.print) hooks.print(result.message);
+  } else if (cmd == "primitive") {
+    expect(w, 1, 3, "primitive NAME [PARAMS]");
+    std::vector<int> params;
+    for (size_t i = 2; i < w.size(); ++i) params.push_back(integer(w[i], "a primitive parameter"));
+    s.apply(s.document.replace({make_primitive(w[1], params), {}}, "primitive " + w[1]));
+    s.view.set_standard(View::iso, s.mesh_bounds());
+    result.message = "new " + w[1];
+  } else if (cmd == "move-vertex" || cmd == "translate-vertex") {
+    expect(w, 4, 4, "move-vertex V X Y Z  or  translate-vertex V DX DY DZ");
+    const Vertex v = vertex_number(mesh, w[1]);
+    Vec3 p(number(w[2], "x"), number(w[3], "y"), number(w[4], "z"));
+    if (cmd == "translate-vertex") p += mesh.position(v);
+    s.apply(s.document.move_vertices({v}, {p}));
+    result.message = fmt::format("vertex {} moved; {} of {} patches recomputed in {:.2f} ms", v.idx + 1,
+                                 s.last_update.recomputed_patches, s.surface.corners().size(),
+                                 s.last_update.milliseconds);
+  } else if (cmd == "select") {
+    expect(w, 1, 3, "select vertex V | edge V W[@F] | face F | corner V@F | none");
+    if (w[1] == "none") {
+      expect(w, 1, 1, "select none");
+      s.selection.reset();
+      return result;
+    }
+    const PickKind kind = parse_pick_kind(w[1]);
+    Pick p;
+    p.kind = kind;
+    if (kind == PickKind::edge) {
+      expect(w, 3, 3, "select edge V W[@F]");
+      const Edge e = parse_edge(mesh, w[2], w[3]);
+      // The half-edge running from V, so the selection reads back as given.
+      Halfedge h = HalfedgeMesh::halfedge(e, 0);
+      if (mesh.origin(h) != vertex_number(mesh, w[2])) h = HalfedgeMesh::twin(h);
+      p.index = h.idx;
+    } else {
+      expect(w, 2, 2, "select vertex V | face F | corner V@F");
+      if (kind == PickKind::vertex) {
+        p.index = vertex_number(mesh, w[2]).idx;
+      } else if (kind == PickKind::corner) {
+        p.index = parse_corner(mesh, w[2]).idx;
+      } else {
+        const int f = integer(w[2], "a face number");
+        if (f < 1 || f > mesh.face_capacity() || mesh.is_deleted(Face(f - 1)))
+          throw MeshError(fmt::format("there is no face {}", w[2]));
+        p.index = f - 1;
+      }
+    }
+    s.selection = p;
+    result.message = "selected " + describe(mesh, p);
+  } else if (cmd == "kgon") {
+    size_t i = 1;
+    std::optional<KgonTarget> target = kgon_target(s);
+    if (w.size() > 1 && w[1] == "global") {
+      target.reset();
+      ++i;
+    }
+    const KgonTarget t = target.value_or(KgonTarget{});
+    if (w.size() <= i)
+      throw MeshError("usage: kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset");
+    KgonControl c = s.document.kgon_control(t);
+    const std::string& what = w[i];
+    const size_t args = w.size() - i - 1;
+    auto need = [&](size_t n) {
+      if (args != n) throw MeshError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
+    };
+    if (what == "scale") {
+      need(1);
+      c.scale = number(w[i + 1], "the scale");
+    } else if (what == "rotate") {
+      need(1);
+      c.rotate_deg = number(w[i + 1], "the rotation");
+    } else if (what == "offset") {
+      need(3);
+      c.offset = Vec3(number(w[i + 1], "x"), number(w[i + 2], "y"), number(w[i + 3], "z"));
+    } else if (what == "regularize" || what == "regularise") {
+      need(1);
+      c.regularize = on_off(w[i + 1]);
+    } else if (what == "reset") {
+      need(0);
+      c = KgonControl{};
+    } else {
+      throw MeshError(fmt::format("unknown K-gon control '{}' (scale, rotate, offset, regularize, reset)", what));
+    }
+    s.apply(s.document.set_kgon_control(t, c));
+    result.message = fmt::format("K-gon control set; {} patches recomputed in {:.2f} ms",
+                                 s.last_update.recomputed_patches, s.last_update.milliseconds);
+  } else if (cmd == "undo" || cmd == "redo") {
+    expect(w, 0, 0, "undo  or  redo");
+    s.apply(cmd == "undo" ? s.document.undo() : s.document.redo());
+    result.message = cmd + " done";
+  } else if (cmd == "method") {
+    expect(w, 1, 1, "method mdc|asc|cc");
+    try {
+      s.display.method = parse_method(w[1]);
+    } catch (const std::invalid_argument& e) {
+      throw MeshError(e.what());
+    }
+    s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), s.display.method);
+  } else if (cmd == "resolution") {
+    expect(w, 1, 1, "resolution N");
+    const int n = integer(w[1], "the resolution");
+    if (n < 1 || n > 64) throw MeshError(fmt::format("the resolution must be in 1..64, not {}", n));
+    s.display.resolution = n;
+    s.last_update = s.surface.set_resolution(s.document.mesh(), s.document.kgon_options(), n);
+  } else if (cmd == "mode") {
+    expect(w, 1, 1, "mode shaded|zebra|isophote|levels|patches|input");
+    if (w[1] == "input") {
+      s.display.input_polygons = true;
+    } else {
+      try {
+        s.display.mode = parse_shading_mode(w[1]);
+      } catch (const std::invalid_argument& e) {
+        throw MeshError(std::string(e.what()) + " (or input)");
+      }
+      s.display.input_polygons = false;
+    }
+  } else if (cmd == "overlay") {
+    expect(w, 2, 2, "overlay mesh|kgons|nets|tess|markers on|off");
+    const bool on = on_off(w[2]);
+    if (w[1] == "markers") {
+      s.display.markers = on;
+    } else {
+      const auto* it = std::find(std::begin(overlay_words), std::end(overlay_words), w[1]);
+      if (it == std::end(overlay_words))
+        throw MeshError(fmt::format("unknown overlay '{}' (mesh, kgons, nets, tess, markers)", w[1]));
+      s.display.overlays[it - std::begin(overlay_words)] = on;
+    }
+  } else if (cmd == "split") {
+    expect(w, 1, 1, "split off|mdc|asc|cc");
+    if (w[1] == "off") {
+      s.display.split.reset();
+    } else {
+      try {
+        s.display.split = parse_method(w[1]);
+      } catch (const std::invalid_argument& e) {
+        throw MeshError(std::string(e.what()) + " (or off)");
+      }
+    }
+  } else if (cmd == "view") {
+    expect(w, 1, 1, "view front|back|left|right|top|bottom|iso");
+    try {
+      s.view.set_standard(parse_view(w[1]), s.mesh_bounds());
+    } catch (const std::invalid_argument& e) {
+      throw MeshError(e.what());
+    }
+  } else if (cmd == "frame") {
+    expect(w, 1, 1, "frame all|selection");
+    if (w[1] == "all") {
+      const BoundingBox b = s.mesh_bounds();
+      if (!b.empty()) s.view.frame(b.center(), b.radius());
+    } else if (w[1] == "selection") {
+      if (!s.selection) throw MeshError("frame selection: nothing is selected");
+      s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius());
+    } else {
+      throw MeshError("usage: frame all|selection");
+    }
+  } else if (cmd == "orbit") {
+    expect(w, 2, 2, "orbit DYAW DPITCH");
+    s.view.yaw_deg += number(w[1], "the yaw");
+    s.view.pitch_deg = std::clamp(s.view.pitch_deg + number(w[2], "the pitch"), -90.0, 90.0);
+  } else if (cmd == "zoom") {
+    expect(w, 1, 1, "zoom STEPS");
+    s.view.zoom(number(w[1], "the zoom steps"));
+  } else if (cmd == "screenshot") {
+    expect(w, 1, 1, "screenshot PATH");
+    if (!hooks.screenshot) throw MeshError("screenshot: not available here");
+    hooks.screenshot(w[1]);
+    result.message = "wrote " + w[1];
+  } else if (cmd == "save") {
+    expect(w, 0, 1, "save [PATH]");
+    const std::string path = w.size() > 1 ? w[1] : s.path;
+    if (path.empty()) throw MeshError("save: the document has no file yet; write save PATH");
+    save_file(s, path);
+    result.message = "saved " + path;
+  } else if (cmd == "open") {
+    expect(w, 1, 1, "open PATH");
+    open_file(s, w[1]);
+    result.message = "opened " + w[1];
+  } else if (cmd == "info") {
+    expect(w, 0, 0, "info");
+    const TopologyStats t = topology_stats(mesh);
+    result.message = fmt::format(
+        "V {} E {} F {}, Euler {}, genus {}, components {}; method {}, {} patches, last update "
+        "{:.2f} ms ({} patches)",
+        t.vertices, t.edges, t.faces, t.euler, t.genus, t.components, to_string(s.display.method),
+        s.surface.corners().size(), s.last_update.milliseconds, s.last_update.recomputed_patches);
+    if (hooks.print) hooks.print(result.message);
+  } else if (cmd == "quit" || cmd == "exit") {
+    expect(w, 0, 0, "quit");
+    result.quit = true;
+  } else {
+    throw MeshError(fmt::format(
+        "unknown command '{}' (operations: insert-edge, delete-edge, subdivide-edge, "
+        "collapse-edge, extrude-face, connect-faces, delete-face, doo-sabin, vertex-insertion, "
+        "catmull-clark, dual; modeler: primitive, move-vertex, translate-vertex, select, kgon, "
+        "undo, redo, method, resolution, mode, overlay, split, view, frame, orbit, zoom, "
+        "screenshot, save, open, info, quit)",
+        cmd));
+  }
+  return result;
+}
+
+std::optional<ScriptError> run_script(Session& session, const std::vector<std::string>& lines,
+                                      const ScriptHooks& hooks, bool* quit) {
+  if (quit) *quit = false;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    try {
+      if (run_script_line(session, lines[i], hooks).quit) {
+        if (quit) *quit = true;
+        return std::nullopt;
+      }
+    } catch (const std::exception& e) {  // MeshError, and std::invalid_argument from parsers
+      return ScriptError{static_cast<int>(i) + 1, e.what()};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace stitch::modeler

@@ -1,0 +1,129 @@
+// The surface check on known geometry: crossing triangles, folded strips, degenerate and
+// inconsistently oriented triangles are found, and nothing is found on clean closed surfaces.
+#include <gtest/gtest.h>
+
+#include "stitch/analysis/surface_check.hpp"
+#include "stitch/mesh/build.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "stitch/topology/remesh.hpp"
+
+namespace stitch {
+namespace {
+
+TriangleSoup soup_of(std::vector<Vec3> positions, std::vector<std::array<int, 3>> triangles) {
+  TriangleSoup s;
+  s.positions = std::move(positions);
+  s.triangles = std::move(triangles);
+  for (size_t i = 0; i < s.triangles.size(); ++i) s.source.push_back(static_cast<int>(i));
+  return s;
+}
+
+/// A sphere-like quad mesh: the icosahedron refined twice by Catmull-Clark, pushed onto the
+/// unit sphere.
+PolygonSoup sphere_soup() {
+  HalfedgeMesh m = catmull_clark_step(catmull_clark_step(make_icosahedron()));
+  for (Vertex v : m.vertices()) m.position(v).normalize();
+  return to_polygon_soup(m);
+}
+
+TEST(SurfaceCheck, TriangleTriangleTest) {
+  const Vec3 a0(0, 0, 0), a1(2, 0, 0), a2(0, 2, 0);
+  // Piercing: a triangle standing through the first one.
+  EXPECT_TRUE(triangles_intersect(a0, a1, a2, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0.5}));
+  // Above it, parallel.
+  EXPECT_FALSE(triangles_intersect(a0, a1, a2, {0, 0, 1}, {2, 0, 1}, {0, 2, 1}));
+  // Crossing its plane outside it.
+  EXPECT_FALSE(triangles_intersect(a0, a1, a2, {3, 3, -1}, {3, 3, 1}, {5, 5, 0}));
+  // Touching at one point (a vertex on the interior) does not count as crossing.
+  EXPECT_FALSE(triangles_intersect(a0, a1, a2, {0.5, 0.5, 0}, {0.5, 0.5, 1}, {1, 0.2, 1}));
+  // Coplanar: overlapping and apart.
+  EXPECT_TRUE(triangles_intersect(a0, a1, a2, {0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}));
+  EXPECT_FALSE(triangles_intersect(a0, a1, a2, {3, 3, 0}, {5, 3, 0}, {3, 5, 0}));
+}
+
+TEST(SurfaceCheck, FindsTwoCrossingTriangles) {
+  const TriangleSoup s = soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1},
+                                  {3, 3, 0.5}},
+                                 {{0, 1, 2}, {3, 4, 5}});
+  const SurfaceCheckReport r = check_surface(s);
+  EXPECT_EQ(r.self_intersections, 1);
+  ASSERT_EQ(r.intersecting_pairs.size(), 1u);
+  EXPECT_EQ(r.intersecting_pairs[0], (std::array<int, 2>{0, 1}));
+  EXPECT_EQ(r.folds, 0);
+  EXPECT_FALSE(r.clean());
+}
+
+TEST(SurfaceCheck, FindsCrossingTrianglesSharingAVertex) {
+  // Both start at the origin; the second passes through the first's interior.
+  const TriangleSoup s = soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}},
+                                 {{0, 1, 2}, {0, 3, 4}});
+  EXPECT_EQ(check_surface(s).self_intersections, 1);
+  // The same fan opened up so that they only meet at the shared vertex.
+  const TriangleSoup t = soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {-1, -1, -1}, {-1, -1, 1}},
+                                 {{0, 1, 2}, {0, 3, 4}});
+  EXPECT_EQ(check_surface(t).self_intersections, 0);
+}
+
+TEST(SurfaceCheck, FindsAFoldedStripAndNotAFlatOne) {
+  // Two triangles on the edge (0,0,0)-(1,0,0); the second's far vertex swings around the edge.
+  auto strip = [](double angle_deg) {
+    const double a = angle_deg * 3.14159265358979323846 / 180;
+    return soup_of({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -std::cos(a), std::sin(a)}},
+                   {{0, 1, 2}, {1, 0, 3}});
+  };
+  EXPECT_EQ(check_surface(strip(0)).folds, 0);    // flat
+  EXPECT_EQ(check_surface(strip(60)).folds, 0);   // normals 60 degrees apart
+  EXPECT_EQ(check_surface(strip(150)).folds, 1);  // folded back over the first
+  SurfaceCheckOptions strict;
+  strict.fold_angle_deg = 45;
+  EXPECT_EQ(check_surface(strip(60), strict).folds, 1);
+}
+
+TEST(SurfaceCheck, FindsDegenerateAndInconsistentTriangles) {
+  const TriangleSoup d = soup_of({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}},
+                                 {{0, 1, 2}, {0, 1, 3}});
+  const SurfaceCheckReport r = check_surface(d);
+  EXPECT_EQ(r.degenerate, 1);
+  ASSERT_EQ(r.degenerate_triangles.size(), 1u);
+  EXPECT_EQ(r.degenerate_triangles[0], 0);
+  const TriangleSoup flipped = soup_of({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}},
+                                       {{0, 1, 2}, {0, 1, 3}});
+  EXPECT_EQ(check_surface(flipped).inconsistent_edges, 1);
+}
+
+TEST(SurfaceCheck, CleanClosedSurfacesHaveNoProblems) {
+  const TriangleSoup sphere = triangulate(sphere_soup());
+  const SurfaceCheckReport r = check_surface(sphere);
+  EXPECT_EQ(r.triangles, 480);  // 20 triangles -> 60 quads -> 240 quads, split in two
+  EXPECT_TRUE(r.clean()) << r.describe(sphere);
+  const TriangleSoup torus = triangulate(to_polygon_soup(make_torus(32, 16)));
+  EXPECT_TRUE(check_surface(torus).clean()) << check_surface(torus).describe(torus);
+}
+
+TEST(SurfaceCheck, SurfaceMeshQuadsAndAPushedThroughVertex) {
+  const PolygonSoup sphere = sphere_soup();
+  SurfaceMesh surface;
+  surface.positions = sphere.positions;
+  for (const auto& q : sphere.faces) surface.quads.push_back({q[0], q[1], q[2], q[3]});
+  EXPECT_TRUE(check_surface(triangulate(surface)).clean());
+  // Pull one vertex through the sphere to the other side: its triangles cross the far side.
+  surface.positions[0] = -1.5 * surface.positions[0];
+  const SurfaceCheckReport r = check_surface(triangulate(surface));
+  EXPECT_GT(r.self_intersections, 0);
+}
+
+TEST(SurfaceCheck, SegmentsThroughAndPastTheSurface) {
+  const TriangleSoup sphere = triangulate(sphere_soup());
+  // Off the axis, so the line meets no vertex or edge (a hit there counts once per triangle).
+  const auto through = segment_hits(sphere, {0.1, 0.2, -3}, {0.1, 0.2, 3});
+  ASSERT_EQ(through.size(), 2u);
+  EXPECT_LT(through[0].t, through[1].t);
+  EXPECT_TRUE(segment_hits(sphere, {2, 0, -3}, {2, 0, 3}).empty());
+  // The torus hole is open along its axis; a line through the tube is not.
+  const TriangleSoup torus = triangulate(to_polygon_soup(make_torus(32, 16)));
+  EXPECT_TRUE(segment_hits(torus, {0, 0, -3}, {0, 0, 3}).empty());
+  EXPECT_EQ(segment_hits(torus, {2, 0.01, -3}, {2, 0.01, 3}).size(), 2u);
+}
+
+}  // namespace
+}  // namespace stitch
