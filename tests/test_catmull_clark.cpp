@@ -15,6 +15,8 @@
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/net/control_net.hpp"
+#include "stitch/topology/insert_edge.hpp"
+#include "stitch/topology/primitives.hpp"
 
 namespace stitch {
 namespace {
@@ -285,6 +287,43 @@ TEST(CatmullClark, RefusesTwoSidedFaces) {
     FAIL() << "cc accepted a mesh with a 2-sided face";
   } catch (const MeshError& e) {
     EXPECT_NE(std::string(e.what()).find("2-sided"), std::string::npos) << e.what();
+  }
+}
+
+// A handle on a cube made of two edges between the same two vertices (insert an edge between
+// two opposite faces, then a second one between the same corners, which splits the merged face
+// in two): both new faces visit a vertex twice. cc must either give a watertight surface or
+// refuse the mesh with a MeshError; it may never return a surface that comes apart. (With
+// OpenSubdiv 3.5 it refuses: Bfr's surfaces there leave gaps of a fifth of the cube's size.)
+TEST(CatmullClark, NeverReturnsASurfaceThatComesApartAroundMultiEdges) {
+  HalfedgeMesh mesh = make_cube();
+  const InsertEdgeResult merged =
+      insert_edge(mesh, mesh.halfedge(Face(1)), mesh.halfedge(Face(0)));  // top to bottom
+  ASSERT_FALSE(merged.split);
+  const InsertEdgeResult split = insert_edge(mesh, HalfedgeMesh::halfedge(merged.edge, 0),
+                                             HalfedgeMesh::halfedge(merged.edge, 1));
+  ASSERT_TRUE(split.split);
+  ASSERT_TRUE(find_problems(mesh).empty());
+  std::unique_ptr<CatmullClarkSurface> cc;
+  try {
+    cc = std::make_unique<CatmullClarkSurface>(mesh);
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot handle"), std::string::npos) << e.what();
+    return;
+  }
+  const double tol = 1e-9 * mesh_size(mesh);  // as in PositionsAgreeAcrossEverySharedPatchSide
+  for (Corner c : mesh.halfedges()) {
+    for (int side = 0; side < 4; ++side) {
+      const PatchNeighbour nb = neighbour_across(mesh, c, side);
+      for (double t : kSideParams) {
+        const auto a = side_point(side, t);
+        const auto b = side_point(nb.side, t);
+        EXPECT_LT(
+            (cc->evaluate(c, a[0], a[1]).position - cc->evaluate(nb.corner, b[0], b[1]).position)
+                .norm(),
+            tol);
+      }
+    }
   }
 }
 

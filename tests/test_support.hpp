@@ -20,10 +20,10 @@ inline std::string example_path(const std::string& name) {
 /// The closed orientable meshes of the shared OpenSubdiv set (see its README).
 inline const std::vector<std::string>& closed_shared_meshes() {
   static const std::vector<std::string> names{
-      "bilinear_cube.obj",     "catmark_cube.obj",         "catmark_torus.obj",
-      "catmark_torus_creases0.obj", "catmark_pyramid.obj", "catmark_smoothtris0.obj",
-      "catmark_righthanded.obj",    "catmark_chaikin0.obj", "catmark_cubes_semisharp.obj",
-      "loop_icosahedron.obj",  "loop_tetrahedron.obj",     "loop_cube.obj",
+      "bilinear_cube.obj",          "catmark_cube.obj",       "catmark_torus.obj",
+      "catmark_torus_creases0.obj", "catmark_pyramid.obj",    "catmark_smoothtris0.obj",
+      "catmark_righthanded.obj",    "catmark_chaikin0.obj",   "catmark_cubes_semisharp.obj",
+      "loop_icosahedron.obj",       "loop_tetrahedron.obj",   "loop_cube.obj",
       "loop_cubes_infsharp.obj",    "loop_icos_semisharp.obj"};
   return names;
 }
@@ -44,6 +44,5 @@ inline HalfedgeMesh tetrahedron_mesh() {
   s.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
   return build_mesh(s);
 }
-
 
 }  // namespace stitch::test

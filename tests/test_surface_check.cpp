@@ -42,9 +42,9 @@ TEST(SurfaceCheck, TriangleTriangleTest) {
 }
 
 TEST(SurfaceCheck, FindsTwoCrossingTriangles) {
-  const TriangleSoup s = soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1},
-                                  {3, 3, 0.5}},
-                                 {{0, 1, 2}, {3, 4, 5}});
+  const TriangleSoup s =
+      soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0.5}},
+              {{0, 1, 2}, {3, 4, 5}});
   const SurfaceCheckReport r = check_surface(s);
   EXPECT_EQ(r.self_intersections, 1);
   ASSERT_EQ(r.intersecting_pairs.size(), 1u);
@@ -59,8 +59,8 @@ TEST(SurfaceCheck, FindsCrossingTrianglesSharingAVertex) {
                                  {{0, 1, 2}, {0, 3, 4}});
   EXPECT_EQ(check_surface(s).self_intersections, 1);
   // The same fan opened up so that they only meet at the shared vertex.
-  const TriangleSoup t = soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {-1, -1, -1}, {-1, -1, 1}},
-                                 {{0, 1, 2}, {0, 3, 4}});
+  const TriangleSoup t =
+      soup_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {-1, -1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 3, 4}});
   EXPECT_EQ(check_surface(t).self_intersections, 0);
 }
 
@@ -80,14 +80,14 @@ TEST(SurfaceCheck, FindsAFoldedStripAndNotAFlatOne) {
 }
 
 TEST(SurfaceCheck, FindsDegenerateAndInconsistentTriangles) {
-  const TriangleSoup d = soup_of({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}},
-                                 {{0, 1, 2}, {0, 1, 3}});
+  const TriangleSoup d =
+      soup_of({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 3}});
   const SurfaceCheckReport r = check_surface(d);
   EXPECT_EQ(r.degenerate, 1);
   ASSERT_EQ(r.degenerate_triangles.size(), 1u);
   EXPECT_EQ(r.degenerate_triangles[0], 0);
-  const TriangleSoup flipped = soup_of({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}},
-                                       {{0, 1, 2}, {0, 1, 3}});
+  const TriangleSoup flipped =
+      soup_of({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}}, {{0, 1, 2}, {0, 1, 3}});
   EXPECT_EQ(check_surface(flipped).inconsistent_edges, 1);
 }
 

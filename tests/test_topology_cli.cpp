@@ -65,31 +65,36 @@ TEST(TopologyCli, PrimitiveRefusesBadNamesAndParameters) {
 }
 
 TEST(TopologyCli, HoleThroughACube) {
+  // The example of docs/editing.md, as typed there.
   TempFolder folder;
   ASSERT_EQ(stitch_cli(folder, "primitive cube -o cube.obj").status, 0);
-  const CliRun r = stitch_cli(folder, "edit cube.obj --op \"insert-edge 1@1 7@2\" -o holed.obj");
+  const CliRun r = stitch_cli(folder, "edit cube.obj --op \"insert-edge 1@1 5@2\" -o holed.obj");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out,
-            "insert-edge 1@1 7@2: new edge 13 merged faces 1 and 2 into face 1 (10 sides); V 8 E "
+            "insert-edge 1@1 5@2: new edge 13 merged faces 1 and 2 into face 1 (10 sides); V 8 E "
             "13 F 5, Euler 0, genus 1, components 1\n");
+  EXPECT_EQ(read_file(folder.file("holed.obj")),
+            "# written by stitch\n"
+            "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+            "f 1 4 3 2 1 5 6 7 8 5\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
   BuildOptions two_gons;
   two_gons.allow_two_gons = true;
   const HalfedgeMesh holed = read_mesh(folder.file("holed.obj"), two_gons);
   const TopologyStats s = topology_stats(holed);
   EXPECT_EQ(s.genus, 1);
   EXPECT_EQ(s.degree_histogram.at(10), 1);
-  // Read back, it is the mesh the library made.
+  // Read back, it is the mesh the library made (the new edge beside edge 1-5 included).
   HalfedgeMesh expected = make_cube();
-  apply_operation(expected, "insert-edge 1@1 7@2");
+  apply_operation(expected, "insert-edge 1@1 5@2");
   EXPECT_TRUE(same_up_to_renumbering(holed, expected));
 }
 
 TEST(TopologyCli, EditedMeshesWithMultiEdgesReadBackTheSame) {
-  // Edge 1-5 doubled (the new edge runs beside the cube's edge), and 2-sided faces: the file
-  // must read back as the same mesh for a later `stitch edit` or `stitch smooth`.
+  // A face running along an edge twice, a 2-sided face, edges doubled by a tube: the file must
+  // read back as the same mesh for a later `stitch edit` or `stitch smooth`.
   TempFolder folder;
   ASSERT_EQ(stitch_cli(folder, "primitive cube -o cube.obj").status, 0);
-  for (const char* op : {"insert-edge 1@1 5@2", "insert-edge 1@1 4@1"}) {
+  for (const char* op : {"insert-edge 1@1 7@2", "insert-edge 1@1 4@1", "connect-faces 1 2"}) {
     SCOPED_TRACE(op);
     const CliRun r = stitch_cli(folder, std::string("edit cube.obj --op \"") + op + "\" -o e.obj");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -139,7 +144,7 @@ TEST(TopologyCli, EditErrorsExitTwoNameTheOperationAndWriteNothing) {
        "--op 2 ('insert-edge 7@1 1@1'): insert-edge: corner 7@1: vertex 7 is not on face 1"},
       {"--op \"delete-edge 1 7\"", "no edge joins vertices 1 and 7"},
       {"--ops bad.txt", "bad.txt:3: collapse-edge: no edge joins vertices 1 and 7"},
-      {"--op \"extrude-face 2\"", "extrude-face takes a face and a distance"},
+      {"--op \"extrude-face 2\"", "extrude-face takes a face, a distance and an optional scale"},
   };
   for (const auto& [args, message] : cases) {
     const CliRun r = stitch_cli(folder, "edit cube.obj " + args + " -o out.obj");
@@ -151,8 +156,9 @@ TEST(TopologyCli, EditErrorsExitTwoNameTheOperationAndWriteNothing) {
 
 TEST(TopologyCli, CheckSurface) {
   TempFolder folder;
-  folder.write("crossing.obj",
-               "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 3 3 0.5\nf 1 2 3\nf 4 5 6\n");
+  folder.write(
+      "crossing.obj",
+      "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 3 3 0.5\nf 1 2 3\nf 4 5 6\n");
   CliRun r = stitch_cli(folder, "check-surface crossing.obj");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.out.find("1 self-intersecting pairs"), std::string::npos) << r.out;

@@ -81,8 +81,9 @@ void add_analyze_command(CLI::App& app) {
       "extraordinary points and elsewhere, and the tangent plane at extraordinary points");
   add_input_options(cmd, args->in);
   add_method_option(cmd, args->method, true);
-  cmd->add_flag("--json", args->json, "print JSON (includes the jump against distance from "
-                                      "extraordinary points)");
+  cmd->add_flag("--json", args->json,
+                "print JSON (includes the jump against distance from "
+                "extraordinary points)");
   cmd->add_option("--samples", args->samples, "evenly spaced samples per patch side")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

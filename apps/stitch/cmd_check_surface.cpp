@@ -17,6 +17,7 @@ struct CheckSurfaceArgs {
   std::string path;
   bool json = false;
   SurfaceCheckOptions options;
+  std::vector<double> through;  ///< x1 y1 z1 x2 y2 z2: a segment that must meet no triangle
 };
 
 void run_check_surface(const CheckSurfaceArgs& a) {
@@ -25,10 +26,15 @@ void run_check_surface(const CheckSurfaceArgs& a) {
   for (const std::string& w : warnings) fmt::print(stderr, "stitch: warning: {}: {}\n", a.path, w);
   const TriangleSoup soup = triangulate(polygons);
   const SurfaceCheckReport r = check_surface(soup, a.options);
+  std::vector<SegmentHit> hits;
+  if (!a.through.empty())
+    hits = segment_hits(soup, Vec3(a.through[0], a.through[1], a.through[2]),
+                        Vec3(a.through[3], a.through[4], a.through[5]));
+  const bool ok = r.clean() && hits.empty();
   if (a.json) {
     nlohmann::json j;
     j["file"] = a.path;
-    j["clean"] = r.clean();
+    j["clean"] = ok;
     j["triangles"] = r.triangles;
     j["self_intersections"] = r.self_intersections;
     j["folds"] = r.folds;
@@ -46,11 +52,23 @@ void run_check_surface(const CheckSurfaceArgs& a) {
     j["degenerate_triangles"] = nlohmann::json::array();
     for (int t : r.degenerate_triangles)
       j["degenerate_triangles"].push_back({{"triangle", t + 1}, {"face", soup.source[t] + 1}});
+    if (!a.through.empty()) {
+      j["segment_hits"] = nlohmann::json::array();
+      for (const SegmentHit& h : hits)
+        j["segment_hits"].push_back(
+            {{"triangle", h.triangle + 1}, {"face", soup.source[h.triangle] + 1}, {"t", h.t}});
+    }
     fmt::print("{}\n", j.dump(2));
   } else {
-    fmt::print("{}: {}{}", a.path, r.clean() ? "clean, " : "PROBLEMS, ", r.describe(soup));
+    fmt::print("{}: {}{}", a.path, ok ? "clean, " : "PROBLEMS, ", r.describe(soup));
+    if (!a.through.empty()) {
+      fmt::print("  segment: {} hit(s)\n", hits.size());
+      for (size_t i = 0; i < hits.size() && i < 10; ++i)
+        fmt::print("  segment meets triangle {} (of polygon {}) at t = {:.6g}\n",
+                   hits[i].triangle + 1, soup.source[hits[i].triangle] + 1, hits[i].t);
+    }
   }
-  if (!r.clean()) throw ExitStatus(1, "");
+  if (!ok) throw ExitStatus(1, "");
 }
 
 }  // namespace
@@ -67,6 +85,10 @@ void add_check_surface_command(CLI::App& app) {
                   "adjacent triangles fold when their normals differ by more than this, degrees")
       ->check(CLI::Range(0.0, 180.0))
       ->capture_default_str();
+  cmd->add_option("--through", args->through,
+                  "X1 Y1 Z1 X2 Y2 Z2: a segment that must pass without meeting the surface (e.g. "
+                  "the axis of a hole); hits count as problems")
+      ->expected(6);
   cmd->callback([args] { run_check_surface(*args); });
 }
 

@@ -90,7 +90,8 @@ std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>&
   write_file_atomically(script.string(), [&](std::ostream& out) {
     out << "set terminal pngcairo size 720,480 font 'sans,10'\n"
         << "set output '" << temporary.filename().string() << "'\n"
-        << "set logscale xy\nset format y '10^{%L}'\nset grid\nset key bottom right\n"
+        << "set logscale xy\nset format y '10^{%L}'\nset yrange [1e-13:*]\nset grid\nset key "
+           "bottom right\n"
         << "set xlabel 'distance from the extraordinary point along the boundary (parameter t)'\n"
         << "set ylabel 'largest normal jump (degrees)'\n"
         << "set title 'Normal jump across patch boundaries near extraordinary points'\n"
@@ -124,10 +125,34 @@ std::string number(double x) {
   return fmt::format("{:.3e}", x);
 }
 
-void write_index(const fs::path& dir, const std::string& input, const CompareArgs& a,
+std::string html_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+void write_index(const fs::path& dir, const std::string& input_path, const CompareArgs& a,
                  const std::vector<ContinuityReport>& reports,
                  const std::vector<std::string>& refusals, bool has_closeup,
                  const std::string& closeup_note, const std::string& plot_problem) {
+  const std::string input = html_escape(input_path);
   write_file_atomically((dir / "index.html").string(), [&](std::ostream& out) {
     out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>stitch compare: " << input
         << "</title>\n<style>body{font-family:sans-serif;max-width:1500px;margin:1em auto}"
@@ -153,7 +178,7 @@ void write_index(const fs::path& dir, const std::string& input, const CompareArg
     }
     out << "</table>\n";
     for (const std::string& r : refusals) {
-      out << "<p><strong>Not shown:</strong> " << r << "</p>\n";
+      out << "<p><strong>Not shown:</strong> " << html_escape(r) << "</p>\n";
     }
     std::string order;
     for (const ContinuityReport& r : reports)
@@ -178,7 +203,7 @@ void write_index(const fs::path& dir, const std::string& input, const CompareArg
     if (plot_problem.empty()) {
       out << "<p><img src=\"jump_by_distance.png\" alt=\"plot\"></p>\n";
     } else {
-      out << "<p><strong>No plot:</strong> " << plot_problem << "</p>\n";
+      out << "<p><strong>No plot:</strong> " << html_escape(plot_problem) << "</p>\n";
     }
     out << "<p>Data: <a href=\"jump_by_distance.dat\">jump_by_distance.dat</a>.</p>\n"
            "</body></html>\n";
@@ -290,7 +315,7 @@ void add_compare_command(CLI::App& app) {
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
   cmd->add_option("--zoom", args->zoom,
-                  "radius of the region shown in the close-up, in edge lengths")
+                  "radius of the region shown in the close-up, in patch sizes")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   add_kgon_options(cmd, args->kgon);

@@ -70,7 +70,8 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
     if (r.what.empty()) continue;  // blank or comment line
     std::string text = op.text.substr(0, op.text.find(" #"));
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.erase(0, 1);
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
+      text.erase(0, 1);
     lines.push_back(r.summary(text));
   }
   validate(mesh);
@@ -86,7 +87,7 @@ void add_edit_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "edit",
       "apply topology operations (insert-edge V@F V@F, delete-edge V W[@F], subdivide-edge V W, "
-      "collapse-edge V W, extrude-face F DIST, connect-faces F G [TWIST], delete-face F, "
+      "collapse-edge V W, extrude-face F DIST [SCALE], connect-faces F G [TWIST], delete-face F, "
       "doo-sabin, vertex-insertion, catmull-clark, dual); vertices and faces are numbered from 1 "
       "in file order; see docs/editing.md");
   cmd->add_option("IN", args->in, "input mesh (.obj, .off, .ply)")->required();

@@ -64,8 +64,8 @@ void run_info(const InfoArgs& a) {
   fmt::print("  face degree histogram  {}\n", histogram(t.degree_histogram));
   fmt::print("  extraordinary points: {} vertices (valence != 4), {} faces (degree != 4)\n",
              ev_vertices.size(), ev_faces.size());
-  fmt::print("  bounding box ({:.6g}, {:.6g}, {:.6g}) - ({:.6g}, {:.6g}, {:.6g})\n", lo.x(),
-             lo.y(), lo.z(), hi.x(), hi.y(), hi.z());
+  fmt::print("  bounding box ({:.6g}, {:.6g}, {:.6g}) - ({:.6g}, {:.6g}, {:.6g})\n", lo.x(), lo.y(),
+             lo.z(), hi.x(), hi.y(), hi.z());
 }
 
 }  // namespace

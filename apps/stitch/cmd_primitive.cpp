@@ -33,8 +33,9 @@ void add_primitive_command(CLI::App& app) {
   std::string names;
   for (const std::string& n : primitive_names()) names += (names.empty() ? "" : ", ") + n;
   auto* cmd = app.add_subcommand("primitive", "write a primitive solid: " + names);
-  cmd->add_option("NAME", args->name, "tetrahedron, cube, octahedron, dodecahedron, icosahedron, "
-                                      "prism, torus")
+  cmd->add_option("NAME", args->name,
+                  "tetrahedron, cube, octahedron, dodecahedron, icosahedron, "
+                  "prism, torus")
       ->required();
   cmd->add_option("PARAMS", args->params, "prism: N sides; torus: M N segments");
   cmd->add_option("-o,--output", args->out, "output mesh (.obj, .off, .ply, .stl)")->required();

@@ -122,7 +122,7 @@ void add_render_command(CLI::App& app) {
                 "close-up of the extraordinary point of highest valence, seen along its normal "
                 "tilted by 30 degrees");
   cmd->add_option("--zoom", args->zoom,
-                  "with --focus-ev: radius of the region shown around the point, in edge lengths")
+                  "with --focus-ev: radius of the region shown around the point, in patch sizes")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "segments per patch side")

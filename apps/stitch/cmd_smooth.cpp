@@ -27,11 +27,11 @@ void run_smooth(const SmoothArgs& a) {
   // Refuse a bad output name before any work, so nothing is computed for nothing.
   const std::string ext = file_extension(a.out);
   if (a.unwelded && ext != ".ply")
-    throw MeshError(fmt::format("--unwelded writes PLY (per-sample attributes); '{}' is not .ply",
-                                a.out));
+    throw MeshError(
+        fmt::format("--unwelded writes PLY (per-sample attributes); '{}' is not .ply", a.out));
   if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw MeshError(fmt::format(
-        "cannot tell the output format of '{}': use .obj, .ply, .off or .stl", a.out));
+    throw MeshError(
+        fmt::format("cannot tell the output format of '{}': use .obj, .ply, .off or .stl", a.out));
 
   StageReporter stage(a.progress || stderr_is_terminal());
   stage.begin("reading " + a.in.path);

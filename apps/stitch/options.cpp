@@ -72,7 +72,9 @@ void add_method_option(CLI::App* cmd, std::string& method, bool allow_all) {
   opt->capture_default_str();
 }
 
-bool stderr_is_terminal() { return isatty(fileno(stderr)) != 0; }
+bool stderr_is_terminal() {
+  return isatty(fileno(stderr)) != 0;
+}
 
 StageReporter::StageReporter(bool enabled) : enabled_(enabled) {}
 
@@ -83,8 +85,7 @@ void StageReporter::begin(const std::string& stage) {
 
 void StageReporter::end() {
   if (!enabled_) return;
-  const double s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   fmt::print(stderr, " {:.2f} s\n", s);
 }
 

@@ -26,14 +26,14 @@ W=examples/two_cubes.obj
 # 1. The five steps on a tetrahedron.
 run render $T -o $F/tet_1_mesh.png --size 400x400 --draw input --show mesh,ev
 run render $T -o $F/tet_2_kgons.png --size 400x400 --draw none --show mesh,kgons
-run render $T -o $F/tet_3_nets.png --size 400x400 --draw none --show kgons,nets
+run render $T -o $F/tet_3_nets.png --size 400x400 --draw none --show mesh,nets
 run render $T -o $F/tet_4_surface.png --size 400x400 --mode patches --show mesh
 run render $T -o $F/tet_5_polygon_mesh.png --size 400x400 --show tess --resolution 6
 
 # 2. The cube with an inserted edge (one 10-sided face, genus 1), before and after smoothing.
-run render $H -o $F/cube_hole_mesh.png --size 480x480 --view top --draw input --show mesh,ev
-run render $H -o $F/cube_hole_smooth.png --size 480x480 --view top --show mesh,ev
-run render $H -o $F/cube_hole_smooth_iso.png --size 480x480 --view iso --show ev
+run render $H -o $F/cube_hole_mesh.png --size 480x480 --view front --draw input --show mesh,ev
+run render $H -o $F/cube_hole_smooth.png --size 480x480 --view front --show mesh,ev
+run render $H -o $F/cube_hole_smooth_iso.png --size 480x480 --eye -3,-4,5 --show ev
 
 # 3. AS&C against ours: zebra close-ups of a 3-valent point and of the 10-valent point.
 run render $C -o $F/valence3_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32
@@ -42,23 +42,27 @@ run render $H -o $F/valence10_asc.png --size 480x480 --method asc --mode zebra -
 run render $H -o $F/valence10_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32
 
 # 4. Catmull-Clark against ours on the cube with a hole and on two cubes joined by an edge.
-run render $H -o $F/cube_hole_cc.png --size 480x480 --view top --method cc --mode zebra
-run render $H -o $F/cube_hole_mdc.png --size 480x480 --view top --method mdc --mode zebra
+run render $H -o $F/cube_hole_cc.png --size 480x480 --view front --method cc --mode zebra
+run render $H -o $F/cube_hole_mdc.png --size 480x480 --view front --method mdc --mode zebra
 run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra
 run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra
 
-# 5. Star-shaped against regularised K-gons (the 10-sided face's K-gon is a star).
-run render $H -o $F/kgon_star.png --size 480x480 --view top --show kgons
-run render $H -o $F/kgon_regularized.png --size 480x480 --view top --show kgons --regularize
+# 5. Star-shaped against regularised K-gons: the K-gons of the star prism's non-convex
+#    10-sided faces (docs/figures/star_prism.obj), and the surfaces they give.
+P=docs/figures/star_prism.obj
+run render $P -o $F/kgon_star.png --size 400x400 --view front --show mesh,kgons
+run render $P -o $F/kgon_regularized.png --size 400x400 --view front --show mesh,kgons --regularize
+run render $P -o $F/kgon_star_surface.png --size 400x400 --eye 1.2,-2.4,3.2 --mode isophote
+run render $P -o $F/kgon_regularized_surface.png --size 400x400 --eye 1.2,-2.4,3.2 --mode isophote --regularize
 
-# 6. Bulkier against smoother: the size of the extraordinary K-gons.
-run render $C -o $F/kgon_scale_1.4.png --size 400x400 --mode zebra --kgon-scale 1.4
-run render $C -o $F/kgon_scale_1.0.png --size 400x400 --mode zebra
-run render $C -o $F/kgon_scale_0.6.png --size 400x400 --mode zebra --kgon-scale 0.6
+# 6. Bulkier against smoother: the size of the extraordinary K-gons (the cube's 3-gons).
+run render $C -o $F/kgon_scale_1.5.png --size 400x400 --mode isophote --show kgons --kgon-scale 1.5
+run render $C -o $F/kgon_scale_1.0.png --size 400x400 --mode isophote --show kgons
+run render $C -o $F/kgon_scale_0.5.png --size 400x400 --mode isophote --show kgons --kgon-scale 0.5
 
-# 7. All K-gons rotated.
-run render $C -o $F/kgon_rotate_0.png --size 400x400 --show kgons
-run render $C -o $F/kgon_rotate_30.png --size 400x400 --show kgons --kgon-rotate 30
+# 7. All K-gons rotated (every K-gon with K != 4, in its plane).
+run render $C -o $F/kgon_rotate_0.png --size 400x400 --mode isophote --show kgons
+run render $C -o $F/kgon_rotate_45.png --size 400x400 --mode isophote --show kgons --kgon-rotate 45
 
 # 8. stitch compare on the cube (zebra of asc, mdc, cc; jump plot; index.html).
 run compare $C -o $F/compare_cube --size 320x320

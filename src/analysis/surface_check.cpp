@@ -108,8 +108,8 @@ TriangleSoup triangulate(const PolygonSoup& polygons) {
   std::vector<int> weld(polygons.positions.size());
   for (size_t v = 0; v < polygons.positions.size(); ++v) {
     const Vec3& p = polygons.positions[v];
-    const auto [it, fresh] =
-        index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, static_cast<int>(soup.positions.size()));
+    const auto [it, fresh] = index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()},
+                                           static_cast<int>(soup.positions.size()));
     if (fresh) soup.positions.push_back(p);
     weld[v] = it->second;
   }
@@ -175,7 +175,8 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
   // Folds and orientation, over edges shared by two triangles.
   std::unordered_map<std::uint64_t, std::vector<std::pair<int, bool>>> edge_tris;
   auto key = [](int a, int b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+           static_cast<std::uint32_t>(std::max(a, b));
   };
   for (int i = 0; i < nt; ++i)
     for (int k = 0; k < 3; ++k) {
@@ -212,7 +213,9 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
   }
   mean_size /= nt;
   const double cell = std::max(mean_size, diag * 1e-3) + 1e-300;
-  auto cell_of = [&](double x, double origin) { return static_cast<long>(std::floor((x - origin) / cell)); };
+  auto cell_of = [&](double x, double origin) {
+    return static_cast<long>(std::floor((x - origin) / cell));
+  };
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (int i = 0; i < nt; ++i) {
     Vec3 tlo = P[T[i][0]], thi = tlo;
@@ -252,8 +255,8 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
           crossing = segment_crosses_interior(i1, i2, P[T[j][0]], P[T[j][1]], P[T[j][2]]) ||
                      segment_crosses_interior(j1, j2, P[T[i][0]], P[T[i][1]], P[T[i][2]]);
         } else {
-          crossing = triangles_intersect(P[T[i][0]], P[T[i][1]], P[T[i][2]], P[T[j][0]],
-                                         P[T[j][1]], P[T[j][2]], eps);
+          crossing = triangles_intersect(P[T[i][0]], P[T[i][1]], P[T[i][2]], P[T[j][0]], P[T[j][1]],
+                                         P[T[j][2]], eps);
         }
         if (crossing) {
           ++report.self_intersections;
@@ -302,7 +305,8 @@ std::vector<SegmentHit> segment_hits(const TriangleSoup& soup, const Vec3& p, co
     // Closed bounds: a segment through a shared edge or vertex hits, it does not slip through.
     if (u >= 0 && v >= 0 && u + v <= 1 && t >= 0 && t <= 1) hits.push_back({i, t});
   }
-  std::sort(hits.begin(), hits.end(), [](const SegmentHit& a, const SegmentHit& b) { return a.t < b.t; });
+  std::sort(hits.begin(), hits.end(),
+            [](const SegmentHit& a, const SegmentHit& b) { return a.t < b.t; });
   return hits;
 }
 

@@ -330,9 +330,9 @@ void CatmullClarkSurface::check_patch_sides(const HalfedgeMesh& mesh,
           (evaluate(c, 1.0, t).position - evaluate(mesh.next(c), t, 1.0).position).norm();
       if (gap_across_edge > tolerance || gap_in_face > tolerance) {
         throw MeshError(fmt::format(
-            "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}, and OpenSubdiv's "
-            "limit surface comes apart there (gap {:.3g} at the patch of corner {}, vertex {}, "
-            "face {}); use mdc or asc",
+            "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}, and with that "
+            "OpenSubdiv's limit surface comes apart (gap {:.3g} at the side of the patch of "
+            "corner {}, vertex {}, face {}); use mdc or asc",
             unusual, std::max(gap_across_edge, gap_in_face), c.idx, mesh.origin(c).idx,
             mesh.face(c).idx));
       }

@@ -24,8 +24,7 @@ Method parse_method(const std::string& s) {
 }
 
 Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
-    : method_(method),
-      bezier_(build_bezier_surface(mesh, kgon_options)) {
+    : method_(method), bezier_(build_bezier_surface(mesh, kgon_options)) {
   if (method == Method::cc) cc_ = std::make_shared<const CatmullClarkSurface>(mesh);
 }
 

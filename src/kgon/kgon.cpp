@@ -13,7 +13,8 @@ namespace stitch {
 std::vector<double> doo_sabin_weights(int n) {
   std::vector<double> a(n);
   a[0] = 0.25 + 5.0 / (4.0 * n);
-  for (int k = 1; k < n; ++k) a[k] = (3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * k / n)) / (4.0 * n);
+  for (int k = 1; k < n; ++k)
+    a[k] = (3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * k / n)) / (4.0 * n);
   return a;
 }
 

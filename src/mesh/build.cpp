@@ -59,8 +59,7 @@ struct DirectedEdge {
 
 }  // namespace
 
-HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options,
-                        BuildReport* report) {
+HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, BuildReport* report) {
   check_soup(soup, options);
   BuildReport local;
   BuildReport& rep = report ? *report : local;
@@ -81,8 +80,8 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options,
     rep.vertex_source.push_back(v);
   }
   if (rep.dropped_vertices > 0)
-    rep.warnings.push_back(
-        fmt::format("dropped {} unused vertices (not referenced by any face)", rep.dropped_vertices));
+    rep.warnings.push_back(fmt::format("dropped {} unused vertices (not referenced by any face)",
+                                       rep.dropped_vertices));
 
   // Group directed edges by their unordered vertex pair.
   std::map<std::pair<int, int>, std::pair<std::vector<DirectedEdge>, std::vector<DirectedEdge>>>

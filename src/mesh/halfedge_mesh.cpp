@@ -16,8 +16,12 @@ std::vector<H> live(int capacity, const std::vector<std::uint8_t>& deleted) {
 std::vector<Vertex> HalfedgeMesh::vertices() const {
   return live<Vertex>(vertex_capacity(), vertex_deleted_);
 }
-std::vector<Edge> HalfedgeMesh::edges() const { return live<Edge>(edge_capacity(), edge_deleted_); }
-std::vector<Face> HalfedgeMesh::faces() const { return live<Face>(face_capacity(), face_deleted_); }
+std::vector<Edge> HalfedgeMesh::edges() const {
+  return live<Edge>(edge_capacity(), edge_deleted_);
+}
+std::vector<Face> HalfedgeMesh::faces() const {
+  return live<Face>(face_capacity(), face_deleted_);
+}
 std::vector<Halfedge> HalfedgeMesh::halfedges() const {
   std::vector<Halfedge> out;
   out.reserve(halfedge_capacity());
@@ -41,7 +45,9 @@ std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
   return out;
 }
 
-std::vector<Halfedge> HalfedgeMesh::face_loop(Face f) const { return loop_from(halfedge(f)); }
+std::vector<Halfedge> HalfedgeMesh::face_loop(Face f) const {
+  return loop_from(halfedge(f));
+}
 
 std::vector<Halfedge> HalfedgeMesh::vertex_fan(Vertex v) const {
   std::vector<Halfedge> out;
@@ -57,8 +63,12 @@ std::vector<Halfedge> HalfedgeMesh::vertex_fan(Vertex v) const {
   return out;
 }
 
-int HalfedgeMesh::degree(Face f) const { return static_cast<int>(face_loop(f).size()); }
-int HalfedgeMesh::valence(Vertex v) const { return static_cast<int>(vertex_fan(v).size()); }
+int HalfedgeMesh::degree(Face f) const {
+  return static_cast<int>(face_loop(f).size());
+}
+int HalfedgeMesh::valence(Vertex v) const {
+  return static_cast<int>(vertex_fan(v).size());
+}
 
 int HalfedgeMesh::index_in_face(Halfedge h) const {
   int i = 0;

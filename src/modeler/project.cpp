@@ -227,7 +227,7 @@ std::string autosave_path(const std::string& document_path) {
     return (base / "stitch" / "autosave" / "untitled.stitch").string();
   }
   const fs::path p(document_path);
-  return (p.parent_path() / ("." + p.filename().string() + ".autosave.stitch")).string();
+  return (p.parent_path() / fmt::format(".{}.autosave.stitch", p.filename().string())).string();
 }
 
 bool autosave_is_newer(const std::string& autosave, const std::string& document_path) {

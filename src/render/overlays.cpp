@@ -11,6 +11,9 @@ void LineSet::add_loop(const std::vector<Vec3>& loop, const Colour& c) {
 
 std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
                                                      const KgonSet& kgons) {
+  // The extent is the size of the patches meeting at the point: the mean distance to their
+  // opposite corners, which are the centroids of the K-gons of the neighbouring faces (for a
+  // vertex) or vertices (for a face).
   std::vector<ExtraordinaryPoint> points;
   for (const Vertex v : mesh.vertices()) {
     const Kgon& kgon = kgons.vertex[v.idx];
@@ -18,7 +21,7 @@ std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
     double extent = 0.0;
     const auto fan = mesh.vertex_fan(v);
     for (const Halfedge h : fan)
-      extent += (mesh.position(mesh.target(h)) - mesh.position(v)).norm();
+      extent += (kgons.face[mesh.face(h).idx].centroid - kgon.centroid).norm();
     points.push_back({kgon.centroid, kgon.normal, kgon.size(), KgonKind::vertex, v.idx,
                       extent / static_cast<double>(fan.size())});
   }
@@ -26,11 +29,9 @@ std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
     const Kgon& kgon = kgons.face[f.idx];
     if (kgon.size() == 4) continue;
     const auto loop = mesh.face_loop(f);
-    Vec3 centre = Vec3::Zero();
-    for (const Halfedge h : loop) centre += mesh.position(mesh.origin(h));
-    centre /= static_cast<double>(loop.size());
     double extent = 0.0;
-    for (const Halfedge h : loop) extent += (mesh.position(mesh.origin(h)) - centre).norm();
+    for (const Halfedge h : loop)
+      extent += (kgons.vertex[mesh.origin(h).idx].centroid - kgon.centroid).norm();
     points.push_back({kgon.centroid, kgon.normal, kgon.size(), KgonKind::face, f.idx,
                       extent / static_cast<double>(loop.size())});
   }

@@ -1,5 +1,6 @@
 #include "stitch/render/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -34,7 +35,7 @@ void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_pol
 }
 
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
-                    double radius_edges) {
+                    double radius_patches) {
   const Vec3 n = point.normal.normalized();
   // Tilt towards the world's up (or z when the normal is vertical) so the view is oblique.
   Vec3 towards = Vec3::UnitY() - Vec3::UnitY().dot(n) * n;
@@ -42,7 +43,12 @@ Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene,
   const double tilt = 30.0 * std::numbers::pi / 180.0;
   const Vec3 from = std::cos(tilt) * n + std::sin(tilt) * towards.normalized();
   const double extent = point.extent > 0 ? point.extent : scene.bounds.radius() * 0.25;
-  return frame_sphere(point.position, radius_edges * extent, from, aspect, scene.bounds);
+  const double radius = radius_patches * extent;
+  Camera camera = frame_sphere(point.position, radius, from, aspect, scene.bounds);
+  // Cut away everything in front of the framed sphere: an extraordinary point can lie inside
+  // the model (e.g. that of a face whose loop runs around a handle), hidden by other sheets.
+  camera.near_plane = std::max(camera.near_plane, (camera.eye - point.position).norm() - radius);
+  return camera;
 }
 
 }  // namespace stitch

@@ -33,8 +33,8 @@ void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
   Halfedge h = HalfedgeMesh::halfedge(e, 0);
   if (mesh.origin(h) != keep) h = HalfedgeMesh::twin(h);
   if (mesh.origin(h) != keep)
-    throw MeshError(fmt::format("collapse-edge: vertex {} is not an end of edge {}", keep.idx + 1,
-                                e.idx + 1));
+    throw MeshError(
+        fmt::format("collapse-edge: vertex {} is not an end of edge {}", keep.idx + 1, e.idx + 1));
   const Halfedge t = HalfedgeMesh::twin(h);
   const Vertex a = keep, b = mesh.origin(t);
   if (td::edges_between(mesh, a, b).size() > 1)

@@ -18,21 +18,25 @@ Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
   return len > 0 ? Vec3(n / len) : Vec3::Zero();
 }
 
-ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance) {
+ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale) {
   td::check_face(mesh, f, "extrude-face");
   if (!std::isfinite(distance))
     throw MeshError("extrude-face: the distance must be a finite number");
+  if (!std::isfinite(scale) || scale <= 0)
+    throw MeshError("extrude-face: the scale must be a positive number");
   const Vec3 n = face_normal(mesh, f);
-  // Scale-aware test: a face whose area is tiny against its size has no usable direction.
-  if (n.isZero()) throw MeshError(fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
+  if (n.isZero())
+    throw MeshError(fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
   const std::vector<Halfedge> loop = mesh.face_loop(f);
   const int k = static_cast<int>(loop.size());
 
   ExtrudeResult result;
   result.degree = k;
+  const Vec3 centre = td::face_centroid(mesh, f);
   std::vector<Vertex> top(k);
   for (int i = 0; i < k; ++i) {
-    top[i] = mesh.add_vertex(mesh.position(mesh.origin(loop[i])) + distance * n);
+    const Vec3 p = mesh.position(mesh.origin(loop[i]));
+    top[i] = mesh.add_vertex(centre + scale * (p - centre) + distance * n);
     if (i == 0) result.first_vertex = top[i].idx;
   }
   std::vector<Face> side(k);

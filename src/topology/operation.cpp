@@ -78,8 +78,8 @@ void expect_args(const std::vector<std::string_view>& words, size_t min, size_t 
                  const char* usage) {
   const size_t n = words.size() - 1;
   if (n < min || n > max)
-    throw MeshError(fmt::format("{} takes {}; got {} argument{}", words[0], usage, n,
-                                n == 1 ? "" : "s"));
+    throw MeshError(
+        fmt::format("{} takes {}; got {} argument{}", words[0], usage, n, n == 1 ? "" : "s"));
 }
 
 std::string stats_text(const TopologyStats& s) {
@@ -94,12 +94,12 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) 
     expect_args(w, 2, 2, "two corners: insert-edge V@F V@F");
     const Corner a = parse_corner(mesh, w[1]), b = parse_corner(mesh, w[2]);
     const InsertEdgeResult r = insert_edge(mesh, a, b);
-    report.what =
-        r.split ? fmt::format("new edge {} split face {} into faces {} and {}", r.edge.idx + 1,
-                              r.face.idx + 1, r.face.idx + 1, r.other.idx + 1)
-                : fmt::format("new edge {} merged faces {} and {} into face {} ({} sides)",
-                              r.edge.idx + 1, r.face.idx + 1, r.other.idx + 1, r.face.idx + 1,
-                              mesh.degree(r.face));
+    report.what = r.split
+                      ? fmt::format("new edge {} split face {} into faces {} and {}",
+                                    r.edge.idx + 1, r.face.idx + 1, r.face.idx + 1, r.other.idx + 1)
+                      : fmt::format("new edge {} merged faces {} and {} into face {} ({} sides)",
+                                    r.edge.idx + 1, r.face.idx + 1, r.other.idx + 1, r.face.idx + 1,
+                                    mesh.degree(r.face));
   } else if (op == "delete-edge") {
     expect_args(w, 2, 2, "an edge: delete-edge V W or V W@F");
     const Edge e = parse_edge(mesh, w[1], w[2]);
@@ -125,9 +125,11 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) 
     report.what = fmt::format("collapsed edge {}: vertex {} merged into vertex {}", e.idx + 1,
                               gone.idx + 1, keep.idx + 1);
   } else if (op == "extrude-face") {
-    expect_args(w, 2, 2, "a face and a distance: extrude-face F DIST");
+    expect_args(w, 2, 3, "a face, a distance and an optional scale: extrude-face F DIST [SCALE]");
     const Face f = face_arg(mesh, w[1]);
-    const ExtrudeResult r = extrude_face(mesh, f, parse_double(w[2], "distance"));
+    const double distance = parse_double(w[2], "distance");
+    const double scale = w.size() > 3 ? parse_double(w[3], "scale") : 1.0;
+    const ExtrudeResult r = extrude_face(mesh, f, distance, scale);
     report.what = fmt::format("face {} extruded: new vertices {}-{}, new side faces {}-{}",
                               f.idx + 1, r.first_vertex + 1, r.first_vertex + r.degree,
                               r.first_face + 1, r.first_face + r.degree);
@@ -136,9 +138,9 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) 
     const Face f = face_arg(mesh, w[1]), g = face_arg(mesh, w[2]);
     const int twist = w.size() > 3 ? parse_int(w[3], "twist") : 0;
     const ConnectFacesResult r = connect_faces(mesh, f, g, twist);
-    report.what = fmt::format("faces {} and {} joined by a tube of {} quads, new edges {}-{}",
-                              f.idx + 1, g.idx + 1, r.degree, r.first_edge + 1,
-                              r.first_edge + r.degree);
+    report.what =
+        fmt::format("faces {} and {} joined by a tube of {} quads, new edges {}-{}", f.idx + 1,
+                    g.idx + 1, r.degree, r.first_edge + 1, r.first_edge + r.degree);
   } else if (op == "delete-face") {
     expect_args(w, 1, 1, "a face: delete-face F");
     const Face f = face_arg(mesh, w[1]);
@@ -158,10 +160,11 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) 
     mesh = std::move(result);
     report.what = "whole mesh remeshed and renumbered";
   } else {
-    throw MeshError(fmt::format("unknown operation '{}' (known: insert-edge, delete-edge, "
-                                "subdivide-edge, collapse-edge, extrude-face, connect-faces, "
-                                "delete-face, doo-sabin, vertex-insertion, catmull-clark, dual)",
-                                op));
+    throw MeshError(
+        fmt::format("unknown operation '{}' (known: insert-edge, delete-edge, "
+                    "subdivide-edge, collapse-edge, extrude-face, connect-faces, "
+                    "delete-face, doo-sabin, vertex-insertion, catmull-clark, dual)",
+                    op));
   }
   report.stats = topology_stats(mesh);
   return report;
@@ -190,7 +193,8 @@ Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text) {
   for (Halfedge h : mesh.face_loop(f))
     if (mesh.origin(h) == v) found.push_back(h);
   if (found.empty())
-    throw MeshError(fmt::format("corner {}: vertex {} is not on face {}", text, v.idx + 1, f.idx + 1));
+    throw MeshError(
+        fmt::format("corner {}: vertex {} is not on face {}", text, v.idx + 1, f.idx + 1));
   if (occurrence == 0 && found.size() > 1)
     throw MeshError(fmt::format(
         "corner {} is ambiguous: vertex {} appears {} times on face {}; write {}@{}#k with k = "
@@ -233,9 +237,10 @@ Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_v
   if (on_face.size() == 1) return Edge(*on_face.begin());
   // Several (e.g. both edges of a 2-sided face): the one face F runs along from V to W.
   if (forward.size() == 1) return Edge(*forward.begin());
-  throw MeshError(fmt::format("several edges joining vertices {} and {} lie on face {}; the choice "
-                              "is ambiguous",
-                              v.idx + 1, w.idx + 1, f.idx + 1));
+  throw MeshError(
+      fmt::format("several edges joining vertices {} and {} lie on face {}; the choice "
+                  "is ambiguous",
+                  v.idx + 1, w.idx + 1, f.idx + 1));
 }
 
 OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line) {
@@ -262,10 +267,17 @@ OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line) {
 }
 
 std::vector<std::string> operation_synopsis() {
-  return {"insert-edge V@F V@F", "delete-edge V W[@F]",  "subdivide-edge V W[@F]",
-          "collapse-edge V W[@F]", "extrude-face F DIST", "connect-faces F G [TWIST]",
-          "delete-face F",        "doo-sabin",           "vertex-insertion",
-          "catmull-clark",        "dual"};
+  return {"insert-edge V@F V@F",
+          "delete-edge V W[@F]",
+          "subdivide-edge V W[@F]",
+          "collapse-edge V W[@F]",
+          "extrude-face F DIST [SCALE]",
+          "connect-faces F G [TWIST]",
+          "delete-face F",
+          "doo-sabin",
+          "vertex-insertion",
+          "catmull-clark",
+          "dual"};
 }
 
 }  // namespace stitch

@@ -11,7 +11,8 @@ namespace stitch {
 
 namespace {
 
-HalfedgeMesh from_one_based(std::vector<Vec3> positions, const std::vector<std::vector<int>>& faces) {
+HalfedgeMesh from_one_based(std::vector<Vec3> positions,
+                            const std::vector<std::vector<int>>& faces) {
   PolygonSoup soup;
   soup.positions = std::move(positions);
   for (const auto& f : faces) {
@@ -29,47 +30,42 @@ HalfedgeMesh make_tetrahedron() {
 }
 
 HalfedgeMesh make_cube() {
-  return from_one_based({{-1, -1, -1},
-                         {1, -1, -1},
-                         {1, 1, -1},
-                         {-1, 1, -1},
-                         {-1, -1, 1},
-                         {1, -1, 1},
-                         {1, 1, 1},
-                         {-1, 1, 1}},
-                        {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}});
+  return from_one_based(
+      {{-1, -1, -1},
+       {1, -1, -1},
+       {1, 1, -1},
+       {-1, 1, -1},
+       {-1, -1, 1},
+       {1, -1, 1},
+       {1, 1, 1},
+       {-1, 1, 1}},
+      {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}});
 }
 
 HalfedgeMesh make_octahedron() {
-  return from_one_based({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
-                        {{1, 3, 5},
-                         {3, 2, 5},
-                         {2, 4, 5},
-                         {4, 1, 5},
-                         {3, 1, 6},
-                         {2, 3, 6},
-                         {4, 2, 6},
-                         {1, 4, 6}});
+  return from_one_based(
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+      {{1, 3, 5}, {3, 2, 5}, {2, 4, 5}, {4, 1, 5}, {3, 1, 6}, {2, 3, 6}, {4, 2, 6}, {1, 4, 6}});
 }
 
 HalfedgeMesh make_icosahedron() {
   const double p = std::numbers::phi;
-  return from_one_based({{-1, p, 0},
-                         {1, p, 0},
-                         {-1, -p, 0},
-                         {1, -p, 0},
-                         {0, -1, p},
-                         {0, 1, p},
-                         {0, -1, -p},
-                         {0, 1, -p},
-                         {p, 0, -1},
-                         {p, 0, 1},
-                         {-p, 0, -1},
-                         {-p, 0, 1}},
-                        {{1, 12, 6},  {1, 6, 2},   {1, 2, 8},  {1, 8, 11}, {1, 11, 12},
-                         {2, 6, 10},  {6, 12, 5},  {12, 11, 3}, {11, 8, 7}, {8, 2, 9},
-                         {4, 10, 5},  {4, 5, 3},   {4, 3, 7},  {4, 7, 9},  {4, 9, 10},
-                         {5, 10, 6},  {3, 5, 12},  {7, 3, 11}, {9, 7, 8},  {10, 9, 2}});
+  return from_one_based(
+      {{-1, p, 0},
+       {1, p, 0},
+       {-1, -p, 0},
+       {1, -p, 0},
+       {0, -1, p},
+       {0, 1, p},
+       {0, -1, -p},
+       {0, 1, -p},
+       {p, 0, -1},
+       {p, 0, 1},
+       {-p, 0, -1},
+       {-p, 0, 1}},
+      {{1, 12, 6},  {1, 6, 2},  {1, 2, 8},  {1, 8, 11}, {1, 11, 12}, {2, 6, 10}, {6, 12, 5},
+       {12, 11, 3}, {11, 8, 7}, {8, 2, 9},  {4, 10, 5}, {4, 5, 3},   {4, 3, 7},  {4, 7, 9},
+       {4, 9, 10},  {5, 10, 6}, {3, 5, 12}, {7, 3, 11}, {9, 7, 8},   {10, 9, 2}});
 }
 
 HalfedgeMesh make_dodecahedron() {
@@ -137,7 +133,8 @@ HalfedgeMesh make_torus(int m, int n, double major_radius, double minor_radius) 
 HalfedgeMesh make_primitive(const std::string& name, const std::vector<int>& params) {
   auto expect = [&](size_t count, const char* usage) {
     if (params.size() != count)
-      throw MeshError(fmt::format("primitive {}: expected {} parameter(s): {}", name, count, usage));
+      throw MeshError(
+          fmt::format("primitive {}: expected {} parameter(s): {}", name, count, usage));
   };
   if (name == "tetrahedron") return expect(0, "none"), make_tetrahedron();
   if (name == "cube") return expect(0, "none"), make_cube();
@@ -145,15 +142,18 @@ HalfedgeMesh make_primitive(const std::string& name, const std::vector<int>& par
   if (name == "dodecahedron") return expect(0, "none"), make_dodecahedron();
   if (name == "icosahedron") return expect(0, "none"), make_icosahedron();
   if (name == "prism") return expect(1, "N (sides, >= 2)"), make_prism(params[0]);
-  if (name == "torus") return expect(2, "M N (segments around and across, each >= 3)"), make_torus(params[0], params[1]);
-  throw MeshError(fmt::format("unknown primitive '{}' (known: tetrahedron, cube, octahedron, "
-                              "dodecahedron, icosahedron, prism N, torus M N)",
-                              name));
+  if (name == "torus")
+    return expect(2, "M N (segments around and across, each >= 3)"),
+           make_torus(params[0], params[1]);
+  throw MeshError(
+      fmt::format("unknown primitive '{}' (known: tetrahedron, cube, octahedron, "
+                  "dodecahedron, icosahedron, prism N, torus M N)",
+                  name));
 }
 
 std::vector<std::string> primitive_names() {
-  return {"tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron", "prism N",
-          "torus M N"};
+  return {"tetrahedron", "cube",    "octahedron", "dodecahedron",
+          "icosahedron", "prism N", "torus M N"};
 }
 
 }  // namespace stitch

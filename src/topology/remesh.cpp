@@ -1,7 +1,6 @@
 #include "stitch/topology/remesh.hpp"
 
 #include <fmt/format.h>
-
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
@@ -19,9 +18,9 @@ HalfedgeMesh dual(const HalfedgeMesh& input) {
   const HalfedgeMesh m = td::compacted(input);
   for (Halfedge h : m.halfedges())
     if (m.face(h) == m.face(HalfedgeMesh::twin(h)))
-      throw MeshError(fmt::format(
-          "dual: face {} runs along edge {} twice; its dual edge would be a loop",
-          m.face(h).idx + 1, HalfedgeMesh::edge(h).idx + 1));
+      throw MeshError(
+          fmt::format("dual: face {} runs along edge {} twice; its dual edge would be a loop",
+                      m.face(h).idx + 1, HalfedgeMesh::edge(h).idx + 1));
   td::RawMesh raw;
   for (Face f : m.faces()) raw.positions.push_back(td::face_centroid(m, f));
   raw.num_faces = m.num_vertices();

@@ -17,10 +17,10 @@ enum class KgonKind { face, vertex, edge };
 
 /// The user's controls on one K-gon (paper, section "Discussion"). The defaults change nothing.
 struct KgonControl {
-  double scale = 1.0;        ///< scale about the centroid
-  double rotate_deg = 0.0;   ///< rotation about the K-gon normal, in the K-gon plane
+  double scale = 1.0;          ///< scale about the centroid
+  double rotate_deg = 0.0;     ///< rotation about the K-gon normal, in the K-gon plane
   Vec3 offset = Vec3::Zero();  ///< translation of the whole K-gon (moves the centre)
-  bool regularize = false;   ///< replace by the best-fitting affinely regular polygon
+  bool regularize = false;     ///< replace by the best-fitting affinely regular polygon
   bool operator==(const KgonControl&) const = default;
 };
 

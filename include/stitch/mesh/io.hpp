@@ -15,7 +15,8 @@ namespace stitch {
 /// OBJ: faces of any degree, texture/normal indices and negative (relative) indices accepted,
 /// OpenSubdiv's `t` tag lines and other unsupported statements ignored (one warning each kind).
 /// Throws MeshError naming the file and line (or element) for anything malformed.
-PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings = nullptr);
+PolygonSoup read_polygon_soup(const std::string& path,
+                              std::vector<std::string>* warnings = nullptr);
 
 /// read_polygon_soup + build_mesh.
 HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options = {},

@@ -19,8 +19,8 @@ void validate(const HalfedgeMesh& mesh);
 
 struct TopologyStats {
   int vertices = 0, edges = 0, faces = 0, components = 0;
-  int euler = 0;  ///< V - E + F
-  int genus = 0;  ///< total genus, sum over components of (2 - chi_i) / 2
+  int euler = 0;                         ///< V - E + F
+  int genus = 0;                         ///< total genus, sum over components of (2 - chi_i) / 2
   std::map<int, int> valence_histogram;  ///< valence -> count
   std::map<int, int> degree_histogram;   ///< face degree -> count
   int extraordinary_vertices = 0;        ///< valence != 4

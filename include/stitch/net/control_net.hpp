@@ -33,8 +33,8 @@ enum PatchCorner : std::uint8_t {
 };
 
 struct ControlNet {
-  std::array<Vec3, 16> p;            ///< P[a][b] = p[4 * a + b]
-  std::uint8_t extraordinary = 0;    ///< PatchCorner bits of the corners whose K != 4
+  std::array<Vec3, 16> p;          ///< P[a][b] = p[4 * a + b]
+  std::uint8_t extraordinary = 0;  ///< PatchCorner bits of the corners whose K != 4
   /// K of the K-gon at each patch corner, in the order 00, 30, 33, 03.
   std::array<int, 4> corner_k{4, 4, 4, 4};
 

@@ -42,8 +42,10 @@ struct ExtraordinaryPoint {
   Vec3 normal = Vec3::UnitZ();
   int k = 4;
   KgonKind kind = KgonKind::vertex;
-  int element = -1;     ///< vertex or face index
-  double extent = 0.0;  ///< mean distance from the input element to its neighbours: a zoom scale
+  int element = -1;  ///< vertex or face index
+  /// Size of the patches meeting there: the mean distance from the point to their opposite
+  /// corners (a scale for close-ups).
+  double extent = 0.0;
 };
 
 /// Every extraordinary point, vertices first, each in index order.

@@ -28,8 +28,10 @@ void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_pol
 
 /// A close-up of an extraordinary point: seen along its normal tilted by 30 degrees towards the
 /// world's up (so reflection lines cross the patch boundaries leaving it), framing the sphere
-/// of radius `radius_edges` times its mean edge length (ExtraordinaryPoint::extent).
+/// of radius `radius_patches` times the size of the patches there (ExtraordinaryPoint::extent).
+/// The near plane cuts away whatever lies in front of that sphere (a cutaway view), so points
+/// inside the model are seen too.
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
-                    double radius_edges = 0.6);
+                    double radius_patches = 0.6);
 
 }  // namespace stitch

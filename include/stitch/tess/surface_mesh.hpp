@@ -1,10 +1,9 @@
 // The tessellated surface: a quad mesh of limit-surface samples with their analytic normals.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 
@@ -12,10 +11,10 @@ namespace stitch {
 
 struct SurfaceMesh {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;          ///< unit, per vertex
-  std::vector<Eigen::Vector2d> uv;    ///< the sample's (u, v) in its patch
-  std::vector<int> patch;             ///< the corner (half-edge index) whose patch it lies on
-  std::vector<int> level;             ///< hierarchy level of the sub-patch it came from
+  std::vector<Vec3> normals;              ///< unit, per vertex
+  std::vector<Eigen::Vector2d> uv;        ///< the sample's (u, v) in its patch
+  std::vector<int> patch;                 ///< the corner (half-edge index) whose patch it lies on
+  std::vector<int> level;                 ///< hierarchy level of the sub-patch it came from
   std::vector<std::array<int, 4>> quads;  ///< counter-clockwise seen from the normal side
 
   [[nodiscard]] int num_vertices() const { return static_cast<int>(positions.size()); }

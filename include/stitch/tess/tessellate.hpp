@@ -7,8 +7,8 @@
 namespace stitch {
 
 struct TessellationOptions {
-  int resolution = 8;    ///< segments per patch side, >= 1
-  bool welded = true;    ///< share samples on patch boundaries (watertight); else one grid per patch
+  int resolution = 8;  ///< segments per patch side, >= 1
+  bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
 };
 
 /// Welded: one watertight, consistently oriented mesh with the input's genus; a sample shared by

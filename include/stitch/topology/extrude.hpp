@@ -14,9 +14,12 @@ struct ExtrudeResult {
 /// Extrudes face f by `distance` along its (Newell) normal: f moves to the top, with one new
 /// vertex per corner (numbered in f's loop order from its first corner), and a quad side face
 /// per edge of f (numbered in the same order: side i stands on the edge from corner i to corner
-/// i+1). V + k, E + 2k, F + k; Euler characteristic, genus and components unchanged.
-/// Refused: a non-finite distance, or a face without a normal (zero area, e.g. a 2-sided face).
-ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance);
+/// i+1). The top is scaled by `scale` about the face's centroid (a negative distance with a
+/// scale below 1 makes a dent, e.g. the ends of a tube for connect_faces).
+/// V + k, E + 2k, F + k; Euler characteristic, genus and components unchanged.
+/// Refused: a non-finite distance, a scale that is not positive and finite, or a face without a
+/// normal (zero area, e.g. a 2-sided face).
+ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale = 1.0);
 
 /// The face's unit normal by Newell's method (zero vector for a face of zero area).
 Vec3 face_normal(const HalfedgeMesh& mesh, Face f);

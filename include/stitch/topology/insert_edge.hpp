@@ -11,10 +11,10 @@
 namespace stitch {
 
 struct InsertEdgeResult {
-  Edge edge;               ///< the new edge; its half-edge 2e runs from corner a's vertex to b's
-  bool split = false;      ///< true: a and b were on one face, which split in two
-  Face face;               ///< split: the part keeping the old number; merge: the merged face
-  Face other;              ///< split: the new face; merge: the face that was removed
+  Edge edge;           ///< the new edge; its half-edge 2e runs from corner a's vertex to b's
+  bool split = false;  ///< true: a and b were on one face, which split in two
+  Face face;           ///< split: the part keeping the old number; merge: the merged face
+  Face other;          ///< split: the new face; merge: the face that was removed
 };
 
 /// Inserts an edge from corner a's vertex to corner b's vertex across their faces.
@@ -28,8 +28,8 @@ InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b);
 
 struct DeleteEdgeResult {
   bool split = false;  ///< true: both sides were one face, which split in two
-  Face face;           ///< merge: the surviving face (smaller number); split: the part keeping the number
-  Face other;          ///< merge: the removed face; split: the new face
+  Face face;   ///< merge: the surviving face (smaller number); split: the part keeping the number
+  Face other;  ///< merge: the removed face; split: the new face
 };
 
 /// Deletes edge e, the exact inverse of insert_edge. Two different faces merge (the smaller

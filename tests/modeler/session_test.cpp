@@ -1,0 +1,107 @@
+// The script language, run on a window-free session.
+#include <gtest/gtest.h>
+
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "stitch/modeler/session.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "temp_folder.hpp"
+#include "test_support.hpp"
+
+namespace stitch::modeler {
+namespace {
+
+TEST(ModelerSession, ScriptBuildsTheCubeWithAHoleAndUndoes) {
+  stitch::testing::TempFolder dir;
+  Session s;
+  std::vector<std::string> printed;
+  ScriptHooks hooks;
+  hooks.print = [&](const std::string& t) { printed.push_back(t); };
+  bool quit = false;
+  const auto error = run_script(s,
+                                {"open " + test::example_path("cube.obj"), "# a comment",
+                                 "insert-edge 1@1 5@2   # the vertical bridge", "method asc",
+                                 "mode zebra", "view front", "save " + dir.file("hole.obj"), "undo",
+                                 "save " + dir.file("undone.obj"), "redo", "info", "quit",
+                                 "this line is not reached"},
+                                hooks, &quit);
+  ASSERT_FALSE(error) << error->line << ": " << error->message;
+  EXPECT_TRUE(quit);
+  const HalfedgeMesh hole = read_mesh(dir.file("hole.obj"), {false, true});
+  const TopologyStats t = topology_stats(hole);
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_EQ(t.degree_histogram.at(10), 1);
+  EXPECT_TRUE(read_mesh(dir.file("undone.obj")) == read_mesh(test::example_path("cube.obj")));
+  EXPECT_EQ(s.display.method, Method::asc);
+  EXPECT_EQ(s.display.mode, ShadingMode::zebra);
+  EXPECT_EQ(s.surface.method(), Method::asc);
+  EXPECT_EQ(topology_stats(s.document.mesh()).genus, 1);
+  ASSERT_FALSE(printed.empty());
+  EXPECT_NE(printed.back().find("genus 1"), std::string::npos);
+}
+
+TEST(ModelerSession, ErrorsNameTheLineAndLeaveTheSessionUnchanged) {
+  Session s(make_cube());
+  const HalfedgeMesh before = s.document.mesh();
+  auto error = run_script(s, {"view iso", "", "insert-edge 1@1 9@2"}, {});
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->line, 3);
+  EXPECT_NE(error->message.find("vertex"), std::string::npos);
+  EXPECT_TRUE(s.document.mesh() == before);
+  for (const char* bad : {"method xyz", "mode glossy", "resolution 0", "view sideways", "frobnicate",
+                          "select face 99", "kgon scale big", "undo", "screenshot a.png", "save",
+                          "overlay mesh maybe", "open /nonexistent.obj"}) {
+    SCOPED_TRACE(bad);
+    error = run_script(s, {bad}, {});
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->line, 1);
+    EXPECT_FALSE(error->message.empty());
+  }
+  EXPECT_TRUE(s.document.mesh() == before);
+}
+
+TEST(ModelerSession, SelectionDrivesKgonEdits) {
+  Session s(make_cube());
+  ASSERT_FALSE(run_script(s, {"select face 3", "kgon scale 0.5", "kgon rotate 20"}, {}));
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).scale, 0.5);
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).rotate_deg, 20.0);
+  ASSERT_FALSE(run_script(s, {"select edge 1 2", "kgon offset 0 0 0.1", "select corner 7@2",
+                              "kgon regularize on", "select none", "kgon scale 0.8"},
+                          {}));
+  EXPECT_EQ(s.document.kgon_options().edge.size(), 1u);
+  EXPECT_TRUE(s.document.kgon_control({KgonKind::face, 1}).regularize);  // corner 7@2 -> face 2
+  EXPECT_EQ(s.document.kgon_options().global.scale, 0.8);
+  // Every K-gon edit is one undo step, and the surface follows.
+  for (int i = 0; i < 5; ++i) ASSERT_FALSE(run_script(s, {"undo"}, {}));
+  EXPECT_TRUE(s.document.kgon_options().face.empty());
+  EXPECT_TRUE(s.surface.nets() == build_control_nets(s.document.mesh(), build_kgons(s.document.mesh())));
+}
+
+TEST(ModelerSession, VertexMovesAreLocalAndUndoable) {
+  Session s(make_torus(12, 8));
+  const HalfedgeMesh before = s.document.mesh();
+  ASSERT_FALSE(run_script(s, {"translate-vertex 5 0 0 0.2"}, {}));
+  EXPECT_FALSE(s.last_update.full);
+  EXPECT_LT(s.last_update.recomputed_patches, static_cast<int>(s.surface.corners().size()) / 4);
+  ASSERT_FALSE(run_script(s, {"undo"}, {}));
+  EXPECT_TRUE(s.document.mesh() == before);
+}
+
+TEST(ModelerSession, ProjectsKeepKgonsViewAndDisplay) {
+  stitch::testing::TempFolder dir;
+  Session s(make_cube());
+  ASSERT_FALSE(run_script(s, {"select vertex 3", "kgon scale 0.6", "method cc", "overlay kgons on",
+                              "split asc", "view top", "save " + dir.file("p.stitch")},
+                          {}));
+  Session t;
+  ASSERT_FALSE(run_script(t, {"open " + dir.file("p.stitch")}, {}));
+  EXPECT_TRUE(t.document.mesh() == s.document.mesh());
+  EXPECT_EQ(t.document.kgon_options().vertex, s.document.kgon_options().vertex);
+  EXPECT_EQ(t.display, s.display);
+  EXPECT_EQ(t.view, s.view);
+  EXPECT_EQ(t.surface.method(), Method::cc);
+  EXPECT_EQ(t.path, dir.file("p.stitch"));
+}
+
+}  // namespace
+}  // namespace stitch::modeler

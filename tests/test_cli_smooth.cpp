@@ -1,0 +1,118 @@
+// `stitch smooth`, `stitch info` and `stitch analyze` as a user runs them.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "test_support.hpp"
+
+namespace stitch {
+namespace {
+
+using testing::stitch_cli;
+using testing::TempFolder;
+
+TEST(CliSmooth, WritesEveryFormatAndSaysWhere) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube_hole.obj");
+  for (const char* ext : {".obj", ".ply", ".off", ".stl"}) {
+    const std::string out = std::string("surface") + ext;
+    const auto r = stitch_cli(folder, "smooth '" + in + "' -o " + out + " --resolution 3");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find(out), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(folder.file(out))) << out;
+  }
+  // The OBJ reads back as a closed mesh with the input's genus.
+  const HalfedgeMesh back = read_mesh(folder.file("surface.obj"));
+  EXPECT_EQ(topology_stats(back).genus, 1);
+  EXPECT_EQ(back.num_faces(), 26 * 9);  // 26 patches, 3 x 3 quads each
+}
+
+TEST(CliSmooth, EveryMethodAndTheKgonControlsRun) {
+  TempFolder folder;
+  const std::string in = test::example_path("torus.obj");
+  for (const char* extra : {"--method asc", "--method cc", "--method mdc --kgon-scale 0.7",
+                            "--regularize --kgon-rotate 15"}) {
+    const auto r = stitch_cli(folder, "smooth '" + in + "' -o s.obj --resolution 2 " + extra);
+    EXPECT_EQ(r.status, 0) << extra << ": " << r.err;
+  }
+}
+
+TEST(CliSmooth, UnweldedWantsPlyAndRefusesOtherwiseWithoutWriting) {
+  TempFolder folder;
+  const std::string in = test::example_path("tetrahedron.obj");
+  auto r = stitch_cli(folder, "smooth '" + in + "' -o s.obj --unwelded");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("PLY"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("s.obj")));
+  r = stitch_cli(folder, "smooth '" + in + "' -o s.ply --unwelded --resolution 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Binary PLY with double x y z nx ny nz u v and int patch.
+  const std::string ply = testing::read_file(folder.file("s.ply"));
+  EXPECT_NE(ply.find("property double nx"), std::string::npos);
+  EXPECT_NE(ply.find("property int patch"), std::string::npos);
+  EXPECT_NE(ply.find("element vertex 108"), std::string::npos);  // 12 patches x 3 x 3
+}
+
+TEST(CliSmooth, RefusesBoundaryUnlessHolesAreFilled) {
+  TempFolder folder;
+  const std::string in = test::shared_path("catmark_pawn.obj");
+  auto r = stitch_cli(folder, "smooth '" + in + "' -o s.obj --resolution 1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("boundary"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("s.obj")));
+  r = stitch_cli(folder, "smooth '" + in + "' -o s.obj --resolution 1 --fill-holes");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("filled"), std::string::npos) << r.err;  // a warning says so
+  EXPECT_TRUE(std::filesystem::exists(folder.file("s.obj")));
+}
+
+TEST(CliSmooth, ValenceTwoVertexGivesAWarningAndFiniteOutput) {
+  TempFolder folder;
+  // A tetrahedron with edge (1, 2) split by vertex 5 of valence 2.
+  const std::string in = folder.write("v2.obj",
+                                      "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 0 0\n"
+                                      "f 1 5 2 3\nf 1 3 4\nf 1 4 2 5\nf 2 4 3\n");
+  const auto r = stitch_cli(folder, "smooth v2.obj -o s.obj --resolution 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("valence 2"), std::string::npos) << r.err;
+  const std::string obj = testing::read_file(folder.file("s.obj"));
+  EXPECT_EQ(obj.find("nan"), std::string::npos);
+  EXPECT_EQ(obj.find("inf"), std::string::npos);
+}
+
+TEST(CliInfo, ReportsTopologyAsJson) {
+  TempFolder folder;
+  const auto r = stitch_cli(folder, "info '" + test::example_path("cube_hole.obj") + "' --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["vertices"], 8);
+  EXPECT_EQ(j["edges"], 13);
+  EXPECT_EQ(j["faces"], 5);
+  EXPECT_EQ(j["genus"], 1);
+  EXPECT_EQ(j["degree_histogram"]["10"], 1);
+  EXPECT_EQ(j["extraordinary_vertices"].size(), 6u);
+}
+
+TEST(CliAnalyze, ShowsThePapersClaimAsNumbers) {
+  TempFolder folder;
+  const auto r =
+      stitch_cli(folder, "analyze '" + test::example_path("cube.obj") + "' --method all --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["methods"].size(), 3u);
+  for (const auto& m : j["methods"]) {
+    const double near_ev = m["touching_extraordinary"]["max_deg"];
+    if (m["method"] == "mdc") {
+      EXPECT_LT(near_ev, 1e-8);  // round-off, see test_surface.cpp
+    } else if (m["method"] == "asc") {
+      EXPECT_GT(near_ev, 1.0);  // AS&C kinks near the cube's corners
+    }
+    EXPECT_FALSE(m["max_jump_by_distance"].empty());
+  }
+}
+
+}  // namespace
+}  // namespace stitch
