@@ -27,6 +27,7 @@
 
 #include <Eigen/Geometry>
 #include <chrono>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -118,68 +119,84 @@ double sample_corner_grids(const std::vector<Corner>& corners, const Evaluate& e
   return total;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+// Wall-clock and process CPU time (all threads) of one stage. The machine is shared: CPU time
+// is less sensitive than wall time to other processes taking the cores.
+struct Stopwatch {
+  std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
+  std::clock_t cpu = std::clock();
+};
+
+struct StageTime {
+  double wall = 0.0, cpu = 0.0;
+  void add_since(const Stopwatch& start) {
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start.wall).count();
+    cpu += static_cast<double>(std::clock() - start.cpu) / CLOCKS_PER_SEC;
+  }
+};
 
 void BM_compare(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
   const std::vector<Corner> corners = mesh.halfedges();
   const stitch::TessellationOptions options{kResolution, true};
-  double mdc = 0, cc = 0, mdc_eval = 0, cc_eval = 0, mdc_build = 0, cc_build = 0;
+  StageTime mdc, cc, mdc_eval, cc_eval, mdc_build, cc_build;
   for (auto _ : state) {
-    const double before = mdc + cc + mdc_eval + cc_eval;
-    auto start = std::chrono::steady_clock::now();
+    const double before = mdc.wall + cc.wall + mdc_eval.wall + cc_eval.wall;
+    Stopwatch start;
     {
       const stitch::Surface surface(mesh, stitch::Method::mdc);
       benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
     }
-    mdc += seconds_since(start);
+    mdc.add_since(start);
 
-    start = std::chrono::steady_clock::now();
+    start = Stopwatch();
     {
       const stitch::Surface surface(mesh, stitch::Method::cc);
       benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
     }
-    cc += seconds_since(start);
+    cc.add_since(start);
 
-    start = std::chrono::steady_clock::now();
+    start = Stopwatch();
     {
       const stitch::BezierSurface bezier = stitch::build_bezier_surface(mesh);
-      mdc_build += seconds_since(start);
+      mdc_build.add_since(start);
       benchmark::DoNotOptimize(sample_corner_grids(corners, [&](Corner c, double u, double v) {
         return bezier.evaluate(c, u, v, stitch::BezierRule::mdc);
       }));
     }
-    mdc_eval += seconds_since(start);
+    mdc_eval.add_since(start);
 
-    start = std::chrono::steady_clock::now();
+    start = Stopwatch();
     {
       const stitch::CatmullClarkSurface surface(mesh);
-      cc_build += seconds_since(start);
+      cc_build.add_since(start);
       benchmark::DoNotOptimize(sample_corner_grids(
           corners, [&](Corner c, double u, double v) { return surface.evaluate(c, u, v); }));
     }
-    cc_eval += seconds_since(start);
-    state.SetIterationTime(mdc + cc + mdc_eval + cc_eval - before);
+    cc_eval.add_since(start);
+    state.SetIterationTime(mdc.wall + cc.wall + mdc_eval.wall + cc_eval.wall - before);
   }
   const double n = static_cast<double>(state.iterations());
   const double samples = static_cast<double>(corners.size()) * kSamplesPerPatch;
   state.SetLabel(mesh_label(kind, mesh));
   state.counters["samples"] = samples;
-  state.counters["mdc_s"] = mdc / n;
-  state.counters["cc_s"] = cc / n;
-  state.counters["mdc_eval_s"] = mdc_eval / n;
-  state.counters["cc_eval_s"] = cc_eval / n;
-  state.counters["mdc_build_s"] = mdc_build / n;  // the part of mdc_eval_s building the patches
-  state.counters["cc_build_s"] = cc_build / n;    // the part of cc_eval_s building Bfr surfaces
-  state.counters["mdc_samples/s"] = samples * n / mdc;
-  state.counters["cc_samples/s"] = samples * n / cc;
-  state.counters["mdc_eval_samples/s"] = samples * n / mdc_eval;
-  state.counters["cc_eval_samples/s"] = samples * n / cc_eval;
-  state.counters["cc/mdc"] = cc / mdc;
-  state.counters["cc_eval/mdc_eval"] = cc_eval / mdc_eval;
+  // Wall-clock seconds per iteration of each stage; *_build is the part of *_eval building the
+  // patches (mdc) or the Bfr surfaces (cc).
+  state.counters["mdc_s"] = mdc.wall / n;
+  state.counters["cc_s"] = cc.wall / n;
+  state.counters["mdc_eval_s"] = mdc_eval.wall / n;
+  state.counters["cc_eval_s"] = cc_eval.wall / n;
+  state.counters["mdc_build_s"] = mdc_build.wall / n;
+  state.counters["cc_build_s"] = cc_build.wall / n;
+  state.counters["mdc_samples/s"] = samples * n / mdc.wall;
+  state.counters["cc_samples/s"] = samples * n / cc.wall;
+  state.counters["mdc_eval_samples/s"] = samples * n / mdc_eval.wall;
+  state.counters["cc_eval_samples/s"] = samples * n / cc_eval.wall;
+  state.counters["cc/mdc"] = cc.wall / mdc.wall;
+  state.counters["cc_eval/mdc_eval"] = cc_eval.wall / mdc_eval.wall;
+  // The same ratios in process CPU time (all threads).
+  state.counters["cc/mdc_cpu"] = cc.cpu / mdc.cpu;
+  state.counters["cc_eval/mdc_eval_cpu"] = cc_eval.cpu / mdc_eval.cpu;
 }
 
 namespace Osd = OpenSubdiv;
@@ -249,9 +266,12 @@ void BM_osd_native(benchmark::State& state) {
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
   double checksum = 0.0;
   size_t samples = 0;
+  StageTime total;
   for (auto _ : state) {
+    const Stopwatch start;
     samples = osd_native_tessellation(mesh, checksum);
     benchmark::DoNotOptimize(checksum);
+    total.add_since(start);
   }
   state.SetLabel(mesh_label(kind, mesh));
   state.counters["samples"] = static_cast<double>(samples);

@@ -94,6 +94,7 @@ struct App {
   bool autosave_enabled = true;
   Clock::time_point last_autosave = Clock::now();
   bool show_recover_dialog = false;
+  bool open_popup_requested = false, save_popup_requested = false;
   std::string recover_path;
 
   // Mouse state.
@@ -531,11 +532,19 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
     ImGui::TextDisabled("%s%s", s.path.empty() ? "untitled" : s.path.c_str(), s.document.modified() ? " *" : "");
     ImGui::EndMainMenuBar();
   }
-  if (open_popup) ImGui::OpenPopup("Open file");
+  if (open_popup) app.open_popup_requested = true;
   if (save_popup) {
     std::snprintf(app.save_path, sizeof app.save_path, "%s", s.path.c_str());
-    ImGui::OpenPopup("Save as");
+    app.save_popup_requested = true;
   }
+}
+
+/// Modal dialogs, begun after every other window (ImGui wants modals above what appears).
+void dialogs(App& app, const ScriptHooks& hooks) {
+  Session& s = app.session;
+  if (app.open_popup_requested) ImGui::OpenPopup("Open file");
+  if (app.save_popup_requested) ImGui::OpenPopup("Save as");
+  app.open_popup_requested = app.save_popup_requested = false;
   if (ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::InputText("path (.obj .off .ply .stitch)", app.open_path, sizeof app.open_path);
     if (ImGui::Button("Open")) {
@@ -556,7 +565,7 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
     if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
-  if (app.show_recover_dialog) {
+  if (app.show_recover_dialog && ImGui::GetFrameCount() > 2) {
     ImGui::OpenPopup("Recover autosave?");
     app.show_recover_dialog = false;
   }
@@ -701,6 +710,7 @@ void render_frame(App& app, const ScriptHooks& hooks, bool interactive) {
   panel_tools(app, hooks);
   panel_display(app, hooks);
   status_bar(app);
+  dialogs(app, hooks);
   ImGui::Render();
   draw_scene(app);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -800,7 +810,7 @@ int main(int argc, char** argv) {
             app.status = "recovered " + autosave;
           } else {
             open_file(app.session, file);
-            if (script.empty()) {
+            if (script.empty() && !exit_after) {
               app.show_recover_dialog = true;
               app.recover_path = autosave;
             } else {

@@ -95,11 +95,19 @@ void LiveSurface::layout(const HalfedgeMesh& mesh) {
   }
 }
 
-void LiveSurface::tessellate_patches(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                     const std::vector<int>& patches) {
+namespace {
+
+/// The Catmull-Clark limit surface (built for the whole mesh), or null for the Bezier methods.
+/// Built before anything changes, since OpenSubdiv refuses some meshes (2-sided faces, faces
+/// along one edge twice).
+std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions& options, Method method) {
+  return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
+}
+
+}  // namespace
+
+void LiveSurface::tessellate_patches(const std::vector<int>& patches, const Surface* cc) {
   const int n = resolution_, per_patch = vertices_per_patch();
-  std::unique_ptr<Surface> cc;  // the Catmull-Clark limit surface is built for the whole mesh
-  if (method_ == Method::cc) cc = std::make_unique<Surface>(mesh, Method::cc, options);
   const BezierRule rule = method_ == Method::asc ? BezierRule::asc : BezierRule::mdc;
   tbb::parallel_for(size_t{0}, patches.size(), [&](size_t q) {
     const int k = patches[q];
@@ -121,6 +129,7 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
                                  Method method, int resolution) {
   if (resolution < 1) throw MeshError("the resolution must be at least 1");
   const Stopwatch watch;
+  const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   resolution_ = resolution;
   kgons_ = build_kgons(mesh, options);
@@ -128,7 +137,7 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   layout(mesh);
   std::vector<int> all(corners_.size());
   for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-  tessellate_patches(mesh, options, all);
+  tessellate_patches(all, cc.get());
   UpdateStats stats;
   stats.full = true;
   stats.candidate_patches = stats.recomputed_patches = static_cast<int>(all.size());
@@ -168,7 +177,7 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
       for (size_t k = 0; k < corners_.size(); ++k) changed.push_back(static_cast<int>(k));
   }
   std::sort(changed.begin(), changed.end());
-  tessellate_patches(mesh, options, changed);
+  tessellate_patches(changed, changed.empty() ? nullptr : cc_surface(mesh, options, method_).get());
   UpdateStats stats;
   stats.full = method_ == Method::cc && !changed.empty();
   stats.candidate_patches = static_cast<int>(candidates.size());
@@ -180,10 +189,11 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
 UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions& options,
                                     Method method) {
   const Stopwatch watch;
+  const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   std::vector<int> all(corners_.size());
   for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-  tessellate_patches(mesh, options, all);
+  tessellate_patches(all, cc.get());
   UpdateStats stats;
   stats.full = true;
   stats.recomputed_patches = static_cast<int>(all.size());
@@ -194,8 +204,9 @@ UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions&
 UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options,
                                         int resolution) {
   if (resolution < 1) throw MeshError("the resolution must be at least 1");
-  resolution_ = resolution;
   const Stopwatch watch;
+  const auto cc = cc_surface(mesh, options, method_);
+  resolution_ = resolution;
   layout(mesh);
   UpdateStats stats = set_method(mesh, options, method_);
   stats.milliseconds = watch.ms();

@@ -84,12 +84,30 @@ Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
 }
 
 const UpdateStats& Session::apply(const Change& change) {
-  last_update = surface.update(document.mesh(), document.kgon_options(), change);
   if (change.kind == Change::Kind::topology) selection.reset();
+  try {
+    last_update = surface.update(document.mesh(), document.kgon_options(), change);
+  } catch (const MeshError& e) {
+    fall_back_from_cc(e.what());
+  }
   return last_update;
 }
 
 void Session::rebuild() {
+  try {
+    last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
+                                  display.resolution);
+  } catch (const MeshError& e) {
+    fall_back_from_cc(e.what());
+  }
+}
+
+void Session::fall_back_from_cc(const std::string& why) {
+  // Only the Catmull-Clark method refuses meshes (OpenSubdiv cannot represent some faces the
+  // operators make); the edit stands and the display switches to the paper's method.
+  if (display.method != Method::cc) throw MeshError(why);
+  display.method = Method::mdc;
+  warning = why + "; showing mdc instead";
   last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
                                 display.resolution);
 }
@@ -153,6 +171,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   if (w.empty()) return result;
   const std::string& cmd = w[0];
   const HalfedgeMesh& mesh = s.document.mesh();
+  s.warning.clear();
 
   if (is_operation(cmd)) {
     OperationReport report;
@@ -251,18 +270,20 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     result.message = cmd + " done";
   } else if (cmd == "method") {
     expect(w, 1, 1, "method mdc|asc|cc");
+    Method method;
     try {
-      s.display.method = parse_method(w[1]);
+      method = parse_method(w[1]);
     } catch (const std::invalid_argument& e) {
       throw MeshError(e.what());
     }
-    s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), s.display.method);
+    s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), method);
+    s.display.method = method;
   } else if (cmd == "resolution") {
     expect(w, 1, 1, "resolution N");
     const int n = integer(w[1], "the resolution");
     if (n < 1 || n > 64) throw MeshError(fmt::format("the resolution must be in 1..64, not {}", n));
-    s.display.resolution = n;
     s.last_update = s.surface.set_resolution(s.document.mesh(), s.document.kgon_options(), n);
+    s.display.resolution = n;
   } else if (cmd == "mode") {
     expect(w, 1, 1, "mode shaded|zebra|isophote|levels|patches|input");
     if (w[1] == "input") {
@@ -357,6 +378,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         "undo, redo, method, resolution, mode, overlay, split, view, frame, orbit, zoom, "
         "screenshot, save, open, info, quit)",
         cmd));
+  }
+  if (!s.warning.empty()) {
+    result.message = result.message.empty() ? s.warning : result.message + "; " + s.warning;
+    if (hooks.print) hooks.print("warning: " + s.warning);
   }
   return result;
 }

@@ -24,7 +24,9 @@ TEST(ModelerNavigation, StandardViewsLookFromTheSameSidesAsTheRenderer) {
     const Vec3 want = (expected.eye - expected.target).normalized();
     EXPECT_LT((o.eye_direction() - want).norm(), 1e-9);
     const Camera c = o.camera(cube_box());
-    EXPECT_LT((c.up.normalized() - expected.up.normalized()).norm(), 1e-9);
+    // The image's up direction: the up vector made perpendicular to the view direction.
+    auto image_up = [&](const Vec3& up) { return (up - up.dot(want) * want).normalized(); };
+    EXPECT_LT((image_up(c.up) - image_up(expected.up)).norm(), 1e-9);
     // Framed: the box's sphere fits in the field of view.
     EXPECT_GE(o.distance * std::sin(o.fov_y_deg * M_PI / 360.0), cube_box().radius());
     EXPECT_LT(c.near_plane, (c.eye - c.target).norm() - cube_box().radius());

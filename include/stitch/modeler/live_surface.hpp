@@ -47,7 +47,8 @@ class LiveSurface {
   /// Builds everything from scratch.
   UpdateStats rebuild(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
                       int resolution);
-  /// Brings the surface up to date with `mesh` and `options` after `change`.
+  /// Brings the surface up to date with `mesh` and `options` after `change`. The functions
+  /// that can fail (cc on a mesh OpenSubdiv refuses) throw MeshError before changing anything.
   UpdateStats update(const HalfedgeMesh& mesh, const KgonOptions& options, const Change& change);
   UpdateStats set_method(const HalfedgeMesh& mesh, const KgonOptions& options, Method method);
   UpdateStats set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options, int resolution);
@@ -69,8 +70,9 @@ class LiveSurface {
   [[nodiscard]] int patch_index(Corner c) const { return c.idx < int(slot_.size()) ? slot_[c.idx] : -1; }
 
  private:
-  void tessellate_patches(const HalfedgeMesh& mesh, const KgonOptions& options,
-                          const std::vector<int>& patches);
+  /// Evaluates the listed patches (indices into corners_) into their vertex blocks; `cc` is
+  /// the Catmull-Clark surface when that is the method.
+  void tessellate_patches(const std::vector<int>& patches, const Surface* cc);
   void layout(const HalfedgeMesh& mesh);
 
   Method method_ = Method::mdc;

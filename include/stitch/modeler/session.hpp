@@ -39,6 +39,8 @@ struct Session {
   std::optional<Pick> selection;
   LiveSurface surface;
   UpdateStats last_update;
+  /// Set when the last line could not show its method (cc refused the mesh), else empty.
+  std::string warning;
 
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
@@ -50,6 +52,9 @@ struct Session {
   [[nodiscard]] BoundingBox mesh_bounds() const;
   /// The project as it stands (for saving and autosaving).
   [[nodiscard]] Project project() const;
+
+ private:
+  void fall_back_from_cc(const std::string& why);
 };
 
 /// Opens a mesh (OBJ/OFF/PLY) or project file into the session: a fresh history, the view framed
