@@ -12,7 +12,9 @@
 //            as tessellate's sampling, keeping a checksum instead of storing the samples)
 //   cc_eval  building the OpenSubdiv Bfr surfaces + evaluating every corner grid (same loop)
 //   mdc_build, cc_build: the building part of mdc_eval and cc_eval
-// and reports the times, samples/s and the ratios cc/mdc and cc_eval/mdc_eval as counters.
+// and reports the wall-clock times, samples/s and the ratios cc/mdc and cc_eval/mdc_eval as
+// counters, and the same ratios in process CPU time (cc/mdc_cpu, cc_eval/mdc_eval_cpu), which
+// other processes on a shared machine disturb less.
 // "osd_native" is OpenSubdiv's own route for reference: Far::TopologyDescriptor ->
 // Bfr::RefinerSurfaceFactory -> Bfr::Tessellation with a uniform rate of 16 per face edge
 // (17^2 = 289 points per quad face against the 4 * 81 = 324 of the corner grids); it reports its
@@ -277,6 +279,7 @@ void BM_osd_native(benchmark::State& state) {
   state.counters["samples"] = static_cast<double>(samples);
   state.counters["samples/s"] = benchmark::Counter(static_cast<double>(samples),
                                                    benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["cpu_s"] = total.cpu / static_cast<double>(state.iterations());  // all threads
 }
 
 void mesh_sizes(benchmark::internal::Benchmark* b) {

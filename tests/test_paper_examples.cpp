@@ -62,6 +62,19 @@ TEST(PaperExamples, TwoCubesJoinedByAnEdgeAreClean) {
   EXPECT_TRUE(r.clean()) << r.describe(tris);
 }
 
+TEST(PaperExamples, CubeWithAHandleFromConnectFacesIsCleanAndOpen) {
+  // docs/editing.md: dent the bottom and top faces inwards, then join them with a tube.
+  HalfedgeMesh mesh = make_cube();
+  for (const char* op : {"extrude-face 1 -0.4 0.5", "extrude-face 2 -0.4 0.5", "connect-faces 1 2"})
+    apply_operation(mesh, op);
+  mesh.garbage_collection();
+  ASSERT_EQ(topology_stats(mesh).genus, 1);
+  const TriangleSoup tris = smooth_triangles(mesh);
+  const SurfaceCheckReport r = check_surface(tris);
+  EXPECT_TRUE(r.clean()) << r.describe(tris);
+  EXPECT_TRUE(segment_hits(tris, Vec3(0, 0, -3), Vec3(0, 0, 3)).empty());
+}
+
 TEST(PaperExamples, TetrahedronIsClean) {
   const TriangleSoup tris = smooth_triangles(make_tetrahedron());
   const SurfaceCheckReport r = check_surface(tris);

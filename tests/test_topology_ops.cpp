@@ -259,6 +259,18 @@ TEST(TopologyExtrude, CountsAndNumbering) {
   EXPECT_GT(signed_volume(m), 8.0);
 }
 
+TEST(TopologyExtrude, AFaceRunningAlongAnEdgeTwice) {
+  // Bottom and front merged by an edge from vertex 4 to vertex 6: the merged face runs along
+  // the new edge twice (a self-touching loop); extruding it gives every corner its own vertex.
+  HalfedgeMesh m = make_cube();
+  apply_operation(m, "insert-edge 4@1 6@3");
+  expect_counts(m, {8, 13, 5, 1, 1});
+  ASSERT_EQ(m.degree(Face(0)), 10);
+  const ExtrudeResult r = extrude_face(m, Face(0), 0.2, 0.8);
+  EXPECT_EQ(r.degree, 10);
+  expect_counts(m, {18, 33, 15, 1, 1});
+}
+
 TEST(TopologyExtrude, RefusesAFaceWithoutANormal) {
   HalfedgeMesh m = make_prism(2);  // its caps are 2-sided, with zero area
   const HalfedgeMesh before = m;
@@ -420,6 +432,9 @@ TEST(TopologyOperation, AmbiguousCornersAndEdges) {
   EXPECT_NE(c1, c2);
   EXPECT_EQ(m.origin(c1), m.origin(c2));
   EXPECT_THROW(parse_corner(m, "1@1#3"), MeshError);
+  // '#' right after a corner picks an occurrence; after a blank it starts a comment.
+  const OperationReport r = apply_operation(m, "insert-edge 1@1#2 3@5  # to the back face");
+  EXPECT_EQ(r.stats.genus, 2);
   // A 2-sided face: both its edges join the same vertices; @F with direction V -> W picks one.
   HalfedgeMesh p = make_cube();
   apply_operation(p, "insert-edge 1@1 4@1");

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,7 @@ struct App {
   double fps = 0.0;
   bool autosave_enabled = true;
   Clock::time_point last_autosave = Clock::now();
+  bool show_ui = true;  ///< the panels (`ui off` in a script hides them, e.g. for pictures)
   bool show_recover_dialog = false;
   bool open_popup_requested = false, save_popup_requested = false;
   std::string recover_path;
@@ -281,12 +283,24 @@ void remove_autosave(const App& app) {
   std::filesystem::remove(autosave_path(app.session.path), ec);
 }
 
+/// `ui on|off`: the one script line about the window itself rather than the session.
+bool run_ui_line(App& app, const std::string& line) {
+  std::istringstream in(line);
+  std::string word, value, extra;
+  if (!(in >> word) || word != "ui") return false;
+  if (!(in >> value) || (value != "on" && value != "off") || (in >> extra && extra[0] != '#'))
+    throw MeshError("usage: ui on|off");
+  app.show_ui = value == "on";
+  return true;
+}
+
 /// Runs one line the way the GUI does: errors go to the status bar.
 void run_line(App& app, const std::string& line, const ScriptHooks& hooks) {
   const DisplaySettings before = app.session.display;
   const std::string path_before = app.session.path;
   const bool was_modified = app.session.document.modified();
   try {
+    if (run_ui_line(app, line)) return;
     const ScriptResult r = run_script_line(app.session, line, hooks);
     if (!r.message.empty()) app.status = r.message;
     if (r.quit) glfwSetWindowShouldClose(app.window, GLFW_TRUE);
@@ -706,10 +720,12 @@ void render_frame(App& app, const ScriptHooks& hooks, bool interactive) {
     handle_mouse(app);
     handle_keys(app, hooks);
   }
-  menu_bar(app, hooks);
-  panel_tools(app, hooks);
-  panel_display(app, hooks);
-  status_bar(app);
+  if (app.show_ui) {
+    menu_bar(app, hooks);
+    panel_tools(app, hooks);
+    panel_display(app, hooks);
+    status_bar(app);
+  }
   dialogs(app, hooks);
   ImGui::Render();
   draw_scene(app);
@@ -832,6 +848,7 @@ int main(int argc, char** argv) {
         const auto lines = read_lines(script);
         for (size_t i = 0; i < lines.size() && !quit; ++i) {
           try {
+            if (run_ui_line(app, lines[i])) continue;
             const DisplaySettings before = app.session.display;
             const std::string path_before = app.session.path;
             const ScriptResult r = run_script_line(app.session, lines[i], hooks);

@@ -212,7 +212,9 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
     mean_size += (thi - tlo).maxCoeff();
   }
   mean_size /= nt;
-  const double cell = std::max(mean_size, diag * 1e-3) + 1e-300;
+  // At most 256 cells across the model, so one large triangle among many small ones cannot make
+  // the grid explode.
+  const double cell = std::max(mean_size, diag / 256) + 1e-300;
   auto cell_of = [&](double x, double origin) {
     return static_cast<long>(std::floor((x - origin) / cell));
   };

@@ -23,6 +23,8 @@ namespace {
 
 namespace Osd = OpenSubdiv;
 
+// Messages number vertices, edges and faces from 1, as the command line and files do.
+//
 // The live elements of a half-edge mesh numbered densely, as OpenSubdiv wants them. Face f's
 // vertices are given in the order of face_loop(f), so corner c is face vertex index_in_face(c).
 struct OsdTopology {
@@ -161,7 +163,8 @@ void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
         throw MeshError(fmt::format(
             "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: its loop runs along edge "
             "{} (vertices {} and {}) twice, which OpenSubdiv cannot represent; use mdc or asc",
-            f.idx, HalfedgeMesh::edge(h).idx, mesh.origin(h).idx, mesh.target(h).idx));
+            f.idx + 1, HalfedgeMesh::edge(h).idx + 1, mesh.origin(h).idx + 1,
+            mesh.target(h).idx + 1));
       }
     }
   }
@@ -177,26 +180,26 @@ void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
         cause = fmt::format(
             " (its vertex {} has the 2-sided face {}, which OpenSubdiv's Bfr does "
             "not support)",
-            mesh.origin(c).idx, mesh.face(around).idx);
+            mesh.origin(c).idx + 1, mesh.face(around).idx + 1);
       }
     }
   }
   throw MeshError(fmt::format(
       "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
       "surface{}; use mdc or asc",
-      f.idx, cause));
+      f.idx + 1, cause));
 }
 
 // A face visiting one vertex twice, or several edges between two vertices. OpenSubdiv accepts
 // such topology given in full, but Bfr's surfaces around it can be wrong without any error
-// (a cube with a handle made of two edges between the same two vertices gave gaps of the size of
-// the mesh between neighbouring faces), so the surface is checked when the mesh has any.
+// (a cube with a handle made of two edges between the same two vertices gave gaps of a tenth of
+// the cube's size between neighbouring faces), so the surface is checked when the mesh has any.
 std::string unusual_topology(const HalfedgeMesh& mesh) {
   for (Face f : mesh.faces()) {
     std::vector<Vertex> seen;
     for (Halfedge h : mesh.face_loop(f)) {
       if (std::find(seen.begin(), seen.end(), mesh.origin(h)) != seen.end()) {
-        return fmt::format("face {} visits vertex {} twice", f.idx, mesh.origin(h).idx);
+        return fmt::format("face {} visits vertex {} twice", f.idx + 1, mesh.origin(h).idx + 1);
       }
       seen.push_back(mesh.origin(h));
     }
@@ -205,8 +208,8 @@ std::string unusual_topology(const HalfedgeMesh& mesh) {
     std::vector<Vertex> seen;
     for (Halfedge h : mesh.vertex_fan(v)) {
       if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end()) {
-        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx,
-                           mesh.target(h).idx);
+        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
+                           mesh.target(h).idx + 1);
       }
       seen.push_back(mesh.target(h));
     }
@@ -253,14 +256,14 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
         topo.problems.empty() ? "" : ": ", topo.problems.empty() ? "" : topo.problems.front()));
   }
   // OpenSubdiv accepts some topology only by tagging it non-manifold (then sharpened) or as a
-  // hole (faces of fewer than 3 sides): the result would not be the Catmull-Clark limit surface.
+  // hole: the result would not be the Catmull-Clark limit surface of the whole mesh.
   const Osd::Far::TopologyLevel& level = refiner->GetLevel(0);
   for (int v = 0; v < level.GetNumVertices(); ++v) {
     if (level.IsVertexNonManifold(v)) {
       throw MeshError(fmt::format(
           "cc (Catmull-Clark through OpenSubdiv) cannot handle vertex {}: OpenSubdiv treats its "
           "neighbourhood as non-manifold; use mdc or asc",
-          topo.vertices[v].idx));
+          topo.vertices[v].idx + 1));
     }
   }
   for (int f = 0; f < level.GetNumFaces(); ++f) {
@@ -268,7 +271,7 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
       throw MeshError(fmt::format(
           "cc (Catmull-Clark through OpenSubdiv) cannot handle face {} of degree {}: OpenSubdiv "
           "makes it a hole; use mdc or asc",
-          topo.faces[f].idx, mesh.degree(topo.faces[f])));
+          topo.faces[f].idx + 1, mesh.degree(topo.faces[f])));
     }
   }
 
@@ -331,10 +334,10 @@ void CatmullClarkSurface::check_patch_sides(const HalfedgeMesh& mesh,
       if (gap_across_edge > tolerance || gap_in_face > tolerance) {
         throw MeshError(fmt::format(
             "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}, and with that "
-            "OpenSubdiv's limit surface comes apart (gap {:.3g} at the side of the patch of "
-            "corner {}, vertex {}, face {}); use mdc or asc",
-            unusual, std::max(gap_across_edge, gap_in_face), c.idx, mesh.origin(c).idx,
-            mesh.face(c).idx));
+            "OpenSubdiv's limit surface comes apart (gap {:.3g} at a side of the patch of vertex "
+            "{} in face {}); use mdc or asc",
+            unusual, std::max(gap_across_edge, gap_in_face), mesh.origin(c).idx + 1,
+            mesh.face(c).idx + 1));
       }
     }
   }
@@ -348,7 +351,8 @@ SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   const Impl& impl = *impl_;
   if (c.idx < 0 || c.idx >= static_cast<int>(impl.corner_face.size()) ||
       impl.corner_face[c.idx] < 0) {
-    throw MeshError(fmt::format("cc: corner {} is not a live half-edge of the mesh", c.idx));
+    throw MeshError(
+        fmt::format("cc: half-edge {} (0-based) is not a live corner of the mesh", c.idx));
   }
   const int f = impl.corner_face[c.idx];
   const int k = impl.corner_index[c.idx];

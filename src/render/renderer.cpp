@@ -277,8 +277,10 @@ void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, i
   const Eigen::Matrix4f view_projection = projection_matrix(camera, aspect) * view_matrix(camera);
 
   glViewport(0, 0, width, height);
-  glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (style.clear) {
+    glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_TRUE);

@@ -39,6 +39,9 @@ inline constexpr int num_overlays = 4;
 struct RenderStyle {
   ShadingMode mode = ShadingMode::shaded;
   bool draw_surface = true;
+  /// Clear colour and depth first; an application drawing its own things underneath turns
+  /// this off (depth must then be cleared by it).
+  bool clear = true;
   std::array<bool, num_overlays> overlays{};  ///< indexed by Overlay
   bool markers = false;                       ///< extraordinary points
   int stripes = 16;  ///< zebra stripes around the full circle / isophote bands
