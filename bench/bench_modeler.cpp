@@ -52,8 +52,9 @@ void modeler_insert_edge(benchmark::State& state) {
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 8);
   const Face f(doc.mesh().num_faces() / 2);
   const auto loop = doc.mesh().face_loop(f);
-  const std::string line = fmt::format("insert-edge {}@{} {}@{}", doc.mesh().origin(loop[0]).idx + 1,
-                                       f.idx + 1, doc.mesh().origin(loop[2]).idx + 1, f.idx + 1);
+  const std::string line =
+      fmt::format("insert-edge {}@{} {}@{}", doc.mesh().origin(loop[0]).idx + 1, f.idx + 1,
+                  doc.mesh().origin(loop[2]).idx + 1, f.idx + 1);
   UpdateStats last;
   for (auto _ : state) {
     last = live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation(line));

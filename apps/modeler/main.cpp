@@ -83,6 +83,7 @@ struct App {
   GLFWwindow* window = nullptr;
   View3D main_view, split_view;
   LiveSurface split_surface;  ///< the second method of the split view
+  KgonOptions split_kgons;    ///< the controls split_surface was built with
   bool split_current = false;
   bool overlays_dirty = true;
   HalfTarget half;
@@ -131,13 +132,14 @@ int framebuffer_height(GLFWwindow* w) {
   return fh;
 }
 
-/// The camera for a viewport of the given aspect (the orbit view frames by height).
+/// The camera for the current view; the clipping planes contain the input mesh's box, enlarged
+/// since the surface and the K-gons may reach a little beyond it.
 Camera current_camera(const App& app) {
-  BoundingBox box = bounding_box(app.session.surface.tessellation().positions);
-  const BoundingBox mesh = app.session.mesh_bounds();
-  if (!mesh.empty()) {
-    box.extend(mesh.min);
-    box.extend(mesh.max);
+  BoundingBox box = app.session.mesh_bounds();
+  if (!box.empty()) {
+    const Vec3 c = box.center(), half = 0.75 * (box.max - box.min) + Vec3::Constant(1e-6);
+    box.extend(c + half);
+    box.extend(c - half);
   }
   return app.session.view.camera(box);
 }
@@ -151,7 +153,8 @@ void add_highlight(const HalfedgeMesh& m, const Pick& p, const Colour& colour, L
   };
   switch (p.kind) {
     case PickKind::vertex:
-      if (p.index < m.vertex_capacity() && !m.is_deleted(Vertex(p.index))) mark(m.position(Vertex(p.index)));
+      if (p.index < m.vertex_capacity() && !m.is_deleted(Vertex(p.index)))
+        mark(m.position(Vertex(p.index)));
       break;
     case PickKind::edge: {
       const Halfedge h(p.index);
@@ -204,14 +207,16 @@ void upload_overlays(App& app, View3D& view, const LiveSurface& surface) {
   LineSet mesh_set = d.overlays[int(Overlay::mesh)] ? mesh_lines(m) : LineSet{};
   MarkerSet markers;
   if (d.markers) markers = extraordinary_markers(extraordinary_points(m, surface.kgons()));
-  if (app.previous_pick) add_highlight(m, *app.previous_pick, Colour(0.1f, 0.7f, 0.2f), mesh_set, markers);
+  if (app.previous_pick)
+    add_highlight(m, *app.previous_pick, Colour(0.1f, 0.7f, 0.2f), mesh_set, markers);
   if (s.selection) add_highlight(m, *s.selection, Colour(1.0f, 0.45f, 0.0f), mesh_set, markers);
   view.renderer->set_overlay(Overlay::mesh, mesh_set);
-  view.renderer->set_overlay(Overlay::kgons,
-                             d.overlays[int(Overlay::kgons)] ? kgon_lines(surface.kgons()) : LineSet{});
-  view.renderer->set_overlay(Overlay::nets, d.overlays[int(Overlay::nets)]
-                                                ? control_net_lines(surface.nets(), surface.corners())
-                                                : LineSet{});
+  view.renderer->set_overlay(
+      Overlay::kgons, d.overlays[int(Overlay::kgons)] ? kgon_lines(surface.kgons()) : LineSet{});
+  view.renderer->set_overlay(Overlay::nets,
+                             d.overlays[int(Overlay::nets)]
+                                 ? control_net_lines(surface.nets(), surface.corners())
+                                 : LineSet{});
   view.renderer->set_overlay(Overlay::tessellation, d.overlays[int(Overlay::tessellation)]
                                                         ? surface_mesh_lines(surface.tessellation())
                                                         : LineSet{});
@@ -229,14 +234,14 @@ void sync_view(App& app, View3D& view, const LiveSurface& surface, bool full) {
     view.renderer->set_surface(surface.tessellation());
     view.input_uploaded = false;
   } else {
-    // Contiguous runs of recomputed patches, one upload each.
+    // Contiguous runs of recomputed patches (blocks are indexed by corner), one upload each.
     const int per = surface.vertices_per_patch();
     const auto& changed = surface.recomputed();
     size_t i = 0;
     while (i < changed.size()) {
-      const int first = surface.patch_index(changed[i]);
+      const int first = changed[i].idx;
       int count = 1;
-      while (i + count < changed.size() && surface.patch_index(changed[i + count]) == first + count) ++count;
+      while (i + count < changed.size() && changed[i + count].idx == first + count) ++count;
       view.renderer->update_surface_vertices(surface.tessellation(), first * per, count * per);
       i += count;
     }
@@ -245,21 +250,34 @@ void sync_view(App& app, View3D& view, const LiveSurface& surface, bool full) {
 }
 
 /// After any session change: bring the split surface along and upload to the GPU.
+bool same_controls(const KgonOptions& a, const KgonOptions& b) {
+  return a.construction == b.construction && a.global == b.global && a.face == b.face &&
+         a.vertex == b.vertex && a.edge == b.edge;
+}
+
+/// After any session change: upload what the main surface recomputed, and bring the split
+/// view's surface along. The split surface is updated as after a topology edit, which compares
+/// the mesh with its previous one and so finds moved vertices and topology changes alike; a
+/// K-gon control change rebuilds it.
 void after_change(App& app, const Change& change, bool full) {
   Session& s = app.session;
-  sync_view(app, app.main_view, s.surface, full || change.kind == Change::Kind::topology);
+  const bool layout = full || change.kind == Change::Kind::topology || s.last_update.layout_changed;
+  sync_view(app, app.main_view, s.surface, layout);
   if (s.display.split) {
+    UpdateStats stats;
     if (!app.split_current || app.split_surface.method() != *s.display.split ||
-        app.split_surface.resolution() != s.display.resolution || full) {
-      app.split_surface.rebuild(s.document.mesh(), s.document.kgon_options(), *s.display.split,
-                                s.display.resolution);
+        app.split_surface.resolution() != s.display.resolution || full ||
+        !same_controls(app.split_kgons, s.document.kgon_options())) {
+      stats = app.split_surface.rebuild(s.document.mesh(), s.document.kgon_options(),
+                                        *s.display.split, s.display.resolution);
       app.split_current = true;
-      app.split_view.geometry_dirty = true;
+      app.split_kgons = s.document.kgon_options();
     } else {
-      app.split_surface.update(s.document.mesh(), s.document.kgon_options(), change);
+      stats = app.split_surface.update(s.document.mesh(), s.document.kgon_options(),
+                                       change_of(Change::Kind::topology));
     }
     if (!app.split_view.renderer) app.split_view.renderer = std::make_unique<Renderer>();
-    sync_view(app, app.split_view, app.split_surface, full || change.kind == Change::Kind::topology);
+    sync_view(app, app.split_view, app.split_surface, stats.layout_changed || stats.full);
   } else {
     app.split_current = false;
   }
@@ -311,9 +329,11 @@ void run_line(App& app, const std::string& line, const ScriptHooks& hooks) {
   const DisplaySettings& now = app.session.display;
   const bool full = now.method != before.method || now.resolution != before.resolution ||
                     now.input_polygons != before.input_polygons || now.split != before.split ||
-                    app.session.path != path_before || app.session.last_update.full;
+                    app.session.path != path_before || app.session.last_update.full ||
+                    app.session.last_update.layout_changed;
   // A save leaves nothing to recover.
-  if (was_modified && !app.session.document.modified() && line.rfind("save", 0) == 0) remove_autosave(app);
+  if (was_modified && !app.session.document.modified() && line.rfind("save", 0) == 0)
+    remove_autosave(app);
   // run_script_line kept the surface current; what changed is in session.surface.recomputed().
   Change c;
   c.kind = Change::Kind::geometry;
@@ -344,8 +364,8 @@ void draw_scene(App& app) {
     views[side]->renderer->draw(camera, style, half_w, h);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, app.half.fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, half_w, h, side * half_w, 0, side * half_w + half_w, h, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+    glBlitFramebuffer(0, 0, half_w, h, side * half_w, 0, side * half_w + half_w, h,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, w, h);
@@ -374,10 +394,13 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
     if (ImGui::Button(label)) run_line(app, line, hooks);
     if (!enabled) ImGui::EndDisabled();
   };
-  auto strip = [](const std::string& d) { return d.substr(d.find(' ') + 1); };  // "edge 1 5@2" -> "1 5@2"
+  auto strip = [](const std::string& d) {
+    return d.substr(d.find(' ') + 1);
+  };  // "edge 1 5@2" -> "1 5@2"
 
   if (ImGui::CollapsingHeader("Operators", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const bool two_corners = s.selection && app.previous_pick && s.selection->kind == PickKind::corner &&
+    const bool two_corners = s.selection && app.previous_pick &&
+                             s.selection->kind == PickKind::corner &&
                              app.previous_pick->kind == PickKind::corner;
     op_button("Insert edge (previous corner -> selected corner)",
               two_corners ? "insert-edge " + strip(describe(m, *app.previous_pick)) + " " +
@@ -415,13 +438,17 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
     }
     const auto names = primitive_names();
     ImGui::SetNextItemWidth(150);
-    if (ImGui::BeginCombo("##primitive", names[std::clamp(app.primitive_index, 0, int(names.size()) - 1)].c_str())) {
+    if (ImGui::BeginCombo(
+            "##primitive",
+            names[std::clamp(app.primitive_index, 0, int(names.size()) - 1)].c_str())) {
       for (int i = 0; i < int(names.size()); ++i)
         if (ImGui::Selectable(names[i].c_str(), i == app.primitive_index)) app.primitive_index = i;
       ImGui::EndCombo();
     }
     ImGui::SameLine();
-    op_button("New from primitive", "primitive " + names[std::clamp(app.primitive_index, 0, int(names.size()) - 1)], true);
+    op_button("New from primitive",
+              "primitive " + names[std::clamp(app.primitive_index, 0, int(names.size()) - 1)],
+              true);
   }
 
   if (ImGui::CollapsingHeader("Move vertices", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -440,8 +467,10 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
     const bool use_global = global || !target;
     const KgonTarget t = use_global ? KgonTarget{} : *target;
     static constexpr const char* kind_names[] = {"face", "vertex", "edge"};
-    ImGui::Text("Editing: %s", use_global ? "global control"
-                                          : fmt::format("K-gon of {} {}", kind_names[int(t.kind)], t.element + 1).c_str());
+    ImGui::Text(
+        "Editing: %s",
+        use_global ? "global control"
+                   : fmt::format("K-gon of {} {}", kind_names[int(t.kind)], t.element + 1).c_str());
     KgonControl c = s.document.kgon_control(t);
     float scale = float(c.scale), rotate = float(c.rotate_deg);
     float offset[3] = {float(c.offset.x()), float(c.offset.y()), float(c.offset.z())};
@@ -462,8 +491,8 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
       KgonControl n{scale, rotate, Vec3(offset[0], offset[1], offset[2]), regular};
       try {
         s.apply(s.document.set_kgon_control(t, n, merge));
-        app.status = fmt::format("K-gon updated: {} patches in {:.2f} ms", s.last_update.recomputed_patches,
-                                 s.last_update.milliseconds);
+        app.status = fmt::format("K-gon updated: {} patches in {:.2f} ms",
+                                 s.last_update.recomputed_patches, s.last_update.milliseconds);
         after_change(app, change_of(Change::Kind::kgons), s.last_update.full);
       } catch (const std::exception& e) {
         app.status = e.what();
@@ -490,21 +519,26 @@ void panel_display(App& app, const ScriptHooks& hooks) {
   ImGui::Begin("Display");
   static constexpr const char* methods[] = {"mdc", "asc", "cc"};
   int method = int(s.display.method);
-  if (ImGui::Combo("method", &method, methods, 3)) run_line(app, std::string("method ") + methods[method], hooks);
+  if (ImGui::Combo("method", &method, methods, 3))
+    run_line(app, std::string("method ") + methods[method], hooks);
   int split = s.display.split ? int(*s.display.split) + 1 : 0;
   static constexpr const char* splits[] = {"off", "mdc", "asc", "cc"};
-  if (ImGui::Combo("split with", &split, splits, 4)) run_line(app, std::string("split ") + splits[split], hooks);
+  if (ImGui::Combo("split with", &split, splits, 4))
+    run_line(app, std::string("split ") + splits[split], hooks);
   int resolution = s.display.resolution;
   if (ImGui::SliderInt("resolution", &resolution, 1, 32) && resolution != s.display.resolution)
     run_line(app, fmt::format("resolution {}", resolution), hooks);
-  static constexpr const char* modes[] = {"shaded", "zebra", "isophote", "levels", "patches", "input"};
+  static constexpr const char* modes[] = {"shaded", "zebra",   "isophote",
+                                          "levels", "patches", "input"};
   int mode = s.display.input_polygons ? 5 : int(s.display.mode);
-  if (ImGui::Combo("mode", &mode, modes, 6)) run_line(app, std::string("mode ") + modes[mode], hooks);
+  if (ImGui::Combo("mode", &mode, modes, 6))
+    run_line(app, std::string("mode ") + modes[mode], hooks);
   static constexpr const char* overlays[] = {"mesh", "kgons", "nets", "tess"};
   for (int o = 0; o < num_overlays; ++o) {
     bool on = s.display.overlays[o];
     if (o) ImGui::SameLine();
-    if (ImGui::Checkbox(overlays[o], &on)) run_line(app, fmt::format("overlay {} {}", overlays[o], on ? "on" : "off"), hooks);
+    if (ImGui::Checkbox(overlays[o], &on))
+      run_line(app, fmt::format("overlay {} {}", overlays[o], on ? "on" : "off"), hooks);
   }
   bool markers = s.display.markers;
   if (ImGui::Checkbox("extraordinary points", &markers))
@@ -539,11 +573,14 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-      if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s.document.can_undo())) run_line(app, "undo", hooks);
-      if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s.document.can_redo())) run_line(app, "redo", hooks);
+      if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s.document.can_undo()))
+        run_line(app, "undo", hooks);
+      if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s.document.can_redo()))
+        run_line(app, "redo", hooks);
       ImGui::EndMenu();
     }
-    ImGui::TextDisabled("%s%s", s.path.empty() ? "untitled" : s.path.c_str(), s.document.modified() ? " *" : "");
+    ImGui::TextDisabled("%s%s", s.path.empty() ? "untitled" : s.path.c_str(),
+                        s.document.modified() ? " *" : "");
     ImGui::EndMainMenuBar();
   }
   if (open_popup) app.open_popup_requested = true;
@@ -607,12 +644,14 @@ void status_bar(App& app) {
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - h));
   ImGui::SetNextWindowSize(ImVec2(vp->Size.x, h));
   ImGui::Begin("##status", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
   const Session& s = app.session;
-  ImGui::Text("update %.2f ms (%d of %zu patches%s) | %.0f fps | %s | %s", s.last_update.milliseconds,
-              s.last_update.recomputed_patches, s.surface.corners().size(), s.last_update.full ? ", full" : "",
-              app.fps, to_string(s.display.method).c_str(), app.status.c_str());
+  ImGui::Text("update %.2f ms (%d of %zu patches%s) | %.0f fps | %s | %s",
+              s.last_update.milliseconds, s.last_update.recomputed_patches,
+              s.surface.corners().size(), s.last_update.full ? ", full" : "", app.fps,
+              to_string(s.display.method).c_str(), app.status.c_str());
   ImGui::End();
 }
 
@@ -644,8 +683,10 @@ void handle_mouse(App& app) {
         app.press_x = app.last_x = x;
         app.press_y = app.last_y = y;
         app.mouse_moved = false;
-        app.dragging_vertex = b == 0 && ctrl && s.selection && s.selection->kind == PickKind::vertex;
-        if (app.dragging_vertex) app.drag_origin = s.document.mesh().position(Vertex(s.selection->index));
+        app.dragging_vertex =
+            b == 0 && ctrl && s.selection && s.selection->kind == PickKind::vertex;
+        if (app.dragging_vertex)
+          app.drag_origin = s.document.mesh().position(Vertex(s.selection->index));
       }
   }
   if (app.drag_button < 0) return;
@@ -673,11 +714,13 @@ void handle_mouse(App& app) {
         if (denom > 1e-9) p = p0 + ((b * e - d) / denom) * a;
       }
       try {
-        const bool first = !s.document.can_undo() || s.document.undo_labels().back() !=
-                                                          fmt::format("move vertex {}", s.selection->index + 1) ||
+        const bool first = !s.document.can_undo() ||
+                           s.document.undo_labels().back() !=
+                               fmt::format("move vertex {}", s.selection->index + 1) ||
                            app.last_x == app.press_x;
         s.apply(s.document.move_vertices({Vertex(s.selection->index)}, {p}, !first));
-        app.status = fmt::format("vertex {} at {:.3f} {:.3f} {:.3f}", s.selection->index + 1, p.x(), p.y(), p.z());
+        app.status = fmt::format("vertex {} at {:.3f} {:.3f} {:.3f}", s.selection->index + 1, p.x(),
+                                 p.y(), p.z());
         after_change(app, change_of(Change::Kind::geometry), false);
       } catch (const std::exception& ex) {
         app.status = ex.what();
@@ -708,7 +751,8 @@ void handle_keys(App& app, const ScriptHooks& hooks) {
   if (io.WantCaptureKeyboard) return;
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) run_line(app, "undo", hooks);
   if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) run_line(app, "redo", hooks);
-  if (!io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_F)) run_line(app, app.session.selection ? "frame selection" : "frame all", hooks);
+  if (!io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_F))
+    run_line(app, app.session.selection ? "frame selection" : "frame all", hooks);
   if (!io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_A)) run_line(app, "frame all", hooks);
 }
 
@@ -763,7 +807,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"stitch-modeler: interactive smooth modeling with topology changes"};
   std::string file, script, shot, size_text = "1280x800";
   bool exit_after = false, recover = false, no_autosave = false;
-  cli.add_option("FILE", file, "mesh (.obj .off .ply) or project (.stitch) to open; default: a cube");
+  cli.add_option("FILE", file,
+                 "mesh (.obj .off .ply) or project (.stitch) to open; default: a cube");
   cli.add_option("--script", script, "run the lines of this file (see docs/modeler.md)");
   cli.add_option("--screenshot", shot, "after the script, write the window to this PNG");
   cli.add_flag("--exit", exit_after, "quit after the script and screenshot");
@@ -780,7 +825,9 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  glfwSetErrorCallback([](int code, const char* text) { std::cerr << "GLFW error " << code << ": " << text << "\n"; });
+  glfwSetErrorCallback([](int code, const char* text) {
+    std::cerr << "GLFW error " << code << ": " << text << "\n";
+  });
   if (!glfwInit()) {
     std::cerr << "stitch-modeler: cannot initialise GLFW (no display? run under xvfb-run)\n";
     return 1;
@@ -790,7 +837,8 @@ int main(int argc, char** argv) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 4);
-  GLFWwindow* window = glfwCreateWindow(size.width, size.height, "stitch-modeler", nullptr, nullptr);
+  GLFWwindow* window =
+      glfwCreateWindow(size.width, size.height, "stitch-modeler", nullptr, nullptr);
   if (!window) {
     std::cerr << "stitch-modeler: cannot open an OpenGL 3.3 core window\n";
     glfwTerminate();
@@ -855,8 +903,10 @@ int main(int argc, char** argv) {
             quit = r.quit;
             const DisplaySettings& now = app.session.display;
             const bool full = now.method != before.method || now.resolution != before.resolution ||
-                              now.input_polygons != before.input_polygons || now.split != before.split ||
-                              app.session.path != path_before || app.session.last_update.full;
+                              now.input_polygons != before.input_polygons ||
+                              now.split != before.split || app.session.path != path_before ||
+                              app.session.last_update.full ||
+                              app.session.last_update.layout_changed;
             after_change(app, change_of(Change::Kind::geometry), full);
           } catch (const std::exception& e) {
             std::cerr << script << ":" << i + 1 << ": " << e.what() << "\n";
@@ -877,7 +927,8 @@ int main(int argc, char** argv) {
         const double dt = std::chrono::duration<double>(now - last_frame).count();
         last_frame = now;
         if (dt > 0) app.fps = 0.9 * app.fps + 0.1 / dt;
-        if (std::chrono::duration<double>(now - app.last_autosave).count() > autosave_interval_s) write_autosave(app);
+        if (std::chrono::duration<double>(now - app.last_autosave).count() > autosave_interval_s)
+          write_autosave(app);
       }
       write_autosave(app);  // on a clean exit, if there are unsaved changes
     } catch (const std::exception& e) {

@@ -34,7 +34,7 @@ struct CompareArgs {
   std::string out;
   std::string size = "480x480";
   std::string view = "iso";
-  int resolution = 12;
+  int resolution = 16;
   int stripes = 32;
   double zoom = 0.6;
   bool progress = false;
@@ -250,7 +250,7 @@ void run_compare(const CompareArgs& a) {
       fmt::print(stderr, "stitch: warning: {} skipped: {}\n", to_string(m), e.what());
       continue;
     }
-    const SceneGeometry scene = build_scene(mesh, *surface, a.resolution);
+    const SceneGeometry scene = build_scene(mesh, *surface, a.resolution, OverlaySelection{});
     // One camera for all methods (from the first one's surface), so the images line up.
     if (!has_camera) {
       has_camera = true;

@@ -66,7 +66,7 @@ void run_render(const RenderArgs& a) {
   stage.end();
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
   const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
-  const SceneGeometry scene = build_scene(mesh, surface, a.resolution);
+  const SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
   stage.end();
 
   const double aspect = static_cast<double>(size.width) / size.height;

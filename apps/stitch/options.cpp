@@ -20,6 +20,9 @@ void add_input_options(CLI::App* cmd, InputOptions& in) {
 HalfedgeMesh load_input(const InputOptions& in) {
   BuildOptions opt;
   opt.fill_holes = in.fill_holes;
+  // The topology operators make 2-sided faces, and edited meshes must read back; they are
+  // smoothed with a warning (see docs/method.md).
+  opt.allow_two_gons = true;
   BuildReport report;
   std::vector<std::string> warnings;
   HalfedgeMesh mesh = read_mesh(in.path, opt, &report, &warnings);

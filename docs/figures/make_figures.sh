@@ -36,16 +36,16 @@ run render $H -o $F/cube_hole_smooth.png --size 480x480 --view front --show mesh
 run render $H -o $F/cube_hole_smooth_iso.png --size 480x480 --eye -3,-4,5 --show ev
 
 # 3. AS&C against ours: zebra close-ups of a 3-valent point and of the 10-valent point.
-run render $C -o $F/valence3_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32
-run render $C -o $F/valence3_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32
-run render $H -o $F/valence10_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32
-run render $H -o $F/valence10_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32
+run render $C -o $F/valence3_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32 --resolution 24
+run render $C -o $F/valence3_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32 --resolution 24
+run render $H -o $F/valence10_asc.png --size 480x480 --method asc --mode zebra --focus-ev --stripes 32 --resolution 24
+run render $H -o $F/valence10_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32 --resolution 24
 
 # 4. Catmull-Clark against ours on the cube with a hole and on two cubes joined by an edge.
-run render $H -o $F/cube_hole_cc.png --size 480x480 --view front --method cc --mode zebra
-run render $H -o $F/cube_hole_mdc.png --size 480x480 --view front --method mdc --mode zebra
-run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra
-run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra
+run render $H -o $F/cube_hole_cc.png --size 480x480 --view front --method cc --mode zebra --resolution 16
+run render $H -o $F/cube_hole_mdc.png --size 480x480 --view front --method mdc --mode zebra --resolution 16
+run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra --resolution 16
+run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra --resolution 16
 
 # 5. Star-shaped against regularised K-gons: the K-gons of the star prism's non-convex
 #    10-sided faces (docs/figures/star_prism.obj), and the surfaces they give.

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "openings.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
 
@@ -28,26 +29,6 @@ std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop) {
 }
 
 namespace {
-
-Vec3 centroid_of(const std::vector<Vec3>& pts) {
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : pts) c += p;
-  return c / static_cast<double>(pts.size());
-}
-
-/// Newell's normal: area-weighted and oriented by the loop's winding, even for non-planar loops.
-Vec3 newell_normal(const std::vector<Vec3>& pts) {
-  Vec3 n = Vec3::Zero();
-  const size_t k = pts.size();
-  for (size_t i = 0; i < k; ++i) n += pts[i].cross(pts[(i + 1) % k]);
-  return n;
-}
-
-Vec3 face_newell(const HalfedgeMesh& m, Face f) {
-  std::vector<Vec3> pts;
-  for (Halfedge h : m.face_loop(f)) pts.push_back(m.position(m.origin(h)));
-  return newell_normal(pts);
-}
 
 /// Least-squares plane normal through the centroid, oriented like the loop's winding. The
 /// winding decides the side because the smallest-eigenvalue eigenvector has no sign of its own.
@@ -95,7 +76,7 @@ Kgon make_kgon(const KgonSet& set, std::vector<Corner> corners, const Vec3& fall
   for (Corner c : corners) polygon.push_back(set.corner_point[c.idx]);
   g.corners = std::move(corners);
   g.points = doo_sabin_shrink(polygon);
-  g.centroid = centroid_of(g.points);
+  g.centroid = centroid(g.points);
   const Vec3 winding = newell_normal(g.points);
   const int k = g.size();
   if (k == 2) {
@@ -200,7 +181,7 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
 
   std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
   for (Face f : m.faces()) {
-    face_normal[f.idx] = face_newell(m, f);
+    face_normal[f.idx] = newell_normal(face_points(m, f));
     set_corner_points(m, options, set, f);
   }
   auto normal_of = [&](Face f) { return face_normal[f.idx]; };
@@ -216,7 +197,7 @@ void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
   std::unordered_map<int, Vec3> cache;
   auto normal_of = [&](Face f) {
     auto [it, fresh] = cache.try_emplace(f.idx);
-    if (fresh) it->second = face_newell(m, f);
+    if (fresh) it->second = newell_normal(face_points(m, f));
     return it->second;
   };
   for (Face f : faces) set_corner_points(m, options, set, f);

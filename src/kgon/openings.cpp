@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "stitch/mesh/polygon.hpp"
+
 namespace stitch::detail {
 
 std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
@@ -57,18 +59,6 @@ std::optional<RimSample> far_point(const std::vector<Vec3>& chain) {
   return RimSample{chain.back(), (chain.back() - chain[chain.size() - 2]).normalized()};
 }
 
-Vec3 mean(const std::vector<Vec3>& pts) {
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : pts) c += p;
-  return c / static_cast<double>(pts.size());
-}
-
-Vec3 newell(const std::vector<Vec3>& pts) {
-  Vec3 n = Vec3::Zero();
-  for (size_t i = 0; i < pts.size(); ++i) n += pts[i].cross(pts[(i + 1) % pts.size()]);
-  return n;
-}
-
 }  // namespace
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
@@ -89,12 +79,12 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
 
   const Vec3 centre = (far_a->point + far_b->point) / 2;
   const Vec3 axis = far_b->point - far_a->point;
-  const Vec3 across = mean(chain_b) - mean(chain_a);
-  const Vec3 middle = (mean(chain_a) + mean(chain_b)) / 2;
+  const Vec3 across = centroid(chain_b) - centroid(chain_a);
+  const Vec3 middle = (centroid(chain_a) + centroid(chain_b)) / 2;
   // The openings face away from each other around a hole through the solid (the surface's
   // outside is the tube's inside) and towards each other across a handle joining two solids.
-  const double sa = newell(rim_of(openings.first)).dot(across);
-  const double sb = newell(rim_of(openings.second)).dot(across);
+  const double sa = newell_normal(rim_of(openings.first)).dot(across);
+  const double sb = newell_normal(rim_of(openings.second)).dot(across);
   const bool hole = sa < 0 && sb > 0, handle = sa > 0 && sb < 0;
   if (!hole && !handle) return std::nullopt;
 

@@ -52,10 +52,12 @@ void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renu
     kgons.edge.clear();
     return;
   }
-  erase_if_key(kgons.face, [&](int i) { return i >= mesh.face_capacity() || mesh.is_deleted(Face(i)); });
+  erase_if_key(kgons.face,
+               [&](int i) { return i >= mesh.face_capacity() || mesh.is_deleted(Face(i)); });
   erase_if_key(kgons.vertex,
                [&](int i) { return i >= mesh.vertex_capacity() || mesh.is_deleted(Vertex(i)); });
-  erase_if_key(kgons.edge, [&](int i) { return i >= mesh.edge_capacity() || mesh.is_deleted(Edge(i)); });
+  erase_if_key(kgons.edge,
+               [&](int i) { return i >= mesh.edge_capacity() || mesh.is_deleted(Edge(i)); });
 }
 
 Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
@@ -171,7 +173,8 @@ Change Document::apply(const Command& command, bool forward) {
   Change c;
   if (const auto* move = std::get_if<MoveVertices>(&command.edit)) {
     const auto& to = forward ? move->after : move->before;
-    for (size_t i = 0; i < move->vertices.size(); ++i) state_.mesh.position(move->vertices[i]) = to[i];
+    for (size_t i = 0; i < move->vertices.size(); ++i)
+      state_.mesh.position(move->vertices[i]) = to[i];
     c.kind = Change::Kind::geometry;
     c.moved = move->vertices;
   } else if (const auto* edit = std::get_if<KgonEdit>(&command.edit)) {

@@ -26,34 +26,31 @@ class Stopwatch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-}  // namespace
+/// The Catmull-Clark limit surface (built for the whole mesh), or null for the Bezier methods.
+/// Built before anything changes, since OpenSubdiv refuses some meshes (2-sided faces, faces
+/// along one edge twice).
+std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                    Method method) {
+  return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
+}
 
-AffectedSet affected_by(const HalfedgeMesh& m, const Change& change) {
-  AffectedSet a;
-  if (change.kind == Change::Kind::geometry) {
-    // A moved vertex moves the corner points of its faces (and their normals). K-gons built on
-    // those corner points: the faces' own, those of their vertices and edges. Face K-gons across
-    // an edge also read the faces' normals (the fallback for K-gons without a plane).
-    std::vector<Face> moved_faces;
-    for (Vertex v : change.moved)
-      for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
-    sort_unique(moved_faces);
-    for (Face f : moved_faces)
-      for (Halfedge h : m.face_loop(f)) {
-        a.vertices.push_back(m.origin(h));
-        a.edges.push_back(HalfedgeMesh::edge(h));
-        a.faces.push_back(m.face(HalfedgeMesh::twin(h)));
-      }
-    a.faces.insert(a.faces.end(), moved_faces.begin(), moved_faces.end());
-  } else if (change.kind == Change::Kind::kgons) {
-    a.faces = change.faces;
-    a.vertices = change.vertices;
-    a.edges = change.edges;
-  }
+/// The K-gons that can read the corner points or normals of `moved_faces` (faces whose vertices
+/// moved or whose loops changed): the faces' own, those of their vertices and edges, and the
+/// face K-gons across their edges (which read the faces' normals when they have no plane).
+/// Then the corners whose nets read one of those K-gons: a net reads the K-gons of its face,
+/// its vertex, its edge and its previous edge.
+AffectedSet expand(const HalfedgeMesh& m, std::vector<Face> moved_faces, AffectedSet a) {
+  sort_unique(moved_faces);
+  for (Face f : moved_faces)
+    for (Halfedge h : m.face_loop(f)) {
+      a.vertices.push_back(m.origin(h));
+      a.edges.push_back(HalfedgeMesh::edge(h));
+      a.faces.push_back(m.face(HalfedgeMesh::twin(h)));
+    }
+  a.faces.insert(a.faces.end(), moved_faces.begin(), moved_faces.end());
   sort_unique(a.faces);
   sort_unique(a.vertices);
   sort_unique(a.edges);
-  // A net reads the K-gons of its face, its vertex, its edge and its previous edge.
   for (Face f : a.faces)
     for (Halfedge h : m.face_loop(f)) a.corners.push_back(h);
   for (Vertex v : a.vertices)
@@ -68,61 +65,81 @@ AffectedSet affected_by(const HalfedgeMesh& m, const Change& change) {
   return a;
 }
 
-void LiveSurface::layout(const HalfedgeMesh& mesh) {
-  corners_ = mesh.halfedges();
-  slot_.assign(mesh.halfedge_capacity(), -1);
-  for (size_t k = 0; k < corners_.size(); ++k) slot_[corners_[k].idx] = static_cast<int>(k);
-  const int n = resolution_, per_patch = vertices_per_patch();
-  const size_t nv = corners_.size() * per_patch;
-  tess_ = SurfaceMesh{};
-  tess_.positions.resize(nv);
-  tess_.normals.resize(nv);
-  tess_.uv.resize(nv);
-  tess_.patch.resize(nv);
-  tess_.level.resize(nv);
-  tess_.quads.reserve(corners_.size() * n * n);
-  // The same vertex and quad order as tessellate(..., welded = false).
-  for (size_t k = 0; k < corners_.size(); ++k) {
-    const int base = static_cast<int>(k) * per_patch;
-    for (int s = 0; s < per_patch; ++s) {
-      tess_.uv[base + s] = {static_cast<double>(s / (n + 1)) / n, static_cast<double>(s % (n + 1)) / n};
-      tess_.patch[base + s] = corners_[k].idx;
-    }
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        tess_.quads.push_back({base + i * (n + 1) + j, base + (i + 1) * (n + 1) + j,
-                               base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1});
-  }
-}
-
-namespace {
-
-/// The Catmull-Clark limit surface (built for the whole mesh), or null for the Bezier methods.
-/// Built before anything changes, since OpenSubdiv refuses some meshes (2-sided faces, faces
-/// along one edge twice).
-std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions& options, Method method) {
-  return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
+template <class T>
+void resize_to(std::vector<T>& v, int n) {
+  v.resize(static_cast<size_t>(n));
 }
 
 }  // namespace
 
-void LiveSurface::tessellate_patches(const std::vector<int>& patches, const Surface* cc) {
+AffectedSet affected_by(const HalfedgeMesh& m, const Change& change) {
+  AffectedSet a;
+  std::vector<Face> moved_faces;
+  if (change.kind == Change::Kind::geometry) {
+    for (Vertex v : change.moved)
+      for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
+  } else if (change.kind == Change::Kind::kgons) {
+    a.faces = change.faces;
+    a.vertices = change.vertices;
+    a.edges = change.edges;
+  }
+  return expand(m, std::move(moved_faces), std::move(a));
+}
+
+bool LiveSurface::layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_live) {
+  const int n = resolution_, per_patch = vertices_per_patch(), per_quads = quads_per_patch();
+  const int slots = mesh.halfedge_capacity();
+  const int old_slots = static_cast<int>(tess_.quads.size()) / std::max(per_quads, 1);
+  const size_t nv = static_cast<size_t>(slots) * per_patch;
+  tess_.positions.resize(nv, Vec3::Zero());
+  tess_.normals.resize(nv, Vec3::Zero());
+  tess_.uv.resize(nv, Eigen::Vector2d::Zero());
+  tess_.patch.resize(nv, -1);
+  tess_.level.resize(nv, 0);
+  tess_.quads.resize(static_cast<size_t>(slots) * per_quads);
+  corners_ = mesh.halfedges();
+  bool changed = slots != old_slots;
+  for (int h = 0; h < slots; ++h) {
+    const bool live = !mesh.is_deleted(Halfedge(h));
+    if (h < old_slots && h < static_cast<int>(was_live.size()) && was_live[h] == live) continue;
+    changed = true;
+    // The same vertex and quad order as tessellate(..., welded = false); dead slots draw nothing.
+    const int base = h * per_patch;
+    for (int s = 0; s < per_patch; ++s) {
+      tess_.uv[base + s] = {static_cast<double>(s / (n + 1)) / n,
+                            static_cast<double>(s % (n + 1)) / n};
+      tess_.patch[base + s] = live ? h : -1;
+      if (!live) {
+        tess_.positions[base + s] = tess_.normals[base + s] = Vec3::Zero();
+        tess_.level[base + s] = 0;
+      }
+    }
+    auto* q = &tess_.quads[static_cast<size_t>(h) * per_quads];
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        *q++ = live ? std::array<int, 4>{base + i * (n + 1) + j, base + (i + 1) * (n + 1) + j,
+                                         base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1}
+                    : std::array<int, 4>{base, base, base, base};
+  }
+  return changed;
+}
+
+void LiveSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
   const int n = resolution_, per_patch = vertices_per_patch();
   const BezierRule rule = method_ == Method::asc ? BezierRule::asc : BezierRule::mdc;
   tbb::parallel_for(size_t{0}, patches.size(), [&](size_t q) {
-    const int k = patches[q];
-    const Corner c = corners_[k];
+    const Corner c = patches[q];
     for (int s = 0; s < per_patch; ++s) {
-      const double u = static_cast<double>(s / (n + 1)) / n, v = static_cast<double>(s % (n + 1)) / n;
+      const double u = static_cast<double>(s / (n + 1)) / n,
+                   v = static_cast<double>(s % (n + 1)) / n;
       const SurfacePoint sp = cc ? cc->evaluate(c, u, v) : evaluate_patch(nets_[c.idx], u, v, rule);
-      const size_t at = static_cast<size_t>(k) * per_patch + s;
+      const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
       tess_.positions[at] = sp.position;
       tess_.normals[at] = sp.normal;
       tess_.level[at] = sp.level;
     }
   });
-  recomputed_.clear();
-  for (int k : patches) recomputed_.push_back(corners_[k]);
+  recomputed_ = patches;
 }
 
 UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
@@ -132,15 +149,108 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   resolution_ = resolution;
+  mesh_ = mesh;
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
-  layout(mesh);
-  std::vector<int> all(corners_.size());
-  for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-  tessellate_patches(all, cc.get());
+  tess_ = SurfaceMesh{};
+  layout(mesh, {});
+  evaluate(corners_, cc.get());
   UpdateStats stats;
-  stats.full = true;
-  stats.candidate_patches = stats.recomputed_patches = static_cast<int>(all.size());
+  stats.full = stats.layout_changed = true;
+  stats.candidate_patches = stats.recomputed_patches = static_cast<int>(corners_.size());
+  stats.milliseconds = watch.ms();
+  return stats;
+}
+
+UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOptions& options) {
+  const Stopwatch watch;
+  const auto cc = cc_surface(m, options, method_);  // may refuse: nothing has changed yet
+  const HalfedgeMesh& old = mesh_;
+  const int nh = m.halfedge_capacity(), old_nh = old.halfedge_capacity();
+
+  // What differs from the previous mesh. Untouched elements keep their numbers under the
+  // operators, so this is an element-by-element comparison.
+  std::vector<Face> moved_faces;
+  AffectedSet seeds;
+  std::vector<Corner> fresh;  // live corners that had no live patch before
+  std::vector<bool> was_live(old_nh);
+  for (int h = 0; h < old_nh; ++h) was_live[h] = !old.is_deleted(Halfedge(h));
+  for (int i = 0; i < nh; ++i) {
+    const Halfedge h(i);
+    if (m.is_deleted(h)) continue;
+    const bool existed = i < old_nh && was_live[i];
+    if (!existed) fresh.push_back(h);
+    if (existed && old.next(h) == m.next(h) && old.prev(h) == m.prev(h) &&
+        old.origin(h) == m.origin(h) && old.face(h) == m.face(h))
+      continue;
+    moved_faces.push_back(m.face(h));
+    seeds.vertices.push_back(m.origin(h));
+    seeds.edges.push_back(HalfedgeMesh::edge(h));
+  }
+  for (Vertex v : m.vertices()) {
+    const bool same = v.idx < old.vertex_capacity() && !old.is_deleted(v) &&
+                      old.halfedge(v) == m.halfedge(v) && old.position(v) == m.position(v);
+    if (same) continue;
+    seeds.vertices.push_back(v);  // its fan starts elsewhere or it moved
+    for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
+  }
+  for (Face f : m.faces()) {
+    const bool same =
+        f.idx < old.face_capacity() && !old.is_deleted(f) && old.halfedge(f) == m.halfedge(f);
+    if (!same) moved_faces.push_back(f);  // its loop starts elsewhere (K-gon point order)
+  }
+  AffectedSet a = expand(m, std::move(moved_faces), std::move(seeds));
+
+  // Arrays to the new capacities; K-gons and nets of removed elements emptied (as build_kgons
+  // and build_control_nets leave them).
+  resize_to(kgons_.corner_point, nh);
+  resize_to(kgons_.in_face, nh);
+  resize_to(kgons_.in_vertex, nh);
+  resize_to(kgons_.in_next_edge, nh);
+  resize_to(kgons_.in_prev_edge, nh);
+  resize_to(kgons_.face, m.face_capacity());
+  resize_to(kgons_.vertex, m.vertex_capacity());
+  resize_to(kgons_.edge, m.edge_capacity());
+  resize_to(nets_, nh);
+  for (int i = 0; i < old_nh && i < nh; ++i)
+    if (was_live[i] && m.is_deleted(Halfedge(i))) {
+      nets_[i] = ControlNet{};
+      kgons_.corner_point[i] = Vec3::Zero();
+      kgons_.in_face[i] = kgons_.in_vertex[i] = kgons_.in_next_edge[i] = kgons_.in_prev_edge[i] = -1;
+      if (i % 2 == 0) kgons_.edge[i / 2] = Kgon{};
+    }
+  for (int v = 0; v < std::min(old.vertex_capacity(), m.vertex_capacity()); ++v)
+    if (!old.is_deleted(Vertex(v)) && m.is_deleted(Vertex(v))) kgons_.vertex[v] = Kgon{};
+  for (int f = 0; f < std::min(old.face_capacity(), m.face_capacity()); ++f)
+    if (!old.is_deleted(Face(f)) && m.is_deleted(Face(f))) kgons_.face[f] = Kgon{};
+
+  update_kgons(m, options, kgons_, a.faces, a.vertices, a.edges);
+  std::vector<Corner> changed = fresh;
+  std::vector<bool> is_fresh(nh, false);
+  for (Corner c : fresh) is_fresh[c.idx] = true;
+  for (Corner c : a.corners) {
+    ControlNet net = build_control_net(m, kgons_, c);
+    if (is_fresh[c.idx] || net != nets_[c.idx]) {
+      nets_[c.idx] = net;
+      if (!is_fresh[c.idx]) changed.push_back(c);
+    }
+  }
+  for (Corner c : fresh)  // not all fresh corners need be candidates (e.g. after an undo)
+    nets_[c.idx] = build_control_net(m, kgons_, c);
+
+  const bool layout_changed = layout(m, was_live);
+  mesh_ = m;
+  UpdateStats stats;
+  stats.layout_changed = layout_changed;
+  stats.candidate_patches = static_cast<int>(a.corners.size());
+  if (cc) {
+    stats.full = true;
+    evaluate(corners_, cc.get());
+  } else {
+    sort_unique(changed);
+    evaluate(changed, nullptr);
+  }
+  stats.recomputed_patches = static_cast<int>(recomputed_.size());
   stats.milliseconds = watch.ms();
   return stats;
 }
@@ -151,7 +261,7 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
     recomputed_.clear();
     return {};
   }
-  if (change.kind == Change::Kind::topology) return rebuild(mesh, options, method_, resolution_);
+  if (change.kind == Change::Kind::topology) return update_topology(mesh, options);
   const Stopwatch watch;
   std::vector<Corner> candidates;
   if (change.all_kgons) {
@@ -162,24 +272,28 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
     update_kgons(mesh, options, kgons_, a.faces, a.vertices, a.edges);
     candidates = std::move(a.corners);
   }
-  std::vector<int> changed;
+  for (Vertex v : change.moved) mesh_.position(v) = mesh.position(v);
+  std::vector<Corner> changed;
   for (Corner c : candidates) {
     ControlNet net = build_control_net(mesh, kgons_, c);
     if (net != nets_[c.idx]) {
       nets_[c.idx] = net;
-      changed.push_back(slot_[c.idx]);
+      changed.push_back(c);
     }
   }
+  std::unique_ptr<Surface> cc;
   if (method_ == Method::cc) {
     // The limit surface ignores K-gons, and OpenSubdiv rebuilds it whole after a move.
     changed.clear();
-    if (change.kind == Change::Kind::geometry)
-      for (size_t k = 0; k < corners_.size(); ++k) changed.push_back(static_cast<int>(k));
+    if (change.kind == Change::Kind::geometry) {
+      changed = corners_;
+      cc = cc_surface(mesh, options, method_);
+    }
   }
   std::sort(changed.begin(), changed.end());
-  tessellate_patches(changed, changed.empty() ? nullptr : cc_surface(mesh, options, method_).get());
+  evaluate(changed, cc.get());
   UpdateStats stats;
-  stats.full = method_ == Method::cc && !changed.empty();
+  stats.full = cc != nullptr;
   stats.candidate_patches = static_cast<int>(candidates.size());
   stats.recomputed_patches = static_cast<int>(changed.size());
   stats.milliseconds = watch.ms();
@@ -191,12 +305,10 @@ UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions&
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
-  std::vector<int> all(corners_.size());
-  for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-  tessellate_patches(all, cc.get());
+  evaluate(corners_, cc.get());
   UpdateStats stats;
   stats.full = true;
-  stats.recomputed_patches = static_cast<int>(all.size());
+  stats.recomputed_patches = static_cast<int>(corners_.size());
   stats.milliseconds = watch.ms();
   return stats;
 }
@@ -207,8 +319,12 @@ UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOpti
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method_);
   resolution_ = resolution;
-  layout(mesh);
-  UpdateStats stats = set_method(mesh, options, method_);
+  tess_ = SurfaceMesh{};
+  layout(mesh, {});
+  evaluate(corners_, cc.get());
+  UpdateStats stats;
+  stats.full = stats.layout_changed = true;
+  stats.recomputed_patches = static_cast<int>(corners_.size());
   stats.milliseconds = watch.ms();
   return stats;
 }

@@ -11,7 +11,9 @@ namespace stitch::modeler {
 
 namespace {
 
-double rad(double deg) { return deg * std::numbers::pi / 180.0; }
+double rad(double deg) {
+  return deg * std::numbers::pi / 180.0;
+}
 
 /// Moller-Trumbore; the distance along the ray, or nothing. Both sides count (a picked face may
 /// be seen from inside through a hole).
@@ -74,7 +76,9 @@ void OrbitView::pan(double dx_px, double dy_px, double height_px) {
   target += scale * (-dx_px * right + dy_px * c.up);
 }
 
-void OrbitView::zoom(double steps) { distance *= std::pow(0.9, steps); }
+void OrbitView::zoom(double steps) {
+  distance *= std::pow(0.9, steps);
+}
 
 void OrbitView::frame(const Vec3& center, double radius) {
   target = center;
@@ -123,7 +127,8 @@ PickKind parse_pick_kind(const std::string& name) {
   if (name == "edge") return PickKind::edge;
   if (name == "face") return PickKind::face;
   if (name == "corner") return PickKind::corner;
-  throw MeshError(fmt::format("unknown element kind '{}' (expected vertex, edge, face or corner)", name));
+  throw MeshError(
+      fmt::format("unknown element kind '{}' (expected vertex, edge, face or corner)", name));
 }
 
 std::string to_string(PickKind kind) {
@@ -140,8 +145,8 @@ std::optional<Pick> pick(const HalfedgeMesh& mesh, const Ray& ray, PickKind kind
     for (Halfedge h : loop) centroid += mesh.position(mesh.origin(h));
     centroid /= static_cast<double>(loop.size());
     for (Halfedge h : loop) {
-      const auto t = hit_triangle(ray, centroid, mesh.position(mesh.origin(h)),
-                                  mesh.position(mesh.target(h)));
+      const auto t =
+          hit_triangle(ray, centroid, mesh.position(mesh.origin(h)), mesh.position(mesh.target(h)));
       if (t && *t < best) {
         best = *t;
         hit_face = f;
@@ -159,8 +164,9 @@ std::optional<Pick> pick(const HalfedgeMesh& mesh, const Ray& ray, PickKind kind
   double nearest = std::numeric_limits<double>::infinity();
   for (Halfedge h : mesh.face_loop(hit_face)) {
     const Vec3& a = mesh.position(mesh.origin(h));
-    const double d = kind == PickKind::edge ? distance_to_segment(p.point, a, mesh.position(mesh.target(h)))
-                                            : (a - p.point).norm();
+    const double d = kind == PickKind::edge
+                         ? distance_to_segment(p.point, a, mesh.position(mesh.target(h)))
+                         : (a - p.point).norm();
     if (d < nearest) {
       nearest = d;
       p.index = kind == PickKind::vertex ? mesh.origin(h).idx : h.idx;

@@ -20,7 +20,9 @@ namespace {
 
 constexpr const char* overlay_names[num_overlays] = {"mesh", "kgons", "nets", "tess"};
 
-json vec_json(const Vec3& p) { return json::array({p.x(), p.y(), p.z()}); }
+json vec_json(const Vec3& p) {
+  return json::array({p.x(), p.y(), p.z()});
+}
 
 Vec3 vec_from(const json& j, const std::string& what) {
   if (!j.is_array() || j.size() != 3) throw MeshError(what + " must be an array of 3 numbers");
@@ -30,7 +32,9 @@ Vec3 vec_from(const json& j, const std::string& what) {
 }
 
 json control_json(const KgonControl& c) {
-  return {{"scale", c.scale}, {"rotate", c.rotate_deg}, {"offset", vec_json(c.offset)},
+  return {{"scale", c.scale},
+          {"rotate", c.rotate_deg},
+          {"offset", vec_json(c.offset)},
           {"regularize", c.regularize}};
 }
 
@@ -101,25 +105,25 @@ std::string project_to_json(const Project& project) {
   for (int o = 0; o < num_overlays; ++o)
     if (d.overlays[o]) overlays.push_back(overlay_names[o]);
   const OrbitView& v = project.view;
-  json j = {
-      {"format", "stitch-modeler-project"},
-      {"version", 1},
-      {"mesh", {{"positions", positions}, {"faces", faces}}},
-      {"kgons", {{"global", control_json(k.global)}, {"faces", kf}, {"vertices", kv}, {"edges", ke}}},
-      {"view",
-       {{"target", vec_json(v.target)},
-        {"distance", v.distance},
-        {"yaw", v.yaw_deg},
-        {"pitch", v.pitch_deg},
-        {"fov", v.fov_y_deg}}},
-      {"display",
-       {{"method", to_string(d.method)},
-        {"resolution", d.resolution},
-        {"mode", to_string(d.mode)},
-        {"input", d.input_polygons},
-        {"overlays", overlays},
-        {"markers", d.markers},
-        {"split", d.split ? json(to_string(*d.split)) : json(nullptr)}}}};
+  json j = {{"format", "stitch-modeler-project"},
+            {"version", 1},
+            {"mesh", {{"positions", positions}, {"faces", faces}}},
+            {"kgons",
+             {{"global", control_json(k.global)}, {"faces", kf}, {"vertices", kv}, {"edges", ke}}},
+            {"view",
+             {{"target", vec_json(v.target)},
+              {"distance", v.distance},
+              {"yaw", v.yaw_deg},
+              {"pitch", v.pitch_deg},
+              {"fov", v.fov_y_deg}}},
+            {"display",
+             {{"method", to_string(d.method)},
+              {"resolution", d.resolution},
+              {"mode", to_string(d.mode)},
+              {"input", d.input_polygons},
+              {"overlays", overlays},
+              {"markers", d.markers},
+              {"split", d.split ? json(to_string(*d.split)) : json(nullptr)}}}};
   return j.dump(1) + "\n";
 }
 
@@ -127,7 +131,8 @@ Project project_from_json(const std::string& text, const std::string& source) {
   try {
     const json j = json::parse(text);
     if (j.value("format", "") != "stitch-modeler-project")
-      throw MeshError("not a stitch modeler project (\"format\" is not \"stitch-modeler-project\")");
+      throw MeshError(
+          "not a stitch modeler project (\"format\" is not \"stitch-modeler-project\")");
     if (j.value("version", 0) != 1)
       throw MeshError(fmt::format("unsupported project version {}", j.value("version", 0)));
     Project p;
@@ -143,24 +148,28 @@ Project project_from_json(const std::string& text, const std::string& source) {
     const HalfedgeMesh& m = p.state.mesh;
 
     std::vector<int> vertex_of(soup.positions.size(), -1);
-    for (size_t v = 0; v < report.vertex_source.size(); ++v) vertex_of[report.vertex_source[v]] = int(v);
+    for (size_t v = 0; v < report.vertex_source.size(); ++v)
+      vertex_of[report.vertex_source[v]] = int(v);
     const json& k = j.at("kgons");
     p.state.kgons.global = control_from(k.at("global"), "the global K-gon control");
     for (const json& c : k.at("faces")) {
       const int f = c.at("face").get<int>();
-      if (f < 0 || f >= m.face_capacity()) throw MeshError(fmt::format("K-gon control of face {}: no such face", f));
+      if (f < 0 || f >= m.face_capacity())
+        throw MeshError(fmt::format("K-gon control of face {}: no such face", f));
       p.state.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f));
     }
     for (const json& c : k.at("vertices")) {
       const int v = c.at("vertex").get<int>();
       if (v < 0 || v >= int(vertex_of.size()) || vertex_of[v] < 0)
         throw MeshError(fmt::format("K-gon control of vertex {}: no such vertex", v));
-      p.state.kgons.vertex[vertex_of[v]] = control_from(c, fmt::format("K-gon control of vertex {}", v));
+      p.state.kgons.vertex[vertex_of[v]] =
+          control_from(c, fmt::format("K-gon control of vertex {}", v));
     }
     for (const json& c : k.at("edges")) {
       const int f = c.at("face").get<int>(), i = c.at("corner").get<int>();
       if (f < 0 || f >= m.face_capacity() || i < 0 || i >= m.degree(Face(f)))
-        throw MeshError(fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
+        throw MeshError(
+            fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
       const Halfedge h = m.face_loop(Face(f))[i];
       p.state.kgons.edge[HalfedgeMesh::edge(h).idx] =
           control_from(c, fmt::format("K-gon control of the edge at corner {} of face {}", i, f));

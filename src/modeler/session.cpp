@@ -108,8 +108,8 @@ void Session::fall_back_from_cc(const std::string& why) {
   if (display.method != Method::cc) throw MeshError(why);
   display.method = Method::mdc;
   warning = why + "; showing mdc instead";
-  last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
-                                display.resolution);
+  last_update =
+      surface.rebuild(document.mesh(), document.kgon_options(), display.method, display.resolution);
 }
 
 BoundingBox Session::mesh_bounds() const {
@@ -118,7 +118,9 @@ BoundingBox Session::mesh_bounds() const {
   return box;
 }
 
-Project Session::project() const { return {document.state(), view, display}; }
+Project Session::project() const {
+  return {document.state(), view, display};
+}
 
 void open_file(Session& session, const std::string& path) {
   if (is_project_path(path)) {
@@ -192,9 +194,9 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     Vec3 p(number(w[2], "x"), number(w[3], "y"), number(w[4], "z"));
     if (cmd == "translate-vertex") p += mesh.position(v);
     s.apply(s.document.move_vertices({v}, {p}));
-    result.message = fmt::format("vertex {} moved; {} of {} patches recomputed in {:.2f} ms", v.idx + 1,
-                                 s.last_update.recomputed_patches, s.surface.corners().size(),
-                                 s.last_update.milliseconds);
+    result.message = fmt::format("vertex {} moved; {} of {} patches recomputed in {:.2f} ms",
+                                 v.idx + 1, s.last_update.recomputed_patches,
+                                 s.surface.corners().size(), s.last_update.milliseconds);
   } else if (cmd == "select") {
     expect(w, 1, 3, "select vertex V | edge V W[@F] | face F | corner V@F | none");
     if (w[1] == "none") {
@@ -236,12 +238,14 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     }
     const KgonTarget t = target.value_or(KgonTarget{});
     if (w.size() <= i)
-      throw MeshError("usage: kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset");
+      throw MeshError(
+          "usage: kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset");
     KgonControl c = s.document.kgon_control(t);
     const std::string& what = w[i];
     const size_t args = w.size() - i - 1;
     auto need = [&](size_t n) {
-      if (args != n) throw MeshError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
+      if (args != n)
+        throw MeshError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
     };
     if (what == "scale") {
       need(1);
@@ -259,7 +263,8 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       need(0);
       c = KgonControl{};
     } else {
-      throw MeshError(fmt::format("unknown K-gon control '{}' (scale, rotate, offset, regularize, reset)", what));
+      throw MeshError(fmt::format(
+          "unknown K-gon control '{}' (scale, rotate, offset, regularize, reset)", what));
     }
     s.apply(s.document.set_kgon_control(t, c));
     result.message = fmt::format("K-gon control set; {} patches recomputed in {:.2f} ms",
@@ -304,7 +309,8 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     } else {
       const auto* it = std::find(std::begin(overlay_words), std::end(overlay_words), w[1]);
       if (it == std::end(overlay_words))
-        throw MeshError(fmt::format("unknown overlay '{}' (mesh, kgons, nets, tess, markers)", w[1]));
+        throw MeshError(
+            fmt::format("unknown overlay '{}' (mesh, kgons, nets, tess, markers)", w[1]));
       s.display.overlays[it - std::begin(overlay_words)] = on;
     }
   } else if (cmd == "split") {

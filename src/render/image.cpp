@@ -71,8 +71,16 @@ Image render_image(const Renderer& renderer, const Camera& camera, const RenderS
   const int w = width * factor, h = height * factor;
   const int samples = std::clamp(aa.msaa_samples, 0, static_cast<int>(max_samples));
 
+  // Errors left by earlier GL calls of the application are not ours to report.
+  while (glGetError() != GL_NO_ERROR) {
+  }
   Image image(w, h);
   {
+    // Whatever happens, leave the application's framebuffer bound as it was.
+    struct RestoreBinding {
+      GLint fbo;
+      ~RestoreBinding() { glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(fbo)); }
+    } restore{previous_fbo};
     Framebuffer target(w, h, samples, true);
     renderer.draw(camera, style, w, h, static_cast<float>(factor));
     // Resolve the samples into a single-sample framebuffer, then read it.
@@ -88,7 +96,6 @@ Image render_image(const Renderer& renderer, const Camera& camera, const RenderS
     for (int y = 0; y < h; ++y) {
       std::memcpy(&image.rgba[y * row], &bottom_up[(h - 1 - y) * row], row);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
   }
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     throw RenderError(fmt::format("OpenGL error 0x{:x} while rendering", error));

@@ -8,7 +8,8 @@
 
 namespace stitch {
 
-SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution) {
+SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                          const OverlaySelection& overlays) {
   SceneGeometry scene;
   TessellationOptions options;
   options.resolution = resolution;
@@ -16,10 +17,16 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
   scene.surface = tessellate(mesh, surface, options);
   scene.input = input_faces(mesh);
   const BezierSurface& bezier = surface.bezier();
-  scene.overlays[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
-  scene.overlays[static_cast<int>(Overlay::kgons)] = kgon_lines(bezier.kgons);
-  scene.overlays[static_cast<int>(Overlay::nets)] = control_net_lines(bezier.nets, bezier.corners);
-  scene.overlays[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
+  const auto wanted = [&](Overlay o) { return overlays[static_cast<int>(o)]; };
+  auto& lines = scene.overlays;
+  if (wanted(Overlay::mesh)) lines[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
+  if (wanted(Overlay::kgons)) lines[static_cast<int>(Overlay::kgons)] = kgon_lines(bezier.kgons);
+  if (wanted(Overlay::nets)) {
+    lines[static_cast<int>(Overlay::nets)] = control_net_lines(bezier.nets, bezier.corners);
+  }
+  if (wanted(Overlay::tessellation)) {
+    lines[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
+  }
   scene.extraordinary = extraordinary_points(mesh, bezier.kgons);
   for (const Vec3& p : scene.surface.positions) scene.bounds.extend(p);
   for (const Vertex v : mesh.vertices()) scene.bounds.extend(mesh.position(v));

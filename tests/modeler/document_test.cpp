@@ -1,8 +1,9 @@
 // The document's commands: every change undoes to the exact earlier mesh and redoes exactly.
+#include "stitch/modeler/document.hpp"
+
 #include <gtest/gtest.h>
 
 #include "stitch/mesh/validate.hpp"
-#include "stitch/modeler/document.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace stitch::modeler {

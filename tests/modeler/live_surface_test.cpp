@@ -1,13 +1,14 @@
 // The incremental surface update: after a local edit exactly the patches whose control nets
 // changed are recomputed, and the result is identical (bit for bit, since the same code runs on
 // the same numbers) to building everything from scratch.
+#include "stitch/modeler/live_surface.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 #include <set>
 
 #include "stitch/mesh/io.hpp"
-#include "stitch/modeler/live_surface.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "test_support.hpp"
@@ -15,7 +16,8 @@
 namespace stitch::modeler {
 namespace {
 
-void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh, const KgonOptions& options) {
+void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh,
+                            const KgonOptions& options) {
   const Surface fresh(mesh, live.method(), options);
   TessellationOptions t;
   t.resolution = live.resolution();
@@ -37,7 +39,8 @@ void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh, c
 void check_update(LiveSurface& live, const Document& doc, const Change& change) {
   const std::vector<ControlNet> before = live.nets();
   const UpdateStats stats = live.update(doc.mesh(), doc.kgon_options(), change);
-  const std::vector<ControlNet> fresh = build_control_nets(doc.mesh(), build_kgons(doc.mesh(), doc.kgon_options()));
+  const std::vector<ControlNet> fresh =
+      build_control_nets(doc.mesh(), build_kgons(doc.mesh(), doc.kgon_options()));
   std::vector<Corner> changed;
   for (Corner c : doc.mesh().halfedges())
     if (before[c.idx] != fresh[c.idx]) changed.push_back(c);
@@ -94,7 +97,8 @@ TEST(ModelerLiveSurface, KgonEditsRecomputeExactlyTheChangedPatches) {
     k.scale = 0.7;
     k.rotate_deg = 12;
     check_update(live, doc, doc.set_kgon_control({KgonKind::face, doc.mesh().faces()[0].idx}, k));
-    check_update(live, doc, doc.set_kgon_control({KgonKind::vertex, doc.mesh().vertices()[1].idx}, k));
+    check_update(live, doc,
+                 doc.set_kgon_control({KgonKind::vertex, doc.mesh().vertices()[1].idx}, k));
     k.offset = Vec3(0.05, 0.0, -0.02);
     check_update(live, doc, doc.set_kgon_control({KgonKind::edge, doc.mesh().edges()[2].idx}, k));
     k.regularize = true;
@@ -107,9 +111,9 @@ TEST(ModelerLiveSurface, VertexMoveIsLocal) {
   Document doc(make_torus(30, 20));
   LiveSurface live;
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 2);
-  const UpdateStats s =
-      live.update(doc.mesh(), doc.kgon_options(),
-                  doc.move_vertices({Vertex(45)}, {doc.mesh().position(Vertex(45)) + Vec3(0, 0, 0.1)}));
+  const UpdateStats s = live.update(
+      doc.mesh(), doc.kgon_options(),
+      doc.move_vertices({Vertex(45)}, {doc.mesh().position(Vertex(45)) + Vec3(0, 0, 0.1)}));
   // A valence-4 vertex of a quad mesh: its 4 faces, their 9 vertices and 12 edges, plus the
   // faces around for normals: a few dozen corners out of 2400.
   EXPECT_LT(s.candidate_patches, 200);
@@ -121,7 +125,8 @@ TEST(ModelerLiveSurface, TopologyMethodAndResolutionChangesRebuildEverything) {
   Document doc(make_cube());
   LiveSurface live;
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 3);
-  const UpdateStats s = live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation("insert-edge 1@1 5@2"));
+  const UpdateStats s =
+      live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation("insert-edge 1@1 5@2"));
   EXPECT_TRUE(s.full);
   expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
   live.set_method(doc.mesh(), doc.kgon_options(), Method::asc);

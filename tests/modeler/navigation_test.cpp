@@ -1,7 +1,8 @@
 // Camera navigation and picking, without a window.
+#include "stitch/modeler/navigation.hpp"
+
 #include <gtest/gtest.h>
 
-#include "stitch/modeler/navigation.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace stitch::modeler {
@@ -16,7 +17,8 @@ BoundingBox cube_box() {
 
 TEST(ModelerNavigation, StandardViewsLookFromTheSameSidesAsTheRenderer) {
   // Tolerance 1e-9: the directions come from sines and cosines of exact angles.
-  for (View v : {View::front, View::back, View::left, View::right, View::top, View::bottom, View::iso}) {
+  for (View v :
+       {View::front, View::back, View::left, View::right, View::top, View::bottom, View::iso}) {
     SCOPED_TRACE(to_string(v));
     OrbitView o;
     o.set_standard(v, cube_box());

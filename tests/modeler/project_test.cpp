@@ -1,12 +1,13 @@
 // Project files: what is saved comes back, per-element K-gon controls stay on their elements
 // even when saving compacts the numbering, and bad files are refused with their name.
+#include "stitch/modeler/project.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
-#include "stitch/modeler/project.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
@@ -60,12 +61,15 @@ TEST(ModelerProject, ControlsFollowTheirElementsThroughCompaction) {
   p.state.kgons.face[4] = KgonControl{0.5, 0, Vec3::Zero(), false};
   const Project q = project_from_json(project_to_json(p), "test");
   // The same K-gons, built from both meshes, compared in live-element order.
-  const KgonSet a = build_kgons(p.state.mesh, p.state.kgons), b = build_kgons(q.state.mesh, q.state.kgons);
+  const KgonSet a = build_kgons(p.state.mesh, p.state.kgons),
+                b = build_kgons(q.state.mesh, q.state.kgons);
   const auto fa = p.state.mesh.faces(), fb = q.state.mesh.faces();
   ASSERT_EQ(fa.size(), fb.size());
-  for (size_t i = 0; i < fa.size(); ++i) EXPECT_EQ(a.face[fa[i].idx].points, b.face[fb[i].idx].points);
+  for (size_t i = 0; i < fa.size(); ++i)
+    EXPECT_EQ(a.face[fa[i].idx].points, b.face[fb[i].idx].points);
   const auto va = p.state.mesh.vertices(), vb = q.state.mesh.vertices();
-  for (size_t i = 0; i < va.size(); ++i) EXPECT_EQ(a.vertex[va[i].idx].points, b.vertex[vb[i].idx].points);
+  for (size_t i = 0; i < va.size(); ++i)
+    EXPECT_EQ(a.vertex[va[i].idx].points, b.vertex[vb[i].idx].points);
   double sum_a = 0, sum_b = 0;  // edges are renumbered: compare the sets through a checksum
   for (Edge e : p.state.mesh.edges()) sum_a += a.edge[e.idx].centroid.sum();
   for (Edge e : q.state.mesh.edges()) sum_b += b.edge[e.idx].centroid.sum();
@@ -102,7 +106,8 @@ TEST(ModelerProject, AutosavePaths) {
   const std::string doc = (dir.path() / "m.obj").string(), save = autosave_path(doc);
   EXPECT_FALSE(autosave_is_newer(save, doc));
   std::ofstream(doc) << "x";
-  std::filesystem::last_write_time(doc, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
+  std::filesystem::last_write_time(
+      doc, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
   std::ofstream(save) << "y";
   EXPECT_TRUE(autosave_is_newer(save, doc));
 }

@@ -1,9 +1,10 @@
 // The script language, run on a window-free session.
+#include "stitch/modeler/session.hpp"
+
 #include <gtest/gtest.h>
 
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
-#include "stitch/modeler/session.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
@@ -18,13 +19,13 @@ TEST(ModelerSession, ScriptBuildsTheCubeWithAHoleAndUndoes) {
   ScriptHooks hooks;
   hooks.print = [&](const std::string& t) { printed.push_back(t); };
   bool quit = false;
-  const auto error = run_script(s,
-                                {"open " + test::example_path("cube.obj"), "# a comment",
-                                 "insert-edge 1@1 5@2   # the vertical bridge", "method asc",
-                                 "mode zebra", "view front", "save " + dir.file("hole.obj"), "undo",
-                                 "save " + dir.file("undone.obj"), "redo", "info", "quit",
-                                 "this line is not reached"},
-                                hooks, &quit);
+  const auto error = run_script(
+      s,
+      {"open " + test::example_path("cube.obj"), "# a comment",
+       "insert-edge 1@1 5@2   # the vertical bridge", "method asc", "mode zebra", "view front",
+       "save " + dir.file("hole.obj"), "undo", "save " + dir.file("undone.obj"), "redo", "info",
+       "quit", "this line is not reached"},
+      hooks, &quit);
   ASSERT_FALSE(error) << error->line << ": " << error->message;
   EXPECT_TRUE(quit);
   const HalfedgeMesh hole = read_mesh(dir.file("hole.obj"), {false, true});
@@ -48,9 +49,10 @@ TEST(ModelerSession, ErrorsNameTheLineAndLeaveTheSessionUnchanged) {
   EXPECT_EQ(error->line, 3);
   EXPECT_NE(error->message.find("vertex"), std::string::npos);
   EXPECT_TRUE(s.document.mesh() == before);
-  for (const char* bad : {"method xyz", "mode glossy", "resolution 0", "view sideways", "frobnicate",
-                          "select face 99", "kgon scale big", "undo", "screenshot a.png", "save",
-                          "overlay mesh maybe", "open /nonexistent.obj"}) {
+  for (const char* bad :
+       {"method xyz", "mode glossy", "resolution 0", "view sideways", "frobnicate",
+        "select face 99", "kgon scale big", "undo", "screenshot a.png", "save",
+        "overlay mesh maybe", "open /nonexistent.obj"}) {
     SCOPED_TRACE(bad);
     error = run_script(s, {bad}, {});
     ASSERT_TRUE(error);
@@ -79,8 +81,9 @@ TEST(ModelerSession, SelectionDrivesKgonEdits) {
   ASSERT_FALSE(run_script(s, {"select face 3", "kgon scale 0.5", "kgon rotate 20"}, {}));
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).scale, 0.5);
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).rotate_deg, 20.0);
-  ASSERT_FALSE(run_script(s, {"select edge 1 2", "kgon offset 0 0 0.1", "select corner 7@2",
-                              "kgon regularize on", "select none", "kgon scale 0.8"},
+  ASSERT_FALSE(run_script(s,
+                          {"select edge 1 2", "kgon offset 0 0 0.1", "select corner 7@2",
+                           "kgon regularize on", "select none", "kgon scale 0.8"},
                           {}));
   EXPECT_EQ(s.document.kgon_options().edge.size(), 1u);
   EXPECT_TRUE(s.document.kgon_control({KgonKind::face, 1}).regularize);  // corner 7@2 -> face 2
@@ -88,7 +91,8 @@ TEST(ModelerSession, SelectionDrivesKgonEdits) {
   // Every K-gon edit is one undo step, and the surface follows.
   for (int i = 0; i < 5; ++i) ASSERT_FALSE(run_script(s, {"undo"}, {}));
   EXPECT_TRUE(s.document.kgon_options().face.empty());
-  EXPECT_TRUE(s.surface.nets() == build_control_nets(s.document.mesh(), build_kgons(s.document.mesh())));
+  EXPECT_TRUE(s.surface.nets() ==
+              build_control_nets(s.document.mesh(), build_kgons(s.document.mesh())));
 }
 
 TEST(ModelerSession, VertexMovesAreLocalAndUndoable) {
@@ -104,8 +108,9 @@ TEST(ModelerSession, VertexMovesAreLocalAndUndoable) {
 TEST(ModelerSession, ProjectsKeepKgonsViewAndDisplay) {
   stitch::testing::TempFolder dir;
   Session s(make_cube());
-  ASSERT_FALSE(run_script(s, {"select vertex 3", "kgon scale 0.6", "method cc", "overlay kgons on",
-                              "split asc", "view top", "save " + dir.file("p.stitch")},
+  ASSERT_FALSE(run_script(s,
+                          {"select vertex 3", "kgon scale 0.6", "method cc", "overlay kgons on",
+                           "split asc", "view top", "save " + dir.file("p.stitch")},
                           {}));
   Session t;
   ASSERT_FALSE(run_script(t, {"open " + dir.file("p.stitch")}, {}));

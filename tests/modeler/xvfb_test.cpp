@@ -18,7 +18,9 @@
 namespace stitch::modeler {
 namespace {
 
-bool have_xvfb_run() { return std::system("command -v xvfb-run > /dev/null 2>&1") == 0; }
+bool have_xvfb_run() {
+  return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
+}
 
 /// Runs the modeler under a fresh virtual X server; returns its exit status.
 int run_modeler(const std::string& args, const std::string& log) {
@@ -78,31 +80,53 @@ double differing(const Png& a, const Png& b) {
 }
 
 TEST(ModelerXvfb, ScriptedSessionBuildsTheCubeWithAHole) {
-  if (!have_xvfb_run()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
+  if (!have_xvfb_run())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
   stitch::testing::TempFolder dir;
-  const std::string script = dir.write("session.txt",
-      "open " + test::example_path("cube.obj") + "\n"
-      "view iso\n"
-      "save " + dir.file("before.obj") + "\n"
-      "screenshot " + dir.file("cube.png") + "\n"
-      "insert-edge 1@1 5@2   # the vertical bridge: a hole through the cube\n"
-      "save " + dir.file("hole.obj") + "\n"
-      "screenshot " + dir.file("hole.png") + "\n"
-      "mode zebra\n"
-      "screenshot " + dir.file("zebra.png") + "\n"
-      "method asc\n"
-      "screenshot " + dir.file("zebra_asc.png") + "\n"
-      "split mdc\n"
-      "screenshot " + dir.file("split.png") + "\n"
-      "split off\n"
-      "method mdc\n"
-      "mode shaded\n"
-      "undo\n"
-      "save " + dir.file("undone.obj") + "\n"
-      "screenshot " + dir.file("undone.png") + "\n"
-      "redo\n"
-      "save " + dir.file("redone.stitch") + "\n"
-      "quit\n");
+  const std::string script = dir.write(
+      "session.txt", "open " + test::example_path("cube.obj") +
+                         "\n"
+                         "view iso\n"
+                         "save " +
+                         dir.file("before.obj") +
+                         "\n"
+                         "screenshot " +
+                         dir.file("cube.png") +
+                         "\n"
+                         "insert-edge 1@1 5@2   # the vertical bridge: a hole through the cube\n"
+                         "save " +
+                         dir.file("hole.obj") +
+                         "\n"
+                         "screenshot " +
+                         dir.file("hole.png") +
+                         "\n"
+                         "mode zebra\n"
+                         "screenshot " +
+                         dir.file("zebra.png") +
+                         "\n"
+                         "method asc\n"
+                         "screenshot " +
+                         dir.file("zebra_asc.png") +
+                         "\n"
+                         "split mdc\n"
+                         "screenshot " +
+                         dir.file("split.png") +
+                         "\n"
+                         "split off\n"
+                         "method mdc\n"
+                         "mode shaded\n"
+                         "undo\n"
+                         "save " +
+                         dir.file("undone.obj") +
+                         "\n"
+                         "screenshot " +
+                         dir.file("undone.png") +
+                         "\n"
+                         "redo\n"
+                         "save " +
+                         dir.file("redone.stitch") +
+                         "\n"
+                         "quit\n");
   const std::string log = dir.file("log.txt");
   ASSERT_EQ(run_modeler("--size 800x600 --script " + script, log), 0) << read_text(log);
 
@@ -119,7 +143,8 @@ TEST(ModelerXvfb, ScriptedSessionBuildsTheCubeWithAHole) {
   EXPECT_EQ(topology_stats(load_project(dir.file("redone.stitch")).state.mesh).genus, 1);
 
   const Png cube = load_png(dir.file("cube.png")), with_hole = load_png(dir.file("hole.png")),
-            zebra = load_png(dir.file("zebra.png")), zebra_asc = load_png(dir.file("zebra_asc.png")),
+            zebra = load_png(dir.file("zebra.png")),
+            zebra_asc = load_png(dir.file("zebra_asc.png")),
             split = load_png(dir.file("split.png")), undone = load_png(dir.file("undone.png"));
   for (const Png* p : {&cube, &with_hole, &zebra, &zebra_asc, &split, &undone}) {
     ASSERT_EQ(p->width, 800);
@@ -135,7 +160,8 @@ TEST(ModelerXvfb, ScriptedSessionBuildsTheCubeWithAHole) {
 }
 
 TEST(ModelerXvfb, ScriptErrorsGiveTheLineAndStatus2) {
-  if (!have_xvfb_run()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
+  if (!have_xvfb_run())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
   stitch::testing::TempFolder dir;
   const std::string script = dir.write("bad.txt", "view iso\ninsert-edge 1@1 1@3\nquit\n");
   const std::string log = dir.file("log.txt");
@@ -144,11 +170,13 @@ TEST(ModelerXvfb, ScriptErrorsGiveTheLineAndStatus2) {
 }
 
 TEST(ModelerXvfb, ScreenshotExitAndRecover) {
-  if (!have_xvfb_run()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
+  if (!have_xvfb_run())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
   stitch::testing::TempFolder dir;
   // A document with a newer autosave holding unsaved work (the cube with a hole).
   const std::string doc = dir.write("cube.obj", read_text(test::example_path("cube.obj")));
-  std::filesystem::last_write_time(doc, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
+  std::filesystem::last_write_time(
+      doc, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
   Project unsaved;
   unsaved.state.mesh = read_mesh(test::example_path("cube_hole.obj"), {false, true});
   unsaved.view.set_standard(View::iso, BoundingBox{Vec3::Constant(-1), Vec3::Constant(1)});
@@ -156,7 +184,10 @@ TEST(ModelerXvfb, ScreenshotExitAndRecover) {
 
   // Without --recover: the document, a note about the autosave, a screenshot, exit.
   const std::string log = dir.file("log.txt");
-  ASSERT_EQ(run_modeler("'" + doc + "' --size 640x480 --screenshot '" + dir.file("shot.png") + "' --exit", log), 0)
+  ASSERT_EQ(
+      run_modeler("'" + doc + "' --size 640x480 --screenshot '" + dir.file("shot.png") + "' --exit",
+                  log),
+      0)
       << read_text(log);
   EXPECT_NE(read_text(log).find("--recover"), std::string::npos) << read_text(log);
   const Png shot = load_png(dir.file("shot.png"));

@@ -91,7 +91,8 @@ TEST(CliRender, ZebraOfAscDiffersFromMdcAtACubeCorner) {
         << read_file(folder.file("stderr.txt"));
     return load_png(out);
   };
-  const Image asc = zebra("--method asc --resolution 16"), mdc = zebra("--method mdc --resolution 16");
+  const Image asc = zebra("--method asc --resolution 16"),
+              mdc = zebra("--method mdc --resolution 16");
   // The control: the same mdc surface tessellated twice as finely. Its difference is what
   // sampling and antialiasing alone change; the asc/mdc difference (stripes shifted where
   // the AS&C normal jumps) must stand well above it.

@@ -2,6 +2,7 @@ set terminal pngcairo size 720,480 font 'sans,10'
 set output '.jump_by_distance.png.tmp'
 set logscale xy
 set format y '10^{%L}'
+set yrange [1e-13:*]
 set grid
 set key bottom right
 set xlabel 'distance from the extraordinary point along the boundary (parameter t)'

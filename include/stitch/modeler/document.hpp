@@ -65,8 +65,7 @@ class Document {
                        bool merge = false);
   /// Sets the control of one element's K-gon (or the global one). Throws MeshError for an
   /// element that does not exist.
-  Change set_kgon_control(const KgonTarget& target, const KgonControl& control,
-                          bool merge = false);
+  Change set_kgon_control(const KgonTarget& target, const KgonControl& control, bool merge = false);
   /// The control in effect for the target (the element's own, else the default).
   [[nodiscard]] KgonControl kgon_control(const KgonTarget& target) const;
 

@@ -1,16 +1,23 @@
 // The smooth surface of the document, kept up to date incrementally.
 //
-// After a vertex move or a K-gon edit only the K-gons that can depend on the change are rebuilt
-// (update_kgons), then the control nets of the corners that use those K-gons; a patch is
-// re-tessellated only when its net actually changed. The tessellation is unwelded, one
-// contiguous vertex block per patch in corner order (exactly tessellate(..., welded = false)),
-// so the renderer can re-upload just the changed blocks.
+// After an edit only the K-gons that can depend on it are rebuilt (update_kgons), then the
+// control nets of the corners that use those K-gons; a patch is re-evaluated only when its net
+// actually changed.
 //
-// What is rebuilt in full (documented in docs/modeler.md): a topology edit (the operators
-// renumber elements, so every array is rebuilt), a change of the global K-gon control (it
-// reaches every extraordinary K-gon; nets are still compared so only changed patches are
-// re-tessellated), a change of resolution, and everything for the Catmull-Clark method, whose
-// OpenSubdiv limit surface is built for the whole mesh.
+// Layout: the tessellation is unwelded with one vertex block per patch *slot*, and slot = the
+// corner's half-edge index, so the blocks of untouched patches stay where they are when a
+// topology edit adds or removes elements (the operators keep the numbers of untouched elements).
+// A slot whose half-edge is deleted keeps its place with degenerate quads (nothing is drawn) and
+// patch = -1. The live blocks, in corner order, are exactly tessellate(..., welded = false).
+// The renderer can re-upload just the changed blocks; after a topology edit the vertex count may
+// change, so the caller uploads the whole buffer then (still without re-evaluating anything).
+//
+// A topology edit is handled by comparing the mesh with the previous one element by element
+// (cheap integer comparisons): changed or new half-edges, vertices and faces seed the same local
+// update as a vertex move. Rebuilt in full (documented in docs/modeler.md): a change of the
+// global K-gon control (it reaches every extraordinary K-gon; nets are still compared so only
+// changed patches are re-evaluated), method and resolution changes, and every change for the
+// Catmull-Clark method, whose OpenSubdiv limit surface is built for the whole mesh.
 #pragma once
 
 #include <memory>
@@ -22,23 +29,23 @@
 
 namespace stitch::modeler {
 
-/// The elements whose K-gons can change when `change` is applied (geometry or kgons kinds), and
-/// the corners whose nets use one of them: a superset of what really changes.
+/// Elements whose K-gons can change, and the corners whose nets use one of them: a superset of
+/// what really changes.
 struct AffectedSet {
-  std::vector<Face> faces;  ///< also: the faces whose corner points must be recomputed
+  std::vector<Face> faces;  ///< their corner points are recomputed too
   std::vector<Vertex> vertices;
   std::vector<Edge> edges;
   std::vector<Corner> corners;
 };
-/// The faces listed first are those whose corner points move (the faces around moved vertices,
-/// or none for a K-gon edit); the rest only need their K-gons rebuilt.
+/// For a geometry change: around the moved vertices; for a K-gon change: the edited elements.
 AffectedSet affected_by(const HalfedgeMesh& mesh, const Change& change);
 
 struct UpdateStats {
-  bool full = false;               ///< everything was rebuilt
-  int candidate_patches = 0;       ///< nets rebuilt and compared
-  int recomputed_patches = 0;      ///< patches re-tessellated
-  double milliseconds = 0.0;       ///< wall time of the update
+  bool full = false;           ///< everything was re-evaluated
+  bool layout_changed = false;  ///< slots were added, removed, revived or killed: upload all
+  int candidate_patches = 0;   ///< nets rebuilt and compared
+  int recomputed_patches = 0;  ///< patches re-evaluated
+  double milliseconds = 0.0;   ///< wall time of the update
 };
 
 class LiveSurface {
@@ -47,8 +54,8 @@ class LiveSurface {
   /// Builds everything from scratch.
   UpdateStats rebuild(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
                       int resolution);
-  /// Brings the surface up to date with `mesh` and `options` after `change`. The functions
-  /// that can fail (cc on a mesh OpenSubdiv refuses) throw MeshError before changing anything.
+  /// Brings the surface up to date with `mesh` and `options` after `change`. The functions that
+  /// can fail (cc on a mesh OpenSubdiv refuses) throw MeshError before changing anything.
   UpdateStats update(const HalfedgeMesh& mesh, const KgonOptions& options, const Change& change);
   UpdateStats set_method(const HalfedgeMesh& mesh, const KgonOptions& options, Method method);
   UpdateStats set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options, int resolution);
@@ -58,29 +65,33 @@ class LiveSurface {
   [[nodiscard]] const KgonSet& kgons() const { return kgons_; }
   /// Indexed by corner (half-edge); empty nets for deleted half-edges.
   [[nodiscard]] const std::vector<ControlNet>& nets() const { return nets_; }
-  /// The live corners in index order: patch k of the tessellation is corners()[k].
+  /// The live corners in index order.
   [[nodiscard]] const std::vector<Corner>& corners() const { return corners_; }
+  /// One block per half-edge slot (see above).
   [[nodiscard]] const SurfaceMesh& tessellation() const { return tess_; }
-  /// The corners whose patches the last update re-tessellated, in increasing order (every
+  /// The corners whose patches the last update re-evaluated, in increasing order (every live
   /// corner after a full rebuild).
   [[nodiscard]] const std::vector<Corner>& recomputed() const { return recomputed_; }
-  /// The vertex block of patch k: [k * vertices_per_patch(), (k + 1) * vertices_per_patch()).
+  /// Corner c's block is [c.idx * vertices_per_patch(), (c.idx + 1) * vertices_per_patch()),
+  /// its quads [c.idx * quads_per_patch(), ...).
   [[nodiscard]] int vertices_per_patch() const { return (resolution_ + 1) * (resolution_ + 1); }
-  /// Index of corner c's patch in corners(), or -1.
-  [[nodiscard]] int patch_index(Corner c) const { return c.idx < int(slot_.size()) ? slot_[c.idx] : -1; }
+  [[nodiscard]] int quads_per_patch() const { return resolution_ * resolution_; }
 
  private:
-  /// Evaluates the listed patches (indices into corners_) into their vertex blocks; `cc` is
-  /// the Catmull-Clark surface when that is the method.
-  void tessellate_patches(const std::vector<int>& patches, const Surface* cc);
-  void layout(const HalfedgeMesh& mesh);
+  /// Evaluates the listed corners' patches into their blocks; `cc` is the Catmull-Clark surface
+  /// when that is the method.
+  void evaluate(const std::vector<Corner>& patches, const Surface* cc);
+  /// Sizes the blocks to the mesh's half-edge capacity and sets uv, patch and quads of every
+  /// slot whose liveness differs from `was_live` (all of them when `was_live` is empty).
+  bool layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_live);
+  UpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options);
 
   Method method_ = Method::mdc;
   int resolution_ = 8;
+  HalfedgeMesh mesh_;  ///< the mesh of the last update, to find what a topology edit changed
   KgonSet kgons_;
   std::vector<ControlNet> nets_;
   std::vector<Corner> corners_;
-  std::vector<int> slot_;
   SurfaceMesh tess_;
   std::vector<Corner> recomputed_;
 };

@@ -20,8 +20,15 @@ struct SceneGeometry {
   BoundingBox bounds;  ///< of the surface and the input mesh
 };
 
-/// Tessellates `surface` at `resolution` segments per patch side and builds every overlay.
-SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution);
+/// Which overlays build_scene makes (indexed by Overlay); the others stay empty, which saves
+/// time and memory on large meshes (the tessellation's lines are 4 segments per quad).
+using OverlaySelection = std::array<bool, num_overlays>;
+inline constexpr OverlaySelection all_overlays{true, true, true, true};
+
+/// Tessellates `surface` at `resolution` segments per patch side (unwelded) and builds the
+/// selected overlays, the input polygons and the extraordinary points.
+SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                          const OverlaySelection& overlays = all_overlays);
 
 /// Uploads the scene: the smooth surface, or the input polygons when `input_polygons`.
 void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_polygons = false);

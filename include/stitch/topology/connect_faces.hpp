@@ -15,9 +15,10 @@ struct ConnectFacesResult {
 /// loop order), corner f_i is joined to corner g_{(twist - i) mod k}; twist turns the tube.
 /// Faces on one component: genus + 1; on two components: they join. E + k, F + k - 2.
 /// Numbering: the first new edge (f_0 - g_twist) merges f and g into the smaller of their
-/// numbers; each further edge i = 1..k-1 cuts one quad off it as a new face, and the last
-/// remaining quad keeps the smaller number. Refused: f == g, different degrees, or a pair of
-/// corners to be joined at the same vertex (the edge would be a loop).
+/// numbers (the larger is removed); each further edge i = 1..k-1 splits that face (insert_edge's
+/// rule: the part holding its first corner keeps the number, the other gets the next one), so
+/// the k quads carry the smaller number and k-1 new ones. Refused: f == g, different degrees, or
+/// a pair of corners to be joined at the same vertex (the edge would be a loop).
 ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist = 0);
 
 }  // namespace stitch
