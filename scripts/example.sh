@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/build.sh
+bash scripts/build.sh stitch-cli
 mkdir -p out
 build/bin/stitch info examples/cube_hole.obj
 build/bin/stitch smooth examples/cube_hole.obj -o out/cube_hole_smooth.obj --resolution 8

@@ -117,9 +117,10 @@ bool LiveSurface::layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_
     auto* q = &tess_.quads[static_cast<size_t>(h) * per_quads];
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
-        *q++ = live ? std::array<int, 4>{base + i * (n + 1) + j, base + (i + 1) * (n + 1) + j,
-                                         base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1}
-                    : std::array<int, 4>{base, base, base, base};
+        *q++ =
+            live ? std::array<int, 4>{base + i * (n + 1) + j, base + (i + 1) * (n + 1) + j,
+                                      base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1}
+                 : std::array<int, 4>{base, base, base, base};
   }
   return changed;
 }
@@ -216,7 +217,8 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
     if (was_live[i] && m.is_deleted(Halfedge(i))) {
       nets_[i] = ControlNet{};
       kgons_.corner_point[i] = Vec3::Zero();
-      kgons_.in_face[i] = kgons_.in_vertex[i] = kgons_.in_next_edge[i] = kgons_.in_prev_edge[i] = -1;
+      kgons_.in_face[i] = kgons_.in_vertex[i] = kgons_.in_next_edge[i] = kgons_.in_prev_edge[i] =
+          -1;
       if (i % 2 == 0) kgons_.edge[i / 2] = Kgon{};
     }
   for (int v = 0; v < std::min(old.vertex_capacity(), m.vertex_capacity()); ++v)

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -24,26 +25,47 @@ void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh,
   t.welded = false;
   const SurfaceMesh expected = tessellate(mesh, fresh, t);
   const SurfaceMesh& got = live.tessellation();
-  ASSERT_EQ(got.num_vertices(), expected.num_vertices());
-  EXPECT_TRUE(got.positions == expected.positions);
-  EXPECT_TRUE(got.normals == expected.normals);
-  EXPECT_TRUE(got.uv == expected.uv);
-  EXPECT_TRUE(got.patch == expected.patch);
-  EXPECT_TRUE(got.level == expected.level);
-  EXPECT_TRUE(got.quads == expected.quads);
+  // Live corner k's block in `expected` is corner c's slot in `got` (blocks indexed by corner).
+  const int per = live.vertices_per_patch(), per_quads = live.quads_per_patch();
+  const auto corners = mesh.halfedges();
+  ASSERT_EQ(expected.num_vertices(), static_cast<int>(corners.size()) * per);
+  ASSERT_EQ(got.num_vertices(), mesh.halfedge_capacity() * per);
+  ASSERT_EQ(live.corners(), corners);
+  int mismatches = 0;
+  for (size_t k = 0; k < corners.size(); ++k) {
+    const int a = static_cast<int>(k) * per, b = corners[k].idx * per;
+    for (int s = 0; s < per; ++s) {
+      const bool same =
+          got.positions[b + s] == expected.positions[a + s] &&
+          got.normals[b + s] == expected.normals[a + s] && got.uv[b + s] == expected.uv[a + s] &&
+          got.patch[b + s] == expected.patch[a + s] && got.level[b + s] == expected.level[a + s];
+      mismatches += same ? 0 : 1;
+    }
+    for (int q = 0; q < per_quads; ++q)
+      for (int i = 0; i < 4; ++i)
+        mismatches += got.quads[corners[k].idx * per_quads + q][i] - b ==
+                              expected.quads[k * per_quads + q][i] - a
+                          ? 0
+                          : 1;
+  }
+  EXPECT_EQ(mismatches, 0);
   EXPECT_TRUE(live.nets() == fresh.bezier().nets);
 }
 
-/// Applies `change` (already made to doc) and checks that the recomputed set is exactly the set
-/// of corners whose nets differ between before and a from-scratch rebuild after.
+/// Applies `change` (already made to doc) and checks that the recomputed set is exactly the
+/// set of live corners whose nets differ between before and a from-scratch rebuild after (a
+/// corner without a live patch before counts as changed).
 void check_update(LiveSurface& live, const Document& doc, const Change& change) {
   const std::vector<ControlNet> before = live.nets();
+  const std::vector<Corner> live_before = live.corners();
   const UpdateStats stats = live.update(doc.mesh(), doc.kgon_options(), change);
   const std::vector<ControlNet> fresh =
       build_control_nets(doc.mesh(), build_kgons(doc.mesh(), doc.kgon_options()));
   std::vector<Corner> changed;
-  for (Corner c : doc.mesh().halfedges())
-    if (before[c.idx] != fresh[c.idx]) changed.push_back(c);
+  for (Corner c : doc.mesh().halfedges()) {
+    const bool existed = std::binary_search(live_before.begin(), live_before.end(), c);
+    if (!existed || before[c.idx] != fresh[c.idx]) changed.push_back(c);
+  }
   if (live.method() != Method::cc) {
     EXPECT_EQ(live.recomputed(), changed);
     EXPECT_EQ(stats.recomputed_patches, static_cast<int>(changed.size()));
@@ -121,14 +143,54 @@ TEST(ModelerLiveSurface, VertexMoveIsLocal) {
   EXPECT_LE(s.recomputed_patches, s.candidate_patches);
 }
 
-TEST(ModelerLiveSurface, TopologyMethodAndResolutionChangesRebuildEverything) {
+TEST(ModelerLiveSurface, TopologyEditsRecomputeExactlyTheChangedPatches) {
+  const std::vector<std::string> ops{
+      "insert-edge 1@1 5@2", "subdivide-edge 2 3",  "collapse-edge 3 9", "extrude-face 3 0.4",
+      "delete-edge 1 5@1",   "insert-edge 6@3 8@3", "delete-face 4",     "connect-faces 3 5"};
+  for (Method method : {Method::mdc, Method::asc}) {
+    SCOPED_TRACE(to_string(method));
+    Document doc(make_cube());
+    LiveSurface live;
+    live.rebuild(doc.mesh(), doc.kgon_options(), method, 2);
+    int applied = 0;
+    for (const std::string& op : ops) {
+      SCOPED_TRACE(op);
+      Change c;
+      try {
+        c = doc.apply_operation(op);
+      } catch (const MeshError&) {
+        continue;  // refused on this mesh: nothing changed
+      }
+      ++applied;
+      check_update(live, doc, c);
+      if (live.recomputed().size() < live.corners().size()) continue;
+      ADD_FAILURE() << "a local topology edit re-evaluated every patch";
+    }
+    EXPECT_GE(applied, 5);
+    for (int i = 0; i < applied; ++i) check_update(live, doc, doc.undo());
+    EXPECT_TRUE(doc.mesh() == make_cube());
+    check_update(live, doc, doc.apply_operation("catmull-clark"));  // renumbers everything
+    check_update(live, doc, doc.undo());
+  }
+}
+
+TEST(ModelerLiveSurface, InsertEdgeIsLocal) {
+  Document doc(make_torus(30, 20));
+  LiveSurface live;
+  live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 2);
+  const UpdateStats s =
+      live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation("insert-edge 1@1 22@1"));
+  EXPECT_FALSE(s.full);
+  EXPECT_TRUE(s.layout_changed);  // two new corners
+  EXPECT_LT(s.recomputed_patches, 100);
+  expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
+}
+
+TEST(ModelerLiveSurface, MethodAndResolutionChangesRebuildEverything) {
   Document doc(make_cube());
   LiveSurface live;
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 3);
-  const UpdateStats s =
-      live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation("insert-edge 1@1 5@2"));
-  EXPECT_TRUE(s.full);
-  expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
+  check_update(live, doc, doc.apply_operation("insert-edge 1@1 5@2"));
   live.set_method(doc.mesh(), doc.kgon_options(), Method::asc);
   expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
   live.set_resolution(doc.mesh(), doc.kgon_options(), 5);
@@ -139,8 +201,8 @@ TEST(ModelerLiveSurface, TopologyMethodAndResolutionChangesRebuildEverything) {
   EXPECT_THROW(live.set_method(doc.mesh(), doc.kgon_options(), Method::cc), MeshError);
   EXPECT_EQ(live.method(), Method::asc);
   expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
-  live.update(doc.mesh(), doc.kgon_options(), doc.undo());  // the move
-  live.update(doc.mesh(), doc.kgon_options(), doc.undo());  // the bridge
+  check_update(live, doc, doc.undo());  // the move
+  check_update(live, doc, doc.undo());  // the bridge
   live.set_method(doc.mesh(), doc.kgon_options(), Method::cc);
   expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
   check_update(live, doc, doc.move_vertices({Vertex(3)}, {Vec3(-1.2, 1.1, -1.0)}));

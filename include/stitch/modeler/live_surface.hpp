@@ -41,11 +41,11 @@ struct AffectedSet {
 AffectedSet affected_by(const HalfedgeMesh& mesh, const Change& change);
 
 struct UpdateStats {
-  bool full = false;           ///< everything was re-evaluated
+  bool full = false;            ///< everything was re-evaluated
   bool layout_changed = false;  ///< slots were added, removed, revived or killed: upload all
-  int candidate_patches = 0;   ///< nets rebuilt and compared
-  int recomputed_patches = 0;  ///< patches re-evaluated
-  double milliseconds = 0.0;   ///< wall time of the update
+  int candidate_patches = 0;    ///< nets rebuilt and compared
+  int recomputed_patches = 0;   ///< patches re-evaluated
+  double milliseconds = 0.0;    ///< wall time of the update
 };
 
 class LiveSurface {
