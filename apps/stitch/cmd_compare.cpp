@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -69,7 +70,17 @@ int run_program(const std::vector<std::string>& argv) {
 
 /// The plot of the largest jump against distance, by gnuplot. Returns "" on success, else
 /// why there is no plot.
-std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>& reports) {
+std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>& all_reports) {
+  // Only methods with samples near an extraordinary point have a curve (gnuplot refuses
+  // empty data blocks).
+  std::vector<ContinuityReport> reports;
+  for (const ContinuityReport& r : all_reports) {
+    if (!r.jump_by_distance.empty()) reports.push_back(r);
+  }
+  if (reports.empty()) {
+    return "the mesh has no extraordinary point, so there is no jump against distance from "
+           "one to plot";
+  }
   const fs::path data = dir / "jump_by_distance.dat";
   const fs::path script = dir / "jump_by_distance.gp";
   const fs::path png = dir / "jump_by_distance.png";
@@ -205,8 +216,12 @@ void write_index(const fs::path& dir, const std::string& input_path, const Compa
     } else {
       out << "<p><strong>No plot:</strong> " << html_escape(plot_problem) << "</p>\n";
     }
-    out << "<p>Data: <a href=\"jump_by_distance.dat\">jump_by_distance.dat</a>.</p>\n"
-           "</body></html>\n";
+    const bool has_data = std::any_of(reports.begin(), reports.end(),
+                                      [](const auto& r) { return !r.jump_by_distance.empty(); });
+    if (has_data) {
+      out << "<p>Data: <a href=\"jump_by_distance.dat\">jump_by_distance.dat</a>.</p>\n";
+    }
+    out << "</body></html>\n";
   });
 }
 

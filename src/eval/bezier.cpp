@@ -22,29 +22,37 @@ Basis cubic_basis(double t) {
 SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
   const Basis bu = cubic_basis(u), bv = cubic_basis(v);
   SurfacePoint sp;
-  Vec3 duu = Vec3::Zero(), duv = Vec3::Zero(), dvv = Vec3::Zero();
-  for (int a = 0; a < 4; ++a)
+  for (int a = 0; a < 4; ++a) {
+    Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();  // sums over b for this a
     for (int b = 0; b < 4; ++b) {
-      const Vec3& p = net.at(a, b);
-      sp.position += bu.b[a] * bv.b[b] * p;
-      sp.du += bu.d[a] * bv.b[b] * p;
-      sp.dv += bu.b[a] * bv.d[b] * p;
-      duu += bu.dd[a] * bv.b[b] * p;
-      duv += bu.d[a] * bv.d[b] * p;
-      dvv += bu.b[a] * bv.dd[b] * p;
+      row += bv.b[b] * net.at(a, b);
+      row_dv += bv.d[b] * net.at(a, b);
     }
-  double scale2 = 0;
-  for (const Vec3& p : net.p) scale2 = std::max(scale2, (p - net.p[0]).squaredNorm());
-  // Relative threshold: du x dv has the units of an area, so compare with the net's size squared.
-  const double tiny = 1e-24 * scale2;
+    sp.position += bu.b[a] * row;
+    sp.du += bu.d[a] * row;
+    sp.dv += bu.b[a] * row_dv;
+  }
+  // Relative threshold: du x dv has the units of an area, so compare with the net's size
+  // squared (its diagonals bound it well enough for telling "zero" from "not zero").
+  const double size2 = std::max((net.at(3, 3) - net.at(0, 0)).squaredNorm(),
+                                (net.at(3, 0) - net.at(0, 3)).squaredNorm());
+  const double tiny = 1e-24 * size2 * size2;
   Vec3 n = sp.du.cross(sp.dv);
-  if (n.squaredNorm() <= tiny * scale2) {
+  if (n.squaredNorm() <= tiny) {
     // A degenerate point (a corner of a 2-gon): the normal is the limit along the diagonal
     // towards the patch centre, where du ~ t (duu + duv) and dv ~ t (duv + dvv).
+    Vec3 duu = Vec3::Zero(), duv = Vec3::Zero(), dvv = Vec3::Zero();
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const Vec3& p = net.at(a, b);
+        duu += bu.dd[a] * bv.b[b] * p;
+        duv += bu.d[a] * bv.d[b] * p;
+        dvv += bu.b[a] * bv.dd[b] * p;
+      }
     const double su = u < 0.5 ? 1.0 : -1.0, sv = v < 0.5 ? 1.0 : -1.0;
     n = (su * duu + sv * duv).cross(su * duv + sv * dvv);
   }
-  if (n.squaredNorm() <= tiny * scale2)
+  if (n.squaredNorm() <= tiny)
     n = (net.at(3, 3) - net.at(0, 0)).cross(net.at(0, 3) - net.at(3, 0));
   sp.normal = n.squaredNorm() > 0 ? n.normalized() : Vec3::UnitZ();
   return sp;

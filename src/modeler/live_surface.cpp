@@ -212,10 +212,12 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   resize_to(kgons_.face, m.face_capacity());
   resize_to(kgons_.vertex, m.vertex_capacity());
   resize_to(kgons_.edge, m.edge_capacity());
-  resize_to(nets_, nh);
+  ControlNet unused;
+  unused.p.fill(Vec3::Zero());
+  nets_.resize(static_cast<size_t>(nh), unused);
   for (int i = 0; i < old_nh && i < nh; ++i)
     if (was_live[i] && m.is_deleted(Halfedge(i))) {
-      nets_[i] = ControlNet{};
+      nets_[i].p.fill(Vec3::Zero());  // what's left of a removed corner: never read
       kgons_.corner_point[i] = Vec3::Zero();
       kgons_.in_face[i] = kgons_.in_vertex[i] = kgons_.in_next_edge[i] = kgons_.in_prev_edge[i] =
           -1;

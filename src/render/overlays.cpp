@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <stdexcept>
 
+#include "stitch/mesh/polygon.hpp"
+
 namespace stitch {
 
 void LineSet::add_loop(const std::vector<Vec3>& loop, const Colour& c) {
@@ -113,19 +115,11 @@ SurfaceMesh input_faces(const HalfedgeMesh& mesh) {
     return out.num_vertices() - 1;
   };
   for (const Face f : mesh.faces()) {
-    const auto loop = mesh.face_loop(f);
-    std::vector<Vec3> p;
-    Vec3 centre = Vec3::Zero();
-    for (const Halfedge h : loop) {
-      p.push_back(mesh.position(mesh.origin(h)));
-      centre += p.back();
-    }
-    centre /= static_cast<double>(p.size());
-    // Newell's normal: the area vector of a possibly non-planar loop.
-    Vec3 normal = Vec3::Zero();
-    for (size_t i = 0; i < p.size(); ++i) normal += p[i].cross(p[(i + 1) % p.size()]);
+    const std::vector<Vec3> p = face_points(mesh, f);
+    // Newell's normal: the area vector, meaningful for non-planar loops too.
+    Vec3 normal = newell_normal(p);
     normal = normal.norm() > 0 ? normal.normalized() : Vec3::UnitZ();
-    const int c = add_vertex(centre, normal, f.idx);
+    const int c = add_vertex(centroid(p), normal, f.idx);
     const int first = out.num_vertices();
     for (const Vec3& q : p) add_vertex(q, normal, f.idx);
     const int n = static_cast<int>(p.size());

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cstdint>
+
 namespace stitch {
 
 namespace {
@@ -57,60 +59,68 @@ SurfaceMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
   const int n = options.resolution;
   if (n < 1) throw MeshError("the resolution must be at least 1");
   const auto& corners = surface.corners();
-  const int per_patch = (n + 1) * (n + 1);
+  const size_t per_patch = static_cast<size_t>(n + 1) * (n + 1);
+  const size_t samples = corners.size() * per_patch;
 
-  // Every patch evaluates its own grid independently, in parallel.
-  std::vector<SurfacePoint> samples(corners.size() * per_patch);
-  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t k) {
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j)
-        samples[k * per_patch + i * (n + 1) + j] =
-            surface.evaluate(corners[k], static_cast<double>(i) / n, static_cast<double>(j) / n);
-  });
+  // Where every sample goes: its own slot (unwelded) or its mesh element's (welded), and
+  // whether it is the first sample to claim that slot (then it writes the slot's attributes).
+  std::vector<int> id(samples);
+  std::vector<std::uint8_t> first(samples, 1);
+  int slots = 0;
+  if (options.welded) {
+    WeldIndex weld(mesh, n);
+    for (size_t k = 0; k < corners.size(); ++k)
+      for (size_t s = 0; s < per_patch; ++s) {
+        const int before = slots;
+        id[k * per_patch + s] = weld.slot(corners[k], static_cast<int>(s) / (n + 1),
+                                          static_cast<int>(s) % (n + 1), slots);
+        first[k * per_patch + s] = slots > before;
+      }
+  } else {
+    for (size_t i = 0; i < samples; ++i) id[i] = static_cast<int>(i);
+    slots = static_cast<int>(samples);
+  }
 
   SurfaceMesh out;
-  auto push = [&](const SurfacePoint& sp, Corner c, int i, int j) {
-    out.positions.push_back(sp.position);
-    out.normals.push_back(sp.normal);
-    out.uv.emplace_back(static_cast<double>(i) / n, static_cast<double>(j) / n);
-    out.patch.push_back(c.idx);
-    out.level.push_back(sp.level);
-  };
-  std::vector<int> id(per_patch);
-  auto emit_quads = [&] {
+  out.positions.resize(slots);
+  out.normals.assign(slots, Vec3::Zero());
+  out.uv.resize(slots);
+  out.patch.resize(slots);
+  out.level.resize(slots);
+  // A shared sample's normal is the mean over the patches sharing it: each patch's normal is
+  // kept here and summed afterwards, in a fixed order, so the result does not depend on timing.
+  std::vector<Vec3> normal(options.welded ? samples : 0);
+
+  // Every patch evaluates its own grid independently, in parallel.
+  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t k) {
+    for (size_t s = 0; s < per_patch; ++s) {
+      const int i = static_cast<int>(s) / (n + 1), j = static_cast<int>(s) % (n + 1);
+      const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+      const SurfacePoint sp = surface.evaluate(corners[k], u, v);
+      const size_t at = k * per_patch + s;
+      if (options.welded) normal[at] = sp.normal;
+      if (!first[at]) continue;
+      const int slot = id[at];
+      out.positions[slot] = sp.position;
+      out.uv[slot] = Eigen::Vector2d(u, v);
+      out.patch[slot] = corners[k].idx;
+      out.level[slot] = sp.level;
+      if (!options.welded) out.normals[slot] = sp.normal;
+    }
+  });
+  if (options.welded) {
+    for (size_t at = 0; at < samples; ++at) out.normals[id[at]] += normal[at];
+    for (Vec3& nrm : out.normals) nrm.normalize();
+  }
+
+  out.quads.reserve(corners.size() * n * n);
+  for (size_t k = 0; k < corners.size(); ++k) {
+    const int* g = &id[k * per_patch];
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
-        out.quads.push_back({id[i * (n + 1) + j], id[(i + 1) * (n + 1) + j],
-                             id[(i + 1) * (n + 1) + j + 1], id[i * (n + 1) + j + 1]});
-  };
-
-  if (!options.welded) {
-    for (size_t k = 0; k < corners.size(); ++k) {
-      for (int s = 0; s < per_patch; ++s) {
-        id[s] = out.num_vertices();
-        push(samples[k * per_patch + s], corners[k], s / (n + 1), s % (n + 1));
-      }
-      emit_quads();
-    }
-    return out;
+        out.quads.push_back({g[i * (n + 1) + j], g[(i + 1) * (n + 1) + j],
+                             g[(i + 1) * (n + 1) + j + 1], g[i * (n + 1) + j + 1]});
   }
-
-  WeldIndex weld(mesh, n);
-  int next = 0;
-  for (size_t k = 0; k < corners.size(); ++k) {
-    for (int s = 0; s < per_patch; ++s) {
-      const int i = s / (n + 1), j = s % (n + 1);
-      const SurfacePoint& sp = samples[k * per_patch + s];
-      id[s] = weld.slot(corners[k], i, j, next);
-      if (id[s] == out.num_vertices()) {
-        push(sp, corners[k], i, j);
-      } else {
-        out.normals[id[s]] += sp.normal;  // normalized below: the mean of the patches' normals
-      }
-    }
-    emit_quads();
-  }
-  for (Vec3& nrm : out.normals) nrm.normalize();
   return out;
 }
 

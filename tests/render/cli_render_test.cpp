@@ -203,6 +203,19 @@ TEST(CliCompare, WithoutGnuplotSaysSoAndWritesTheRest) {
   EXPECT_NE(read_file(dir + "/index.html").find("gnuplot was not found"), std::string::npos);
 }
 
+TEST(CliCompare, OnATorusSaysThereIsNoExtraordinaryPoint) {
+  TempFolder folder;
+  const std::string dir = folder.file("cmp");
+  ASSERT_EQ(run_stitch(folder, "compare '" + std::string(STITCH_EXAMPLES_DIR) + "/torus.obj' -o '" +
+                                   dir + "' --size 32x32 --resolution 2"),
+            0)
+      << read_file(folder.file("stderr.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/zebra_whole.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/zebra_closeup.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/jump_by_distance.png"));
+  EXPECT_NE(read_file(dir + "/index.html").find("no extraordinary point"), std::string::npos);
+}
+
 TEST(CliCompare, RefusesAnOutputThatIsAFile) {
   TempFolder folder;
   const std::string file = folder.write("taken", "x");

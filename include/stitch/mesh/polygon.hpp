@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch {
