@@ -61,8 +61,8 @@ HalfedgeMesh make_quad_torus(int m, int n) {
 }
 
 // The same torus with the diagonal of every fourth quad inserted (a quarter of the quads become
-// two triangles): many extraordinary vertices (valence 5 and 6) and non-quad faces, where the
-// hierarchical evaluation of mdc and the irregular patches of Bfr do extra work.
+// two triangles): half of the vertices get valence 5, and two fifths of the faces are triangles,
+// where the hierarchical evaluation of mdc and the irregular patches of Bfr do extra work.
 HalfedgeMesh make_mixed_torus(int m, int n) {
   HalfedgeMesh mesh = stitch::make_torus(m, n);
   for (int i = 0; i < m; ++i) {

@@ -236,6 +236,36 @@ TEST(CatmullClark, EvaluatesConcurrently) {
   EXPECT_EQ(serial, parallel);
 }
 
+// Edits leave deleted elements behind and may move a face's start half-edge: cc numbers the live
+// elements densely for OpenSubdiv and maps each corner by its own position in its face, so the
+// same topology gives the same patches. Inserting and deleting a diagonal restores the cube's
+// topology with a deleted edge and face in the arrays; the patches equal the untouched cube's up
+// to round-off (1e-12 of the size: both evaluate the same Bfr surfaces, possibly with the face's
+// vertices rotated).
+TEST(CatmullClark, IgnoresDeletedElementsAndFaceStarts) {
+  const HalfedgeMesh cube = make_cube();
+  HalfedgeMesh edited = cube;
+  const Corner a = edited.halfedge(Face(0));
+  const InsertEdgeResult diagonal = insert_edge(edited, a, edited.next(edited.next(a)));
+  ASSERT_TRUE(diagonal.split);
+  delete_edge(edited, diagonal.edge);
+  ASSERT_TRUE(edited.has_garbage());
+  ASSERT_EQ(edited.num_faces(), cube.num_faces());
+  const CatmullClarkSurface before(cube), after(edited);
+  const double tol = 1e-12 * mesh_size(cube);
+  for (Corner c : cube.halfedges()) {
+    ASSERT_FALSE(edited.is_deleted(c));
+    for (double u : {0.0, 0.3, 1.0}) {
+      for (double v : {0.0, 0.6, 1.0}) {
+        EXPECT_LT((before.evaluate(c, u, v).position - after.evaluate(c, u, v).position).norm(),
+                  tol)
+            << "corner " << c.idx;
+      }
+    }
+  }
+  EXPECT_THROW((void)after.evaluate(HalfedgeMesh::halfedge(diagonal.edge, 0), 0.5, 0.5), MeshError);
+}
+
 // Inserting an edge between two opposite faces of a cube gives one 10-sided face whose loop runs
 // along the new edge twice; OpenSubdiv cannot represent that, so cc must refuse it cleanly.
 TEST(CatmullClark, RefusesAFaceThatRunsAlongAnEdgeTwice) {

@@ -116,3 +116,23 @@ TEST(CliAnalyze, ShowsThePapersClaimAsNumbers) {
 
 }  // namespace
 }  // namespace stitch
+
+namespace stitch {
+namespace {
+
+TEST(CliAnalyze, AllReportsAMethodThatRefusesTheMeshAndGoesOn) {
+  testing::TempFolder folder;
+  const std::string in = test::example_path("cube_hole.obj");
+  auto r = testing::stitch_cli(folder, "analyze '" + in + "' --method all --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["methods"].size(), 3u);
+  EXPECT_EQ(j["methods"][2]["method"], "cc");
+  EXPECT_NE(j["methods"][2]["refused"].get<std::string>().find("twice"), std::string::npos);
+  // Asked for alone, the refusal is an error.
+  r = testing::stitch_cli(folder, "analyze '" + in + "' --method cc");
+  EXPECT_EQ(r.status, 2);
+}
+
+}  // namespace
+}  // namespace stitch

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.hpp"
 #include "options.hpp"
@@ -57,8 +58,20 @@ void run_analyze(const AnalyzeArgs& a) {
         "G1 at EVs: spread");
   for (Method m : methods) {
     stage.begin("analyzing " + to_string(m));
-    const Surface surface(mesh, m, to_kgon_options(a.kgon));
-    const ContinuityReport r = analyze_continuity(mesh, surface, opt);
+    std::optional<Surface> surface;
+    try {
+      surface.emplace(mesh, m, to_kgon_options(a.kgon));
+    } catch (const MeshError& e) {
+      // With --method all, a method that cannot take this mesh is reported, not fatal.
+      if (methods.size() == 1) throw;
+      stage.end();
+      if (a.json)
+        out["methods"].push_back({{"method", to_string(m)}, {"refused", e.what()}});
+      else
+        fmt::print("{:<6} refused: {}\n", to_string(m), e.what());
+      continue;
+    }
+    const ContinuityReport r = analyze_continuity(mesh, *surface, opt);
     stage.end();
     if (a.json) {
       out["methods"].push_back(to_json(r));

@@ -64,16 +64,20 @@ Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
     : state_{std::move(mesh), std::move(kgons)} {}
 
 Change Document::apply_operation(std::string_view line, OperationReport* report) {
-  DocumentState after = state_;
-  OperationReport r = stitch::apply_operation(after.mesh, line);  // throws with state_ untouched
+  DocumentState before = state_;
+  OperationReport r;
+  try {
+    r = stitch::apply_operation(state_.mesh, line);
+  } catch (...) {
+    state_ = std::move(before);  // the library promises no change; make sure of it
+    throw;
+  }
   if (report) *report = r;
   if (r.what.empty()) return {};
-  prune_kgon_controls(after.mesh, after.kgons, is_remeshing(line));
+  prune_kgon_controls(state_.mesh, state_.kgons, is_remeshing(line));
   std::string label(line);
   label.erase(0, label.find_first_not_of(" \t"));
-  Command command{std::move(label), Snapshot{state_, std::move(after)}};
-  state_ = std::get<Snapshot>(command.edit).after;
-  record(std::move(command));
+  record(Command{std::move(label), Snapshot{std::move(before), state_}});
   Change c;
   c.kind = Change::Kind::topology;
   return c;
