@@ -1,7 +1,6 @@
 // `stitch primitive`, `stitch edit` and `stitch check-surface` as a user runs them: outputs,
 // summary lines, exit statuses, and nothing written on errors.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -13,7 +12,7 @@
 #include "stitch/topology/compare.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
-#include "temp_folder.hpp"
+#include "cli_run.hpp"
 
 namespace stitch {
 namespace {
@@ -21,25 +20,8 @@ namespace {
 using stitch::testing::read_file;
 using stitch::testing::TempFolder;
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-/// Runs `stitch ARGS` in the folder, capturing stdout and stderr.
-CliRun stitch_cli(const TempFolder& folder, const std::string& args) {
-  const std::string out = folder.file("stdout.txt"), err = folder.file("stderr.txt");
-  const std::string command = "cd '" + folder.path().string() + "' && '" + STITCH_CLI + "' " +
-                              args + " > '" + out + "' 2> '" + err + "'";
-  const int status = std::system(command.c_str());
-  CliRun r;
-  if (WIFEXITED(status)) r.status = WEXITSTATUS(status);
-  r.out = read_file(out);
-  r.err = read_file(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
-}
+using stitch::testing::CliRun;
+using stitch::testing::stitch_cli;
 
 TEST(TopologyCli, PrimitiveCubeHasTheDocumentedNumbering) {
   TempFolder folder;
