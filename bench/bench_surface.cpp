@@ -24,7 +24,6 @@
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/bfr/surfaceFactoryCache.h>
 #include <opensubdiv/bfr/tessellation.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
@@ -41,6 +40,7 @@
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/opensubdiv_topology.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/insert_edge.hpp"
 #include "stitch/topology/primitives.hpp"
@@ -210,31 +210,19 @@ using ThreadSafeCache =
 // as a checksum like the *_eval variants. Returns the number of points.
 size_t osd_native_tessellation(const HalfedgeMesh& mesh, double& checksum) {
   const stitch::PolygonSoup soup = stitch::to_polygon_soup(mesh);
-  std::vector<int> sizes, indices;
-  for (const auto& f : soup.faces) {
-    sizes.push_back(static_cast<int>(f.size()));
-    indices.insert(indices.end(), f.begin(), f.end());
-  }
-  Osd::Far::TopologyDescriptor desc;
-  desc.numVertices = static_cast<int>(soup.positions.size());
-  desc.numFaces = static_cast<int>(soup.faces.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  using Factory = Osd::Far::TopologyRefinerFactory<Osd::Far::TopologyDescriptor>;
-  const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(
-      Factory::Create(desc, Factory::Options(Osd::Sdc::SCHEME_CATMARK, Osd::Sdc::Options())));
+  const auto refiner = stitch::catmark_refiner(mesh);
   const Osd::Bfr::RefinerSurfaceFactory<ThreadSafeCache> factory(*refiner);
   std::vector<double> points(3 * soup.positions.size());
   for (size_t i = 0; i < soup.positions.size(); ++i) {
     for (int k = 0; k < 3; ++k) points[3 * i + k] = soup.positions[i][k];
   }
-  const int num_faces = desc.numFaces;
+  const int num_faces = refiner->GetLevel(0).GetNumFaces();
   constexpr int kRate = 2 * kResolution;
   const Osd::Bfr::Tessellation::Options tess_options;
   std::vector<size_t> offset(static_cast<size_t>(num_faces) + 1, 0);
   for (int f = 0; f < num_faces; ++f) {
     const Osd::Bfr::Tessellation tess(
-        Osd::Bfr::Parameterization(Osd::Sdc::SCHEME_CATMARK, sizes[f]), kRate, tess_options);
+        Osd::Bfr::Parameterization(Osd::Sdc::SCHEME_CATMARK, refiner->GetLevel(0).GetFaceVertices(f).size()), kRate, tess_options);
     offset[f + 1] = offset[f] + static_cast<size_t>(tess.GetNumCoords());
   }
   std::vector<double> face_sum(static_cast<size_t>(num_faces), 0.0);

@@ -1,7 +1,6 @@
 // The Catmull-Clark comparison surface (OpenSubdiv Bfr) in stitch's per-corner parameterization.
 #include <gtest/gtest.h>
 #include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/opensubdiv_topology.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/net/control_net.hpp"
 #include "stitch/topology/insert_edge.hpp"
@@ -113,19 +113,7 @@ TEST_P(CatmullClarkShapes, PatchCornersAreOpenSubdivsVertexLimitPositions) {
   const CatmullClarkSurface cc(mesh);
   const PolygonSoup soup = to_polygon_soup(mesh);
 
-  std::vector<int> sizes, indices;
-  for (const auto& f : soup.faces) {
-    sizes.push_back(static_cast<int>(f.size()));
-    indices.insert(indices.end(), f.begin(), f.end());
-  }
-  Osd::Far::TopologyDescriptor desc;
-  desc.numVertices = static_cast<int>(soup.positions.size());
-  desc.numFaces = static_cast<int>(soup.faces.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  using Factory = Osd::Far::TopologyRefinerFactory<Osd::Far::TopologyDescriptor>;
-  const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(
-      Factory::Create(desc, Factory::Options(Osd::Sdc::SCHEME_CATMARK, Osd::Sdc::Options())));
+  const auto refiner = catmark_refiner(mesh);
   ASSERT_TRUE(refiner);
   Osd::Far::TopologyRefiner::UniformOptions uniform(1);
   uniform.fullTopologyInLastLevel = true;  // Limit() needs the vertex neighbourhoods

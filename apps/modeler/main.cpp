@@ -102,6 +102,7 @@ struct App {
 
   // Mouse state.
   bool dragging_vertex = false, mouse_moved = false;
+  bool drag_has_moved = false;  ///< the current vertex drag has recorded its move
   int drag_button = -1;
   double press_x = 0, press_y = 0, last_x = 0, last_y = 0;
   Vec3 drag_origin = Vec3::Zero();
@@ -288,10 +289,12 @@ void write_autosave(App& app) {
   if (!app.autosave_enabled || !app.session.document.modified()) return;
   const std::string path = autosave_path(app.session.path);
   try {
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    if (const auto folder = std::filesystem::path(path).parent_path(); !folder.empty())
+      std::filesystem::create_directories(folder);
     save_project(path, app.session.project());
   } catch (const std::exception& e) {
     app.status = fmt::format("autosave failed: {}", e.what());
+    std::cerr << "stitch-modeler: " << app.status << "\n";
   }
   app.last_autosave = Clock::now();
 }
@@ -626,6 +629,7 @@ void dialogs(App& app, const ScriptHooks& hooks) {
       const std::string path = s.path;
       run_line(app, "open " + app.recover_path, hooks);
       s.path = path;  // saving goes to the document, not over the autosave
+      s.document.mark_modified();
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
@@ -683,6 +687,7 @@ void handle_mouse(App& app) {
         app.press_x = app.last_x = x;
         app.press_y = app.last_y = y;
         app.mouse_moved = false;
+        app.drag_has_moved = false;
         app.dragging_vertex =
             b == 0 && ctrl && s.selection && s.selection->kind == PickKind::vertex;
         if (app.dragging_vertex)
@@ -714,11 +719,9 @@ void handle_mouse(App& app) {
         if (denom > 1e-9) p = p0 + ((b * e - d) / denom) * a;
       }
       try {
-        const bool first = !s.document.can_undo() ||
-                           s.document.undo_labels().back() !=
-                               fmt::format("move vertex {}", s.selection->index + 1) ||
-                           app.last_x == app.press_x;
-        s.apply(s.document.move_vertices({Vertex(s.selection->index)}, {p}, !first));
+        // The first motion of a drag starts an undo step; the rest extend it.
+        s.apply(s.document.move_vertices({Vertex(s.selection->index)}, {p}, app.drag_has_moved));
+        app.drag_has_moved = true;
         app.status = fmt::format("vertex {} at {:.3f} {:.3f} {:.3f}", s.selection->index + 1, p.x(),
                                  p.y(), p.z());
         after_change(app, change_of(Change::Kind::geometry), false);
@@ -871,6 +874,7 @@ int main(int argc, char** argv) {
           if (recover) {
             open_file(app.session, autosave);
             app.session.path = file;
+            app.session.document.mark_modified();
             app.status = "recovered " + autosave;
           } else {
             open_file(app.session, file);
@@ -888,6 +892,7 @@ int main(int argc, char** argv) {
       } else if (recover && autosave_is_newer(autosave_path(""), "")) {
         open_file(app.session, autosave_path(""));
         app.session.path.clear();
+        app.session.document.mark_modified();
       }
       after_change(app, change_of(Change::Kind::topology), true);
 

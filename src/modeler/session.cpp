@@ -68,6 +68,17 @@ Vertex vertex_number(const HalfedgeMesh& m, const std::string& text) {
   return Vertex(n - 1);
 }
 
+/// The text after the first word, trimmed: a path may contain blanks.
+std::string rest_after_first_word(std::string_view line) {
+  size_t i = line.find_first_not_of(" \t");
+  i = line.find_first_of(" \t", i);
+  if (i == std::string_view::npos) return {};
+  i = line.find_first_not_of(" \t", i);
+  if (i == std::string_view::npos) return {};
+  const size_t end = line.find_last_not_of(" \t\r");
+  return std::string(line.substr(i, end - i + 1));
+}
+
 bool is_operation(const std::string& word) {
   for (const std::string& op : operation_synopsis())
     if (op.substr(0, op.find(' ')) == word) return true;
@@ -350,20 +361,22 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     expect(w, 1, 1, "zoom STEPS");
     s.view.zoom(number(w[1], "the zoom steps"));
   } else if (cmd == "screenshot") {
-    expect(w, 1, 1, "screenshot PATH");
+    const std::string path = rest_after_first_word(strip_comment(raw));
+    if (path.empty()) throw MeshError("usage: screenshot PATH");
     if (!hooks.screenshot) throw MeshError("screenshot: not available here");
-    hooks.screenshot(w[1]);
-    result.message = "wrote " + w[1];
+    hooks.screenshot(path);
+    result.message = "wrote " + path;
   } else if (cmd == "save") {
-    expect(w, 0, 1, "save [PATH]");
-    const std::string path = w.size() > 1 ? w[1] : s.path;
+    std::string path = rest_after_first_word(strip_comment(raw));
+    if (path.empty()) path = s.path;
     if (path.empty()) throw MeshError("save: the document has no file yet; write save PATH");
     save_file(s, path);
     result.message = "saved " + path;
   } else if (cmd == "open") {
-    expect(w, 1, 1, "open PATH");
-    open_file(s, w[1]);
-    result.message = "opened " + w[1];
+    const std::string path = rest_after_first_word(strip_comment(raw));
+    if (path.empty()) throw MeshError("usage: open PATH");
+    open_file(s, path);
+    result.message = "opened " + path;
   } else if (cmd == "info") {
     expect(w, 0, 0, "info");
     const TopologyStats t = topology_stats(mesh);

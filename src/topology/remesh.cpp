@@ -2,13 +2,12 @@
 
 #include <fmt/format.h>
 #include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <memory>
 
 #include "raw_mesh.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/opensubdiv_topology.hpp"
 
 namespace stitch {
 
@@ -126,22 +125,7 @@ HalfedgeMesh catmull_clark_step(const HalfedgeMesh& input) {
           "face-vertex input cannot express",
           m.origin(h).idx + 1, m.target(h).idx + 1));
 
-  std::vector<int> verts_per_face, indices;
-  for (Face f : m.faces()) {
-    verts_per_face.push_back(m.degree(f));
-    for (Halfedge h : m.face_loop(f)) indices.push_back(m.origin(h).idx);
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = m.num_vertices();
-  desc.numFaces = m.num_faces();
-  desc.numVertsPerFace = verts_per_face.data();
-  desc.vertIndicesPerFace = indices.data();
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
-  if (!refiner) throw MeshError("catmull-clark: OpenSubdiv refused the mesh's topology");
+  const auto refiner = catmark_refiner(m);
   refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(1));
 
   struct Point {

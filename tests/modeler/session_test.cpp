@@ -106,6 +106,15 @@ TEST(ModelerSession, VertexMovesAreLocalAndUndoable) {
   EXPECT_TRUE(s.document.mesh() == before);
 }
 
+TEST(ModelerSession, PathsMayContainBlanks) {
+  stitch::testing::TempFolder dir;
+  Session s(make_cube());
+  const std::string path = dir.file("my model.obj");
+  ASSERT_FALSE(run_script(s, {"save " + path + "   # a comment", "open " + path}, {}));
+  EXPECT_EQ(s.path, path);
+  EXPECT_TRUE(s.document.mesh() == make_cube());
+}
+
 TEST(ModelerSession, ProjectsKeepKgonsViewAndDisplay) {
   stitch::testing::TempFolder dir;
   Session s(make_cube());

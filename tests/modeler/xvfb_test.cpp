@@ -2,6 +2,7 @@
 // script. Skipped only when xvfb-run is not installed (CI installs the xvfb package).
 #include <gtest/gtest.h>
 #include <stb_image.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -22,10 +23,14 @@ bool have_xvfb_run() {
   return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
 }
 
-/// Runs the modeler under a fresh virtual X server; returns its exit status.
+/// Runs the modeler under a fresh virtual X server; returns its exit status. The server number
+/// search starts at a number from the process id, so tests run in parallel (ctest -j) do not
+/// race for the same display (`xvfb-run -a` alone can).
 int run_modeler(const std::string& args, const std::string& log) {
-  const std::string command = "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 1280x1024x24' " +
-                              std::string(STITCH_MODELER) + " " + args + " > '" + log + "' 2>&1";
+  const std::string server = std::to_string(100 + ::getpid() % 800);
+  const std::string command = "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n " + server +
+                              " -s '-screen 0 1280x1024x24' " + std::string(STITCH_MODELER) + " " +
+                              args + " > '" + log + "' 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

@@ -81,6 +81,8 @@ class Document {
   /// True when the document differs from the last mark_saved() (or from the start).
   [[nodiscard]] bool modified() const { return revision_ != saved_revision_; }
   void mark_saved() { saved_revision_ = revision_; }
+  /// Marks the document as differing from its file (e.g. after recovering an autosave).
+  void mark_modified() { saved_revision_ = -1; }
 
  private:
   struct MoveVertices {

@@ -1,0 +1,32 @@
+#include "stitch/mesh/opensubdiv_topology.hpp"
+
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <vector>
+
+namespace stitch {
+
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const HalfedgeMesh& mesh) {
+  using namespace OpenSubdiv;
+  if (mesh.has_garbage())
+    throw MeshError("internal error: OpenSubdiv needs a mesh without deleted elements");
+  std::vector<int> sizes, indices;
+  for (Face f : mesh.faces()) {
+    sizes.push_back(mesh.degree(f));
+    for (Halfedge h : mesh.face_loop(f)) indices.push_back(mesh.origin(h).idx);
+  }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = mesh.num_vertices();
+  desc.numFaces = mesh.num_faces();
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  std::unique_ptr<Far::TopologyRefiner> refiner(
+      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+  if (!refiner) throw MeshError("OpenSubdiv refused the mesh's topology");
+  return refiner;
+}
+
+}  // namespace stitch
