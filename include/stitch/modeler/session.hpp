@@ -16,6 +16,8 @@
 //   view front|back|left|right|top|bottom|iso        frame all|selection
 //   orbit DYAW DPITCH (degrees)      zoom STEPS
 //   screenshot PATH    save [PATH]    open PATH    info    quit
+// (paths run to the end of the line, so they may contain blanks). The application adds
+// `ui on|off` (show or hide its panels), the one line about the window rather than the session.
 #pragma once
 
 #include <functional>
