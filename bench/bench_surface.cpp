@@ -222,7 +222,9 @@ size_t osd_native_tessellation(const HalfedgeMesh& mesh, double& checksum) {
   std::vector<size_t> offset(static_cast<size_t>(num_faces) + 1, 0);
   for (int f = 0; f < num_faces; ++f) {
     const Osd::Bfr::Tessellation tess(
-        Osd::Bfr::Parameterization(Osd::Sdc::SCHEME_CATMARK, refiner->GetLevel(0).GetFaceVertices(f).size()), kRate, tess_options);
+        Osd::Bfr::Parameterization(Osd::Sdc::SCHEME_CATMARK,
+                                   refiner->GetLevel(0).GetFaceVertices(f).size()),
+        kRate, tess_options);
     offset[f + 1] = offset[f] + static_cast<size_t>(tess.GetNumCoords());
   }
   std::vector<double> face_sum(static_cast<size_t>(num_faces), 0.0);

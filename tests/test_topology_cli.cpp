@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli_run.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/compare.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
-#include "cli_run.hpp"
 
 namespace stitch {
 namespace {

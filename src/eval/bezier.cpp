@@ -52,8 +52,7 @@ SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
     const double su = u < 0.5 ? 1.0 : -1.0, sv = v < 0.5 ? 1.0 : -1.0;
     n = (su * duu + sv * duv).cross(su * duv + sv * dvv);
   }
-  if (n.squaredNorm() <= tiny)
-    n = (net.at(3, 3) - net.at(0, 0)).cross(net.at(0, 3) - net.at(3, 0));
+  if (n.squaredNorm() <= tiny) n = (net.at(3, 3) - net.at(0, 0)).cross(net.at(0, 3) - net.at(3, 0));
   sp.normal = n.squaredNorm() > 0 ? n.normalized() : Vec3::UnitZ();
   return sp;
 }

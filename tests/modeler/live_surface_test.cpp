@@ -10,6 +10,7 @@
 #include <set>
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/modeler/navigation.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "test_support.hpp"
@@ -170,6 +171,61 @@ TEST(ModelerLiveSurface, TopologyEditsRecomputeExactlyTheChangedPatches) {
     check_update(live, doc, doc.apply_operation("catmull-clark"));  // renumbers everything
     check_update(live, doc, doc.undo());
   }
+}
+
+TEST(ModelerLiveSurface, RandomTopologyEditsStayExact) {
+  // Random operator lines on a torus (fixed seed), each checked against a from-scratch rebuild,
+  // then all undone.
+  std::mt19937 rng(11);
+  Document doc(make_torus(6, 5));
+  LiveSurface live;
+  live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 2);
+  auto pick_from = [&](const auto& list) {
+    return list[std::uniform_int_distribution<size_t>(0, list.size() - 1)(rng)];
+  };
+  auto without_kind = [](const std::string& d) { return d.substr(d.find(' ') + 1); };
+  int applied = 0;
+  for (int i = 0; i < 40; ++i) {
+    const HalfedgeMesh& m = doc.mesh();
+    std::string line;
+    switch (i % 5) {
+      case 0: {  // split a face between two of its corners
+        const Face f = pick_from(m.faces());
+        const auto loop = m.face_loop(f);
+        const Pick a{PickKind::corner, pick_from(loop).idx},
+            b{PickKind::corner, pick_from(loop).idx};
+        line = "insert-edge " + without_kind(describe(m, a)) + " " + without_kind(describe(m, b));
+        break;
+      }
+      case 1:
+        line = "subdivide-edge " +
+               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        break;
+      case 2:
+        line = "delete-edge " +
+               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        break;
+      case 3:
+        line = "collapse-edge " +
+               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        break;
+      default:
+        line = "extrude-face " + std::to_string(pick_from(m.faces()).idx + 1) + " 0.2";
+        break;
+    }
+    SCOPED_TRACE(line);
+    Change c;
+    try {
+      c = doc.apply_operation(line);
+    } catch (const MeshError&) {
+      continue;  // refused: nothing changed
+    }
+    ++applied;
+    check_update(live, doc, c);
+  }
+  EXPECT_GE(applied, 20);
+  while (doc.can_undo()) check_update(live, doc, doc.undo());
+  EXPECT_TRUE(doc.mesh() == make_torus(6, 5));
 }
 
 TEST(ModelerLiveSurface, InsertEdgeIsLocal) {

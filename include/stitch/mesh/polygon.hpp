@@ -1,9 +1,8 @@
 // Small geometric helpers on polygons given as point loops.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 
