@@ -52,6 +52,12 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
   cmd->add_flag("--regularize", k.regularize,
                 "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
                 "(makes star-shaped K-gons convex)");
+  cmd->add_option("--kgon-construction", k.construction,
+                  "openings: faces made by inserting an edge between two faces get a K-gon on "
+                  "the wall of the tube between their openings (docs/method.md); doo-sabin: "
+                  "section 2 of the method as it stands for every face")
+      ->check(CLI::IsMember({"openings", "doo-sabin"}))
+      ->capture_default_str();
 }
 
 KgonOptions to_kgon_options(const KgonCliOptions& k) {
@@ -59,6 +65,8 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
   o.global.scale = k.scale;
   o.global.rotate_deg = k.rotate_deg;
   o.global.regularize = k.regularize;
+  o.construction =
+      k.construction == "doo-sabin" ? KgonConstruction::doo_sabin : KgonConstruction::openings;
   return o;
 }
 

@@ -26,8 +26,9 @@ struct KgonCliOptions {
   double scale = 1.0;
   double rotate_deg = 0.0;
   bool regularize = false;
+  std::string construction = "openings";
 };
-/// Adds --kgon-scale, --kgon-rotate and --regularize.
+/// Adds --kgon-scale, --kgon-rotate, --regularize and --kgon-construction.
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
 

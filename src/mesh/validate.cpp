@@ -111,15 +111,21 @@ TopologyStats topology_stats(const HalfedgeMesh& mesh) {
   connected_components(mesh, &s.components);
   s.euler = s.vertices - s.edges + s.faces;
   s.genus = (2 * s.components - s.euler) / 2;
+  // On a valid mesh a vertex's valence is its number of outgoing half-edges and a face's degree
+  // its number of half-edges; counting them avoids walking every fan and loop.
+  std::vector<int> valence(mesh.vertex_capacity(), 0), degree(mesh.face_capacity(), 0);
+  for (int h = 0; h < mesh.halfedge_capacity(); ++h) {
+    if (mesh.is_deleted(Halfedge(h))) continue;
+    ++valence[mesh.origin(Halfedge(h)).idx];
+    ++degree[mesh.face(Halfedge(h)).idx];
+  }
   for (Vertex v : mesh.vertices()) {
-    const int k = mesh.valence(v);
-    ++s.valence_histogram[k];
-    if (k != 4) ++s.extraordinary_vertices;
+    ++s.valence_histogram[valence[v.idx]];
+    if (valence[v.idx] != 4) ++s.extraordinary_vertices;
   }
   for (Face f : mesh.faces()) {
-    const int k = mesh.degree(f);
-    ++s.degree_histogram[k];
-    if (k != 4) ++s.extraordinary_faces;
+    ++s.degree_histogram[degree[f.idx]];
+    if (degree[f.idx] != 4) ++s.extraordinary_faces;
   }
   return s;
 }

@@ -190,7 +190,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     OperationReport report;
     const Change c = s.document.apply_operation(raw, &report);
     s.apply(c);
-    result.message = report.summary(strip_comment(raw));
+    std::string_view text = strip_comment(raw);
+    text = text.substr(0, text.find_last_not_of(" \t\r") + 1);
+    text = text.substr(std::min(text.size(), text.find_first_not_of(" \t")));
+    result.message = report.summary(text);
     if (hooks.print) hooks.print(result.message);
   } else if (cmd == "primitive") {
     expect(w, 1, 3, "primitive NAME [PARAMS]");
