@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <numeric>
+#include <utility>
 
 namespace stitch {
 
@@ -82,22 +83,29 @@ void validate(const HalfedgeMesh& mesh) {
 }
 
 std::vector<int> connected_components(const HalfedgeMesh& mesh, int* count) {
-  std::vector<int> parent(mesh.vertex_capacity());
+  // Union-find with union by size and path halving.
+  std::vector<int> parent(mesh.vertex_capacity()), size(mesh.vertex_capacity(), 1);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (Edge e : mesh.edges()) {
-    const Halfedge h = HalfedgeMesh::halfedge(e, 0);
-    parent[find(mesh.origin(h).idx)] = find(mesh.target(h).idx);
+  for (int e = 0; e < mesh.edge_capacity(); ++e) {
+    if (mesh.is_deleted(Edge(e))) continue;
+    const Halfedge h = HalfedgeMesh::halfedge(Edge(e), 0);
+    int a = find(mesh.origin(h).idx), b = find(mesh.target(h).idx);
+    if (a == b) continue;
+    if (size[a] < size[b]) std::swap(a, b);
+    parent[b] = a;
+    size[a] += size[b];
   }
   std::vector<int> id(mesh.vertex_capacity(), -1), root_id(mesh.vertex_capacity(), -1);
   int n = 0;
-  for (Vertex v : mesh.vertices()) {
-    const int r = find(v.idx);
+  for (int v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (mesh.is_deleted(Vertex(v))) continue;
+    const int r = find(v);
     if (root_id[r] < 0) root_id[r] = n++;
-    id[v.idx] = root_id[r];
+    id[v] = root_id[r];
   }
   if (count) *count = n;
   return id;
@@ -119,14 +127,26 @@ TopologyStats topology_stats(const HalfedgeMesh& mesh) {
     ++valence[mesh.origin(Halfedge(h)).idx];
     ++degree[mesh.face(Halfedge(h)).idx];
   }
-  for (Vertex v : mesh.vertices()) {
-    ++s.valence_histogram[valence[v.idx]];
-    if (valence[v.idx] != 4) ++s.extraordinary_vertices;
-  }
-  for (Face f : mesh.faces()) {
-    ++s.degree_histogram[degree[f.idx]];
-    if (degree[f.idx] != 4) ++s.extraordinary_faces;
-  }
+  // Histograms are counted in arrays first: a map insertion per element costs more than the
+  // rest of this function together.
+  auto histogram = [](const std::vector<int>& counts, auto live, std::map<int, int>& out) {
+    std::vector<int> n;
+    int irregular = 0;
+    for (size_t i = 0; i < counts.size(); ++i) {
+      if (!live(static_cast<int>(i))) continue;
+      const int k = counts[i];
+      if (k >= static_cast<int>(n.size())) n.resize(k + 1, 0);
+      ++n[k];
+      if (k != 4) ++irregular;
+    }
+    for (size_t k = 0; k < n.size(); ++k)
+      if (n[k] > 0) out[static_cast<int>(k)] = n[k];
+    return irregular;
+  };
+  s.extraordinary_vertices = histogram(
+      valence, [&](int v) { return !mesh.is_deleted(Vertex(v)); }, s.valence_histogram);
+  s.extraordinary_faces = histogram(
+      degree, [&](int f) { return !mesh.is_deleted(Face(f)); }, s.degree_histogram);
   return s;
 }
 
