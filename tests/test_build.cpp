@@ -18,25 +18,14 @@ using stitch::BuildReport;
 using stitch::HalfedgeMesh;
 using stitch::MeshError;
 using stitch::PolygonSoup;
+using stitch::test::error_of;
 
-std::string shared_mesh(const std::string& name) {
-  return stitch::test::shared_path(name + ".obj");
-}
 std::string example(const std::string& name) {
   return stitch::test::example_path(name + ".obj");
 }
-
-/// The message of the MeshError `f` throws ("" when it throws none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  return "";
+std::string shared_mesh(const std::string& name) {
+  return stitch::test::shared_path(name + ".obj");
 }
-
 /// Signed volume enclosed by the faces, each fanned from its first corner: positive when the
 /// faces are oriented outward.
 double signed_volume(const HalfedgeMesh& mesh) {

@@ -23,21 +23,12 @@ using stitch::HalfedgeMesh;
 using stitch::MeshError;
 using stitch::PolygonSoup;
 using stitch::Vec3;
+using stitch::test::error_of;
 using stitch::testing::read_file;
 using stitch::testing::TempFolder;
 
 std::string example(const std::string& name) {
   return stitch::test::example_path(name + ".obj");
-}
-
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const MeshError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 // Little-endian / big-endian bytes of a number, for hand-made binary files.

@@ -17,6 +17,17 @@ inline std::string example_path(const std::string& name) {
   return std::string(STITCH_EXAMPLES_DIR) + "/" + name;
 }
 
+/// The message of the MeshError `f` throws ("" when it throws none).
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 /// The closed orientable meshes of the shared OpenSubdiv set (see its README).
 inline const std::vector<std::string>& closed_shared_meshes() {
   static const std::vector<std::string> names{

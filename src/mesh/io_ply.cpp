@@ -230,6 +230,17 @@ class BodyReader {
       return type.is_float ? parse_double(word, where)
                            : static_cast<double>(parse_integer(word, where));
     };
+    read_properties(element, take, use, where);
+    if (next != words.size())
+      throw MeshError(fmt::format("{}: {} values more than a '{}' element has", where,
+                                  words.size() - next, element.name));
+  }
+
+  /// Hands every property value of one element to `use(property, list_index, value)`
+  /// (list_index -1 for a scalar or a list's length), reading values with `take(type)`.
+  template <class Take, class Use>
+  static void read_properties(const Element& element, Take& take, Use& use,
+                              const std::string& where) {
     for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
       const Property& property = element.properties[p];
       if (!property.list_count) {
@@ -241,9 +252,6 @@ class BodyReader {
       use(p, -1, count);
       for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
     }
-    if (next != words.size())
-      throw MeshError(fmt::format("{}: {} values more than a '{}' element has", where,
-                                  words.size() - next, element.name));
   }
 
   template <class Use>
@@ -282,17 +290,7 @@ class BodyReader {
       }
       return static_cast<double>(raw);
     };
-    for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
-      const Property& property = element.properties[p];
-      if (!property.list_count) {
-        use(p, -1, take(property.type));
-        continue;
-      }
-      const double count = take(*property.list_count);
-      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where, count));
-      use(p, -1, count);
-      for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
-    }
+    read_properties(element, take, use, where);
   }
 
   [[nodiscard]] int line_number() const { return header_.body_line + lines_.line_number() - 1; }

@@ -14,19 +14,6 @@ namespace stitch::modeler {
 
 namespace {
 
-std::vector<std::string> words_of(std::string_view line) {
-  std::vector<std::string> w;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    size_t j = i;
-    while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
-    if (j > i) w.emplace_back(line.substr(i, j - i));
-    i = j;
-  }
-  return w;
-}
-
 /// The line without a `# comment` ('#' after a blank or at the start; V@F#k keeps its '#').
 std::string_view strip_comment(std::string_view line) {
   for (size_t i = 0; i < line.size(); ++i)
@@ -179,7 +166,8 @@ std::optional<KgonTarget> kgon_target(const Session& s) {
 }
 
 ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks& hooks) {
-  const std::vector<std::string> w = words_of(strip_comment(raw));
+  const auto words = split_words(strip_comment(raw));
+  const std::vector<std::string> w(words.begin(), words.end());
   ScriptResult result;
   if (w.empty()) return result;
   const std::string& cmd = w[0];

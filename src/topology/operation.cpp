@@ -17,8 +17,6 @@
 
 namespace stitch {
 
-namespace {
-
 std::vector<std::string_view> split_words(std::string_view s) {
   std::vector<std::string_view> out;
   size_t i = 0;
@@ -31,6 +29,8 @@ std::vector<std::string_view> split_words(std::string_view s) {
   }
   return out;
 }
+
+namespace {
 
 /// A positive 1-based number; `what` names it for the message.
 int parse_number(std::string_view text, const char* what) {

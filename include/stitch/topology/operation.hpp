@@ -20,6 +20,9 @@ struct OperationReport {
   [[nodiscard]] std::string summary(std::string_view op_text) const;
 };
 
+/// The words of a line, split at white space.
+std::vector<std::string_view> split_words(std::string_view line);
+
 /// Parses and applies one operation line ("insert-edge 1@1 5@2", "extrude-face 3 0.5", ...).
 /// Leading/trailing blanks and a trailing `# comment` are ignored. Throws MeshError (the mesh is
 /// unchanged) for an unknown operation, bad arguments, or a refused operation, saying why.
