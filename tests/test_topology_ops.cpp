@@ -259,16 +259,22 @@ TEST(TopologyExtrude, CountsAndNumbering) {
   EXPECT_GT(signed_volume(m), 8.0);
 }
 
-TEST(TopologyExtrude, AFaceRunningAlongAnEdgeTwice) {
+TEST(TopologyExtrude, RefusesAFaceWhoseLoopTouchesItself) {
   // Bottom and front merged by an edge from vertex 4 to vertex 6: the merged face runs along
-  // the new edge twice (a self-touching loop); extruding it gives every corner its own vertex.
+  // the new edge twice and visits vertices 4 and 6 twice. Every corner would get its own new
+  // vertex, so the top would have two vertices at the same point (a degenerate surface).
   HalfedgeMesh m = make_cube();
   apply_operation(m, "insert-edge 4@1 6@3");
   expect_counts(m, {8, 13, 5, 1, 1});
   ASSERT_EQ(m.degree(Face(0)), 10);
-  const ExtrudeResult r = extrude_face(m, Face(0), 0.2, 0.8);
-  EXPECT_EQ(r.degree, 10);
-  expect_counts(m, {18, 33, 15, 1, 1});
+  const HalfedgeMesh before = m;
+  try {
+    extrude_face(m, Face(0), 0.2, 0.8);
+    FAIL() << "extrude-face accepted a loop that visits a vertex twice";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("twice"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(m, before);
 }
 
 TEST(TopologyExtrude, RefusesAFaceWithoutANormal) {

@@ -24,6 +24,16 @@ std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
     if (h == b2) break;
   }
   if (o.first.size() < 2 || o.second.size() < 2) return std::nullopt;
+  // Two separate rims: each opening visits its bridge vertex at its two ends and every other
+  // vertex once, and the openings share no vertex. Anything else (random edits make such
+  // faces) is not a tube between two openings, and keeps section 2's K-gon.
+  std::vector<int> seen(m.vertex_capacity(), 0);
+  for (const auto* corners : {&o.first, &o.second}) {
+    const Vertex bridge_end = m.origin(corners->front());
+    if (m.origin(corners->back()) != bridge_end) return std::nullopt;
+    for (size_t i = 1; i < corners->size(); ++i)
+      if (seen[m.origin((*corners)[i]).idx]++) return std::nullopt;
+  }
   return o;
 }
 

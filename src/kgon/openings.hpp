@@ -26,7 +26,8 @@ struct TwoOpenings {
   std::vector<Corner> first, second;
 };
 
-/// The two openings of f, or nothing when f's loop does not run along exactly one edge twice.
+/// The two openings of f, or nothing unless f's loop runs along exactly one edge twice and the
+/// two parts on either side of it are separate simple loops (they share no vertex).
 std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
 
 /// Doo-Sabin corner points of each opening over that opening's own loop (stored by corner).

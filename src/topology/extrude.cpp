@@ -5,15 +5,14 @@
 #include <cmath>
 
 #include "raw_mesh.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
 
 namespace td = topology_detail;
 
 Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
-  Vec3 n = Vec3::Zero();
-  for (Halfedge h : mesh.face_loop(f))
-    n += mesh.position(mesh.origin(h)).cross(mesh.position(mesh.target(h)));
+  const Vec3 n = newell_normal(face_points(mesh, f));
   const double len = n.norm();
   return len > 0 ? Vec3(n / len) : Vec3::Zero();
 }
@@ -29,6 +28,15 @@ ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double s
     throw MeshError(fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
   const std::vector<Halfedge> loop = mesh.face_loop(f);
   const int k = static_cast<int>(loop.size());
+  // Every corner gets its own new vertex, so a loop that visits a vertex twice would put two
+  // new vertices at the same point: a degenerate surface.
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+      if (mesh.origin(loop[i]) == mesh.origin(loop[j]))
+        throw MeshError(fmt::format(
+            "extrude-face: face {} visits vertex {} twice (its loop touches itself); its "
+            "extruded top would have two vertices at the same point",
+            f.idx + 1, mesh.origin(loop[i]).idx + 1));
 
   ExtrudeResult result;
   result.degree = k;
