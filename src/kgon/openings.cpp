@@ -125,11 +125,12 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
         c += std::cos(2 * std::numbers::pi * i / k);
       }
   const double phase = std::numbers::pi - std::atan2(s, c);
-  // Size: a quarter of the mean distance to the corner points, as section 2 gives a regular
-  // polygon (shrinking twice scales the first harmonic by 1/4).
+  // Size: half the mean distance to the corner points, as section 2 gives a regular polygon
+  // (each Doo-Sabin shrink halves its first harmonic: corner points at 1/2 of the vertices'
+  // radius, K-gon points at 1/4).
   double radius = 0;
   for (Corner cn : loop) radius += (corner_point[cn.idx] - centre).norm();
-  radius *= 0.25 / k;
+  radius *= 0.5 / k;
 
   Kgon g;
   g.corners = loop;
