@@ -50,6 +50,24 @@ Vec3 centroid(const HalfedgeMesh& mesh) {
 // Parameters along a patch side: the ends (vertex, edge midpoint, face centre) and inside.
 const std::vector<double> kSideParams{0.0, 0.125, 0.3, 0.5, 0.77, 1.0};
 
+/// The largest distance between two neighbouring patches' positions along their shared side,
+/// over every side of every corner patch (at kSideParams).
+double largest_side_gap(const HalfedgeMesh& mesh, const CatmullClarkSurface& cc) {
+  double gap = 0;
+  for (Corner c : mesh.halfedges())
+    for (int side = 0; side < 4; ++side) {
+      const PatchNeighbour nb = neighbour_across(mesh, c, side);
+      for (double t : kSideParams) {
+        const auto a = side_point(side, t);
+        const auto b = side_point(nb.side, t);
+        gap = std::max(
+            gap, (cc.evaluate(c, a[0], a[1]).position - cc.evaluate(nb.corner, b[0], b[1]).position)
+                     .norm());
+      }
+    }
+  return gap;
+}
+
 class CatmullClarkShapes : public ::testing::TestWithParam<std::string> {};
 
 // Neighbouring corner patches share their boundary curve. They come from different Bfr surfaces
@@ -60,23 +78,7 @@ class CatmullClarkShapes : public ::testing::TestWithParam<std::string> {};
 TEST_P(CatmullClarkShapes, PositionsAgreeAcrossEverySharedPatchSide) {
   const HalfedgeMesh mesh = load(GetParam());
   const CatmullClarkSurface cc(mesh);
-  const double tol = 1e-9 * mesh_size(mesh);
-  int compared = 0;
-  for (Corner c : mesh.halfedges()) {
-    for (int side = 0; side < 4; ++side) {
-      const PatchNeighbour nb = neighbour_across(mesh, c, side);
-      for (double t : kSideParams) {
-        const auto a = side_point(side, t);
-        const auto b = side_point(nb.side, t);
-        const Vec3 p = cc.evaluate(c, a[0], a[1]).position;
-        const Vec3 q = cc.evaluate(nb.corner, b[0], b[1]).position;
-        ASSERT_LT((p - q).norm(), tol) << GetParam() << ": corner " << c.idx << " side " << side
-                                       << " t " << t << " vs corner " << nb.corner.idx;
-        ++compared;
-      }
-    }
-  }
-  EXPECT_EQ(compared, 4 * mesh.num_halfedges() * static_cast<int>(kSideParams.size()));
+  EXPECT_LT(largest_side_gap(mesh, cc), 1e-9 * mesh_size(mesh)) << GetParam();
 }
 
 // Without creases the Catmull-Clark limit surface is C1 away from extraordinary vertices and G1
@@ -324,20 +326,7 @@ TEST(CatmullClark, NeverReturnsASurfaceThatComesApartAroundMultiEdges) {
     EXPECT_NE(std::string(e.what()).find("cannot handle"), std::string::npos) << e.what();
     return;
   }
-  const double tol = 1e-9 * mesh_size(mesh);  // as in PositionsAgreeAcrossEverySharedPatchSide
-  for (Corner c : mesh.halfedges()) {
-    for (int side = 0; side < 4; ++side) {
-      const PatchNeighbour nb = neighbour_across(mesh, c, side);
-      for (double t : kSideParams) {
-        const auto a = side_point(side, t);
-        const auto b = side_point(nb.side, t);
-        EXPECT_LT(
-            (cc->evaluate(c, a[0], a[1]).position - cc->evaluate(nb.corner, b[0], b[1]).position)
-                .norm(),
-            tol);
-      }
-    }
-  }
+  EXPECT_LT(largest_side_gap(mesh, *cc), 1e-9 * mesh_size(mesh));  // as for the shapes above
 }
 
 }  // namespace
