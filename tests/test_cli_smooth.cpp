@@ -120,18 +120,21 @@ TEST(CliAnalyze, ShowsThePapersClaimAsNumbers) {
 namespace stitch {
 namespace {
 
-TEST(CliAnalyze, AllReportsAMethodThatRefusesTheMeshAndGoesOn) {
+// The cube with a hole has a 10-sided face running along the bridge twice, which OpenSubdiv
+// cannot take as it is; cc evaluates it after Catmull-Clark steps. Catmull-Clark is G1 at
+// extraordinary points, so its jump is round-off (measured ~3e-13 degrees), like mdc's.
+TEST(CliAnalyze, AllAnalyzesEveryMethodOnTheCubeWithAHole) {
   testing::TempFolder folder;
   const std::string in = test::example_path("cube_hole.obj");
-  auto r = testing::stitch_cli(folder, "analyze '" + in + "' --method all --json");
+  const auto r = testing::stitch_cli(folder, "analyze '" + in + "' --method all --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["methods"].size(), 3u);
   EXPECT_EQ(j["methods"][2]["method"], "cc");
-  EXPECT_NE(j["methods"][2]["refused"].get<std::string>().find("twice"), std::string::npos);
-  // Asked for alone, the refusal is an error.
-  r = testing::stitch_cli(folder, "analyze '" + in + "' --method cc");
-  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(j["methods"][2].contains("refused"));
+  EXPECT_LT(j["methods"][2]["touching_extraordinary"]["max_deg"].get<double>(), 1e-8);
+  EXPECT_LT(j["methods"][2]["max_position_gap_relative"].get<double>(), 1e-9);
+  EXPECT_GT(j["methods"][0]["touching_extraordinary"]["max_deg"].get<double>(), 1.0);  // asc
 }
 
 }  // namespace

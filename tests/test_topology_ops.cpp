@@ -374,14 +374,27 @@ TEST(TopologyRemesh, KeepsGenusOnATorusAndAfterEdits) {
   }
 }
 
-TEST(TopologyRemesh, CatmullClarkKeepsOldVertexNumbersAndRefusesTwoGons) {
+TEST(TopologyRemesh, CatmullClarkKeepsOldVertexNumbersAndTakesAnyTopology) {
   const HalfedgeMesh cube = make_cube();
   const HalfedgeMesh cc = catmull_clark_step(cube);
   // Catmull-Clark moves a cube corner (+-1,+-1,+-1) to (+-5/9, ...) on the same diagonal.
   for (Vertex v : cube.vertices())
     EXPECT_NEAR((cc.position(v) - cube.position(v) * 5.0 / 9.0).norm(), 0, 1e-12);
-  HalfedgeMesh p = make_prism(2);
-  EXPECT_THROW(catmull_clark_step(p), MeshError);
+  // 2-sided faces, several edges between two vertices and faces running along an edge twice:
+  // OpenSubdiv's rules applied to them still give a valid all-quad mesh with the same genus.
+  HalfedgeMesh bridged = make_cube();
+  insert_edge(bridged, corner(bridged, 1, 1), corner(bridged, 7, 2));
+  for (const HalfedgeMesh& m : {make_prism(2), bridged}) {
+    const TopologyStats before = topology_stats(m);
+    const HalfedgeMesh r = catmull_clark_step(m);
+    ASSERT_TRUE(find_problems(r).empty());
+    const TopologyStats after = topology_stats(r);
+    EXPECT_EQ(after.vertices, before.vertices + before.edges + before.faces);
+    EXPECT_EQ(after.edges, 4 * before.edges);  // 2E halves + one spoke per corner (2E corners)
+    EXPECT_EQ(after.faces, 2 * before.edges);
+    EXPECT_EQ(after.genus, before.genus);
+    for (Face f : r.faces()) EXPECT_EQ(r.degree(f), 4);
+  }
   // A dual of a dual is the mesh again, topologically.
   const HalfedgeMesh dd = dual(dual(make_dodecahedron()));
   EXPECT_EQ(topology_stats(dd).faces, 12);

@@ -258,8 +258,8 @@ void run_compare(const CompareArgs& a) {
     try {
       surface.emplace(mesh, m, to_kgon_options(a.kgon));
     } catch (const MeshError& e) {
-      // e.g. OpenSubdiv cannot represent a face that runs along one edge twice: show the
-      // other methods and say why this one is missing.
+      // Should OpenSubdiv reject the mesh: show the other methods and say why this one is
+      // missing.
       stage.end();
       refusals.push_back(to_string(m) + ": " + e.what());
       fmt::print(stderr, "stitch: warning: {} skipped: {}\n", to_string(m), e.what());

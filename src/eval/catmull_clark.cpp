@@ -18,6 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "stitch/mesh/opensubdiv_topology.hpp"
+#include "stitch/topology/remesh.hpp"
+
 namespace stitch {
 namespace {
 
@@ -153,28 +156,36 @@ using SurfaceFactory = Osd::Bfr::RefinerSurfaceFactory<SurfaceCache>;
 constexpr std::array<std::array<double, 2>, 4> kQuadVertexCoord{
     {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}};
 
-// Faces OpenSubdiv cannot represent: Vtr identifies a face's edges by position in the face, so
-// an edge may not appear twice in one face ("the same edge cannot appear twice in a face",
-// far/topologyRefinerFactory.h).
-void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
+// Topology that Vtr cannot represent (a face running along one edge twice: "the same edge
+// cannot appear twice in a face", far/topologyRefinerFactory.h), that Bfr mishandles (2-sided
+// faces: no limit surface for the faces around them, and writes past its own buffers under
+// valgrind), or on which Bfr's surfaces come apart without an error (a face visiting a vertex
+// twice, several edges between two vertices: gaps of a fifth of a cube's size were measured).
+// One Catmull-Clark step removes all of these (see CatmullClarkSurface), so the first one found
+// is only the reason to take it.
+std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
   for (Face f : mesh.faces()) {
-    // Checked before OpenSubdiv sees the mesh: its Bfr builds no surface for the faces around a
-    // 2-sided face, and on the way writes past its own buffers (seen under valgrind).
-    if (mesh.degree(f) == 2)
-      throw MeshError(fmt::format(
-          "cc (Catmull-Clark through OpenSubdiv) cannot handle the 2-sided face {}: OpenSubdiv "
-          "does not support 2-sided faces; use mdc or asc",
-          f.idx + 1));
+    if (mesh.degree(f) == 2) return fmt::format("face {} has 2 sides", f.idx + 1);
+    std::vector<Vertex> seen;
     for (Halfedge h : mesh.face_loop(f)) {
-      if (mesh.face(HalfedgeMesh::twin(h)) == f) {
-        throw MeshError(fmt::format(
-            "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: its loop runs along edge "
-            "{} (vertices {} and {}) twice, which OpenSubdiv cannot represent; use mdc or asc",
-            f.idx + 1, HalfedgeMesh::edge(h).idx + 1, mesh.origin(h).idx + 1,
-            mesh.target(h).idx + 1));
-      }
+      if (mesh.face(HalfedgeMesh::twin(h)) == f)
+        return fmt::format("face {} runs along edge {} twice", f.idx + 1,
+                           HalfedgeMesh::edge(h).idx + 1);
+      if (std::find(seen.begin(), seen.end(), mesh.origin(h)) != seen.end())
+        return fmt::format("face {} visits vertex {} twice", f.idx + 1, mesh.origin(h).idx + 1);
+      seen.push_back(mesh.origin(h));
     }
   }
+  for (Vertex v : mesh.vertices()) {
+    std::vector<Vertex> seen;
+    for (Halfedge h : mesh.vertex_fan(v)) {
+      if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end())
+        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
+                           mesh.target(h).idx + 1);
+      seen.push_back(mesh.target(h));
+    }
+  }
+  return {};
 }
 
 [[noreturn]] void throw_no_limit_surface(Face f) {
@@ -182,43 +193,6 @@ void refuse_unsupported_topology(const HalfedgeMesh& mesh) {
       "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
       "surface; use mdc or asc",
       f.idx + 1));
-}
-
-// A face visiting one vertex twice, or several edges between two vertices. OpenSubdiv accepts
-// such topology given in full, but Bfr's surfaces around it can be wrong without any error
-// (a cube with a handle made of two edges between the same two vertices gave gaps of a tenth of
-// the cube's size between neighbouring faces), so the surface is checked when the mesh has any.
-std::string unusual_topology(const HalfedgeMesh& mesh) {
-  for (Face f : mesh.faces()) {
-    std::vector<Vertex> seen;
-    for (Halfedge h : mesh.face_loop(f)) {
-      if (std::find(seen.begin(), seen.end(), mesh.origin(h)) != seen.end()) {
-        return fmt::format("face {} visits vertex {} twice", f.idx + 1, mesh.origin(h).idx + 1);
-      }
-      seen.push_back(mesh.origin(h));
-    }
-  }
-  for (Vertex v : mesh.vertices()) {
-    std::vector<Vertex> seen;
-    for (Halfedge h : mesh.vertex_fan(v)) {
-      if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end()) {
-        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
-                           mesh.target(h).idx + 1);
-      }
-      seen.push_back(mesh.target(h));
-    }
-  }
-  return {};
-}
-
-double bounding_box_diagonal(const HalfedgeMesh& mesh) {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = -lo;
-  for (Vertex v : mesh.vertices()) {
-    lo = lo.cwiseMin(mesh.position(v));
-    hi = hi.cwiseMax(mesh.position(v));
-  }
-  return (hi - lo).norm();
 }
 
 }  // namespace
@@ -229,18 +203,26 @@ struct CatmullClarkSurface::Impl {
   std::vector<size_t> patch_offset;                 // per dense face, into patch_points
   std::vector<int> corner_face;                     // per half-edge: dense face, -1 if deleted
   std::vector<int> corner_index;                    // per half-edge: index in its face's loop
+
+  // When the mesh needed a Catmull-Clark step first: the refined mesh's surface, and per
+  // half-edge of this mesh the four corners of its quad there (from its vertex point on).
+  std::unique_ptr<CatmullClarkSurface> refined;
+  std::vector<std::array<Corner, 4>> quad_corners;
 };
 
-CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : CatmullClarkSurface(mesh, 0) {}
+
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken)
     : impl_(std::make_unique<Impl>()) {
   if (mesh.num_faces() == 0) throw MeshError("cc: the mesh has no faces");
-  refuse_unsupported_topology(mesh);
+  if (!topology_needing_a_step(mesh).empty()) {
+    init_from_refinement(mesh, steps_taken);
+    return;
+  }
 
   const OsdTopology topo(mesh);
   using RefinerFactory = Osd::Far::TopologyRefinerFactory<OsdTopology>;
-  Osd::Sdc::Options sdc_options;
-  sdc_options.SetVtxBoundaryInterpolation(Osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, sdc_options);
+  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, catmark_options());
   options.validateFullTopology = true;
   const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
   if (!refiner || !topo.problems.empty()) {
@@ -269,7 +251,14 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
     }
   }
 
-  const SurfaceFactory factory(*refiner, SurfaceFactory::Options());
+  // Bfr represents the surface exactly except in the smallest regions around extraordinary
+  // points, where it fits Gregory patches after a number of refinement levels (2 by default).
+  // Counting the steps already taken keeps those regions the same whatever the route, so the
+  // surface of a refined mesh is that of the mesh, not only close to it.
+  constexpr int kApproxLevel = 2;
+  SurfaceFactory::Options factory_options;
+  factory_options.SetApproxLevelSmooth(std::max(0, kApproxLevel - steps_taken));
+  const SurfaceFactory factory(*refiner, factory_options);
   const int num_faces = static_cast<int>(topo.faces.size());
   Impl& impl = *impl_;
   impl.surfaces.resize(static_cast<size_t>(num_faces));
@@ -308,33 +297,25 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh)
       impl.corner_index[loop[k].idx] = static_cast<int>(k);
     }
   }
-
-  const std::string unusual = unusual_topology(mesh);
-  if (!unusual.empty()) check_patch_sides(mesh, unusual);
 }
 
-// Neighbouring patches must share their sides (the side table of control_net.hpp); a gap
-// larger than round-off (1e-9 of the mesh size, against ~1e-16 measured on valid surfaces)
-// means OpenSubdiv misread the topology.
-void CatmullClarkSurface::check_patch_sides(const HalfedgeMesh& mesh,
-                                            const std::string& unusual) const {
-  const double tolerance = 1e-9 * bounding_box_diagonal(mesh);
+// The limit surface of a mesh is that of its Catmull-Clark refinement, and corner c's patch is
+// exactly the refined quad of c (the quarter of a quad face, or the quad sub-face of another
+// face, in OpenSubdiv's parameterization too). The refined mesh is all quads with one edge per
+// pair of vertices, except where a face ran along an edge twice: its two spokes to that edge's
+// point join the same two vertices, so there a second step follows (by recursion), after which
+// none of this topology is left.
+void CatmullClarkSurface::init_from_refinement(const HalfedgeMesh& mesh, int steps_taken) {
+  const CatmullClarkRefinement step = catmull_clark_refinement(mesh);
+  Impl& impl = *impl_;
+  impl.corner_face.assign(static_cast<size_t>(mesh.halfedge_capacity()), -1);
+  impl.quad_corners.assign(static_cast<size_t>(mesh.halfedge_capacity()), {});
   for (Corner c : mesh.halfedges()) {
-    for (double t : {0.0, 0.5, 1.0}) {
-      const double gap_across_edge =
-          (evaluate(c, t, 0.0).position - evaluate(mesh.rotate_cw(c), 0.0, t).position).norm();
-      const double gap_in_face =
-          (evaluate(c, 1.0, t).position - evaluate(mesh.next(c), t, 1.0).position).norm();
-      if (gap_across_edge > tolerance || gap_in_face > tolerance) {
-        throw MeshError(fmt::format(
-            "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}, and with that "
-            "OpenSubdiv's limit surface comes apart (gap {:.3g} at a side of the patch of vertex "
-            "{} in face {}); use mdc or asc",
-            unusual, std::max(gap_across_edge, gap_in_face), mesh.origin(c).idx + 1,
-            mesh.face(c).idx + 1));
-      }
-    }
+    impl.corner_face[c.idx] = 0;  // marks the live corners for evaluate()'s check
+    const auto loop = step.mesh.face_loop(step.corner_quad[c.idx]);
+    std::copy(loop.begin(), loop.end(), impl.quad_corners[c.idx].begin());
   }
+  impl.refined = std::make_unique<CatmullClarkSurface>(step.mesh, steps_taken + 1);
 }
 
 CatmullClarkSurface::~CatmullClarkSurface() = default;
@@ -348,6 +329,7 @@ SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
     throw MeshError(
         fmt::format("cc: half-edge {} (0-based) is not a live corner of the mesh", c.idx));
   }
+  if (impl.refined) return evaluate_refined_quad(impl.quad_corners[c.idx], u, v);
   const int f = impl.corner_face[c.idx];
   const int k = impl.corner_index[c.idx];
   const Osd::Bfr::Surface<double>& surface = impl.surfaces[f];
@@ -390,6 +372,30 @@ SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   out.normal = len > 0.0 ? Vec3(n / len) : Vec3::UnitZ();
   out.level = 0;
   return out;
+}
+
+// (u, v) over the whole quad: the quarter at quad corner k is that corner's patch, whose own
+// (a, b) run from the corner towards the midpoints of its next and previous sides; the chain
+// rule carries its derivatives back to (u, v).
+SurfacePoint CatmullClarkSurface::evaluate_refined_quad(const std::array<Corner, 4>& quad, double u,
+                                                        double v) const {
+  const int k = u < 0.5 ? (v < 0.5 ? 0 : 3) : (v < 0.5 ? 1 : 2);
+  const auto& p0 = kQuadVertexCoord[k];
+  const auto& pn = kQuadVertexCoord[(k + 1) % 4];
+  const auto& pp = kQuadVertexCoord[(k + 3) % 4];
+  Eigen::Matrix2d to_uv;  // columns: d(u, v)/da and d(u, v)/db
+  to_uv << 0.5 * (pn[0] - p0[0]), 0.5 * (pp[0] - p0[0]), 0.5 * (pn[1] - p0[1]),
+      0.5 * (pp[1] - p0[1]);
+  const Eigen::Matrix2d to_ab = to_uv.inverse();  // exact: entries 0, +-2
+  const Eigen::Vector2d ab = to_ab * Eigen::Vector2d(u - p0[0], v - p0[1]);
+  SurfacePoint point = impl_->refined->evaluate(quad[k], ab[0], ab[1]);
+  const Vec3 da = point.du, db = point.dv;
+  point.du = to_ab(0, 0) * da + to_ab(1, 0) * db;
+  point.dv = to_ab(0, 1) * da + to_ab(1, 1) * db;
+  const Vec3 n = point.du.cross(point.dv);
+  const double len = n.norm();
+  point.normal = len > 0.0 ? Vec3(n / len) : point.normal;
+  return point;
 }
 
 }  // namespace stitch

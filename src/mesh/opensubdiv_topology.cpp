@@ -6,6 +6,12 @@
 
 namespace stitch {
 
+OpenSubdiv::Sdc::Options catmark_options() {
+  OpenSubdiv::Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  return options;
+}
+
 std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const HalfedgeMesh& mesh) {
   using namespace OpenSubdiv;
   if (mesh.has_garbage())
@@ -21,10 +27,8 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const Halfedge
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = indices.data();
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   std::unique_ptr<Far::TopologyRefiner> refiner(
-      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, catmark_options())));
   if (!refiner) throw MeshError("OpenSubdiv refused the mesh's topology");
   return refiner;
 }

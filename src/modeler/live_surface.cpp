@@ -27,8 +27,8 @@ class Stopwatch {
 };
 
 /// The Catmull-Clark limit surface (built for the whole mesh), or null for the Bezier methods.
-/// Built before anything changes, since OpenSubdiv refuses some meshes (2-sided faces, faces
-/// along one edge twice).
+/// Built before anything changes, since it is the one surface that can refuse a mesh (should
+/// OpenSubdiv reject it).
 std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions& options,
                                     Method method) {
   return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;

@@ -101,8 +101,9 @@ void Session::rebuild() {
 }
 
 void Session::fall_back_from_cc(const std::string& why) {
-  // Only the Catmull-Clark method refuses meshes (OpenSubdiv cannot represent some faces the
-  // operators make); the edit stands and the display switches to the paper's method.
+  // Only the Catmull-Clark method can refuse a mesh (should OpenSubdiv reject its topology or
+  // give a face no limit surface); the edit stands and the display switches to the paper's
+  // method.
   if (display.method != Method::cc) throw MeshError(why);
   display.method = Method::mdc;
   warning = why + "; showing mdc instead";

@@ -1,12 +1,13 @@
 #include "stitch/topology/remesh.hpp"
 
 #include <fmt/format.h>
-#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/sdc/catmarkScheme.h>
 
-#include <memory>
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
 
 #include "raw_mesh.hpp"
-#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/opensubdiv_topology.hpp"
 
 namespace stitch {
@@ -111,49 +112,179 @@ HalfedgeMesh doo_sabin(const HalfedgeMesh& input) {
   return td::build_raw(raw, "doo-sabin");
 }
 
-HalfedgeMesh catmull_clark_step(const HalfedgeMesh& input) {
+namespace {
+
+// The neighbourhoods OpenSubdiv's Sdc::Scheme asks about to compute its refinement masks (the
+// interfaces of Vtr's componentInterfaces.h). The mesh is closed and carries no creases, so
+// every edge has two faces and every sharpness is zero.
+struct FaceNeighbourhood {
+  int degree = 0;
+  [[nodiscard]] int GetNumVertices() const { return degree; }
+};
+
+struct EdgeNeighbourhood {
+  int degrees[2] = {0, 0};  // of the faces on either side
+  [[nodiscard]] static int GetNumFaces() { return 2; }
+  [[nodiscard]] static float GetSharpness() { return 0.0F; }
+  static void GetChildSharpnesses(const OpenSubdiv::Sdc::Crease& /*crease*/, float s[2]) {
+    s[0] = s[1] = 0.0F;
+  }
+  void GetNumVerticesPerFace(int out[]) const {
+    out[0] = degrees[0];
+    out[1] = degrees[1];
+  }
+};
+
+struct VertexNeighbourhood {
+  int valence = 0;
+  [[nodiscard]] int GetNumEdges() const { return valence; }
+  [[nodiscard]] int GetNumFaces() const { return valence; }
+  [[nodiscard]] static float GetSharpness() { return 0.0F; }
+  [[nodiscard]] static float GetChildSharpness(const OpenSubdiv::Sdc::Crease& /*crease*/) {
+    return 0.0F;
+  }
+  float* GetSharpnessPerEdge(float out[]) const {
+    std::fill(out, out + valence, 0.0F);
+    return out;
+  }
+  float* GetChildSharpnessPerEdge(const OpenSubdiv::Sdc::Crease& /*crease*/, float out[]) const {
+    return GetSharpnessPerEdge(out);
+  }
+};
+
+// Sdc's MASK interface over plain arrays.
+struct Mask {
+  using Weight = double;
+  std::vector<double> vertex, edge, face;
+  int num_vertex = 0, num_edge = 0, num_face = 0;
+  bool face_centres = false;
+
+  explicit Mask(int size) : vertex(size), edge(size), face(size) {}
+  [[nodiscard]] int GetNumVertexWeights() const { return num_vertex; }
+  [[nodiscard]] int GetNumEdgeWeights() const { return num_edge; }
+  [[nodiscard]] int GetNumFaceWeights() const { return num_face; }
+  void SetNumVertexWeights(int n) { num_vertex = n; }
+  void SetNumEdgeWeights(int n) { num_edge = n; }
+  void SetNumFaceWeights(int n) { num_face = n; }
+  [[nodiscard]] const double& VertexWeight(int i) const { return vertex[i]; }
+  [[nodiscard]] const double& EdgeWeight(int i) const { return edge[i]; }
+  [[nodiscard]] const double& FaceWeight(int i) const { return face[i]; }
+  double& VertexWeight(int i) { return vertex[i]; }
+  double& EdgeWeight(int i) { return edge[i]; }
+  double& FaceWeight(int i) { return face[i]; }
+  [[nodiscard]] bool AreFaceWeightsForFaceCenters() const { return face_centres; }
+  void SetFaceWeightsForFaceCenters(bool on) { face_centres = on; }
+};
+
+// Face weights of Catmull-Clark's edge and vertex masks apply to the new face points; the other
+// reading (weights on vertices opposite in the face) belongs to other schemes.
+void require_face_centre_weights(const Mask& mask) {
+  if (mask.num_face > 0 && !mask.face_centres)
+    throw std::logic_error("catmull-clark: Sdc gave face weights not meant for face points");
+}
+
+}  // namespace
+
+// OpenSubdiv's Far refiner would need the mesh as a face-vertex list, which cannot express a
+// face running along one edge twice or several edges between two vertices; its Sdc layer gives
+// the same rules for any neighbourhood, and the half-edge mesh supplies the neighbourhoods.
+CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
   using namespace OpenSubdiv;
-  const HalfedgeMesh m = td::compacted(input);
-  for (Face f : m.faces())
-    if (m.degree(f) < 3)
-      throw MeshError(fmt::format(
-          "catmull-clark: face {} has 2 sides, which OpenSubdiv does not accept", f.idx + 1));
-  for (Halfedge h : m.halfedges())
-    if (td::edges_between(m, m.origin(h), m.target(h)).size() > 1)
-      throw MeshError(fmt::format(
-          "catmull-clark: vertices {} and {} are joined by several edges, which OpenSubdiv's "
-          "face-vertex input cannot express",
-          m.origin(h).idx + 1, m.target(h).idx + 1));
+  const Sdc::Scheme<Sdc::SCHEME_CATMARK> scheme(catmark_options());
+  constexpr Sdc::Crease::Rule kSmooth = Sdc::Crease::RULE_SMOOTH;
 
-  const auto refiner = catmark_refiner(m);
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(1));
+  // Dense numbers of the live elements; corner c of edge k and side s is number 2k + s.
+  std::vector<int> vid(m.vertex_capacity(), -1), fid(m.face_capacity(), -1),
+      eid(m.edge_capacity(), -1);
+  const auto vertices = m.vertices();
+  const auto faces = m.faces();
+  const auto edges = m.edges();
+  for (size_t i = 0; i < vertices.size(); ++i) vid[vertices[i].idx] = static_cast<int>(i);
+  for (size_t i = 0; i < faces.size(); ++i) fid[faces[i].idx] = static_cast<int>(i);
+  for (size_t i = 0; i < edges.size(); ++i) eid[edges[i].idx] = static_cast<int>(i);
+  const int nv = m.num_vertices(), nf = m.num_faces(), nh = m.num_halfedges();
+  auto corner_id = [&](Halfedge c) { return 2 * eid[HalfedgeMesh::edge(c).idx] + (c.idx & 1); };
+  auto face_point = [&](Face f) { return nv + fid[f.idx]; };
+  auto edge_point = [&](Halfedge c) { return nv + nf + eid[HalfedgeMesh::edge(c).idx]; };
 
-  struct Point {
-    double p[3] = {0, 0, 0};
-    void Clear() { p[0] = p[1] = p[2] = 0; }
-    void AddWithWeight(const Point& s, double w) {
-      for (int i = 0; i < 3; ++i) p[i] += w * s.p[i];
+  td::RawMesh raw;
+  raw.positions.resize(static_cast<size_t>(nv + nf) + edges.size());
+  int max_size = 2;
+  for (Face f : faces) max_size = std::max(max_size, m.degree(f));
+  for (Vertex v : vertices) max_size = std::max(max_size, m.valence(v));
+  Mask mask(max_size);
+
+  for (Face f : faces) {
+    const auto loop = m.face_loop(f);
+    scheme.ComputeFaceVertexMask(FaceNeighbourhood{static_cast<int>(loop.size())}, mask);
+    Vec3 p = Vec3::Zero();
+    for (size_t i = 0; i < loop.size(); ++i) p += mask.vertex[i] * m.position(m.origin(loop[i]));
+    raw.positions[face_point(f)] = p;
+  }
+  for (Edge e : edges) {
+    const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
+    scheme.ComputeEdgeVertexMask(EdgeNeighbourhood{{m.degree(m.face(h)), m.degree(m.face(t))}},
+                                 mask, kSmooth, kSmooth);
+    require_face_centre_weights(mask);
+    Vec3 p = mask.vertex[0] * m.position(m.origin(h)) + mask.vertex[1] * m.position(m.origin(t));
+    if (mask.num_face > 0)
+      p += mask.face[0] * raw.positions[face_point(m.face(h))] +
+           mask.face[1] * raw.positions[face_point(m.face(t))];
+    raw.positions[edge_point(h)] = p;
+  }
+  for (Vertex v : vertices) {
+    const auto fan = m.vertex_fan(v);
+    scheme.ComputeVertexVertexMask(VertexNeighbourhood{static_cast<int>(fan.size())}, mask, kSmooth,
+                                   kSmooth);
+    require_face_centre_weights(mask);
+    // Smaller weights first, as OpenSubdiv's PrimvarRefiner adds them, for the same round-off.
+    Vec3 p = Vec3::Zero();
+    for (int i = 0; i < mask.num_face; ++i)
+      p += mask.face[i] * raw.positions[face_point(m.face(fan[i]))];
+    for (int i = 0; i < mask.num_edge; ++i) p += mask.edge[i] * m.position(m.target(fan[i]));
+    raw.positions[vid[v.idx]] = p + mask.vertex[0] * m.position(v);
+  }
+
+  // Each old half-edge c gives two edges of the refined mesh: the half of its edge at
+  // origin(c) (edge corner_id(c), refined half-edge first(c) leaving the vertex point), and the
+  // spoke from its edge point to its face point (edge nh + corner_id(c), half-edge in(c) towards
+  // the face point, out(c) back).
+  auto first = [&](Halfedge c) { return 2 * corner_id(c); };
+  auto second = [&](Halfedge c) { return 2 * (corner_id(c) ^ 1) + 1; };
+  auto in = [&](Halfedge c) { return 2 * (nh + corner_id(c)); };
+  auto out = [&](Halfedge c) { return 2 * (nh + corner_id(c)) + 1; };
+  raw.origin.resize(4 * static_cast<size_t>(nh));
+  raw.next.resize(raw.origin.size());
+  raw.face.resize(raw.origin.size());
+  CatmullClarkRefinement result;
+  result.corner_quad.assign(static_cast<size_t>(m.halfedge_capacity()), Face());
+  std::vector<int> quad_start;
+  for (Face f : faces) {
+    for (Halfedge c : m.face_loop(f)) {
+      const int quad = static_cast<int>(quad_start.size());
+      const Halfedge p = m.prev(c);
+      raw.origin[first(c)] = vid[m.origin(c).idx];
+      raw.origin[second(c)] = edge_point(c);
+      raw.origin[in(c)] = edge_point(c);
+      raw.origin[out(c)] = face_point(f);
+      const int loop[4] = {first(c), in(c), out(p), second(p)};
+      for (int i = 0; i < 4; ++i) {
+        raw.next[loop[i]] = loop[(i + 1) % 4];
+        raw.face[loop[i]] = quad;
+      }
+      quad_start.push_back(first(c));
+      result.corner_quad[c.idx] = Face(quad);
     }
-  };
-  const Far::TopologyLevel& fine = refiner->GetLevel(1);
-  std::vector<Point> points(m.num_vertices() + fine.GetNumVertices());
-  for (Vertex v : m.vertices())
-    for (int i = 0; i < 3; ++i) points[v.idx].p[i] = m.position(v)[i];
-  Point* coarse = points.data();
-  Point* refined = points.data() + m.num_vertices();
-  // Double-precision weights: the float default would cost ~1e-8 relative accuracy.
-  Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, coarse, refined);
+  }
+  raw.num_faces = static_cast<int>(quad_start.size());
+  result.mesh = td::build_raw(raw, "catmull-clark");
+  for (size_t q = 0; q < quad_start.size(); ++q)
+    result.mesh.set_halfedge(Face(static_cast<int>(q)), Halfedge(quad_start[q]));
+  return result;
+}
 
-  PolygonSoup soup;
-  for (int v = 0; v < fine.GetNumVertices(); ++v) {
-    const Point& q = points[m.num_vertices() + v];
-    soup.positions.emplace_back(q.p[0], q.p[1], q.p[2]);
-  }
-  for (int f = 0; f < fine.GetNumFaces(); ++f) {
-    const Far::ConstIndexArray fv = fine.GetFaceVertices(f);
-    soup.faces.emplace_back(fv.begin(), fv.end());
-  }
-  return build_mesh(soup);
+HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh) {
+  return catmull_clark_refinement(mesh).mesh;
 }
 
 }  // namespace stitch

@@ -2,8 +2,8 @@
 // like the Bézier patches so that the methods are compared on equal terms.
 #pragma once
 
+#include <array>
 #include <memory>
-#include <string>
 
 #include "stitch/eval/bezier.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
@@ -16,15 +16,19 @@ namespace stitch {
 /// v towards the midpoint of edge(prev(c)), (1,1) at the face centre.
 ///
 /// The constructor builds every face's Bfr surface (in parallel). OpenSubdiv cannot represent
-/// every mesh this library can hold: a face whose loop runs along the same edge twice, and
-/// 2-sided faces (Bfr gives the faces around them no limit surface), are refused with a
-/// MeshError saying so. Faces visiting a vertex twice and several edges between two vertices
-/// are passed on as they are, but Bfr's surface can come apart around them, so on such meshes
-/// the constructor checks that neighbouring patches meet and refuses the mesh if they do not.
+/// every mesh this library holds (2-sided faces, faces running along one edge twice or visiting
+/// a vertex twice, several edges between two vertices); on such meshes the surface is that of
+/// one or two Catmull-Clark steps taken first with OpenSubdiv's rules
+/// (catmull_clark_refinement), which is the same limit surface in the same parameterization.
 /// evaluate() is const and keeps no mutable state, so it may be called concurrently.
 class CatmullClarkSurface {
  public:
   explicit CatmullClarkSurface(const HalfedgeMesh& mesh);
+  /// The surface of a mesh that is `steps_taken` Catmull-Clark steps from the one whose limit
+  /// surface is wanted. OpenSubdiv fits Gregory patches in the smallest regions around
+  /// extraordinary points, two levels below the original mesh; counting the steps keeps those
+  /// regions where they were, so the result is the original's surface up to round-off.
+  CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken);
   ~CatmullClarkSurface();
   CatmullClarkSurface(CatmullClarkSurface&&) noexcept;
   CatmullClarkSurface& operator=(CatmullClarkSurface&&) noexcept;
@@ -34,7 +38,10 @@ class CatmullClarkSurface {
   [[nodiscard]] SurfacePoint evaluate(Corner c, double u, double v) const;
 
  private:
-  void check_patch_sides(const HalfedgeMesh& mesh, const std::string& unusual) const;
+  void init_from_refinement(const HalfedgeMesh& mesh, int steps_taken);
+  /// The refined surface over the whole quad of one corner, in that corner's (u, v).
+  [[nodiscard]] SurfacePoint evaluate_refined_quad(const std::array<Corner, 4>& quad, double u,
+                                                   double v) const;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

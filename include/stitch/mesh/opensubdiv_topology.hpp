@@ -2,12 +2,17 @@
 #pragma once
 
 #include <opensubdiv/far/topologyRefiner.h>
+#include <opensubdiv/sdc/options.h>
 
 #include <memory>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch {
+
+/// The subdivision options every use of OpenSubdiv here shares: Catmull-Clark's own rules
+/// (closed meshes, so the boundary rule never applies but must be named).
+OpenSubdiv::Sdc::Options catmark_options();
 
 /// OpenSubdiv's Catmull-Clark topology of a mesh without deleted elements: vertex i and face f
 /// are the mesh's, each face's vertices in loop order from halfedge(f). Throws MeshError when

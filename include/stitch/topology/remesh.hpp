@@ -3,6 +3,8 @@
 // garbage-collected input (V vertices, E edges, H = 2E half-edges, F faces).
 #pragma once
 
+#include <vector>
+
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch {
@@ -23,11 +25,20 @@ HalfedgeMesh vertex_insertion(const HalfedgeMesh& mesh);
 /// (face f), then a quad per edge (F + e), then a face per old vertex (F + E + v).
 HalfedgeMesh doo_sabin(const HalfedgeMesh& mesh);
 
-/// One Catmull-Clark step through OpenSubdiv (Far::TopologyRefiner, uniform level 1):
-/// vertices in OpenSubdiv's order (the V old vertices, moved, keep their numbers; then one per
-/// face; then one per edge), faces: the quads of face 0 first, then face 1's, ...
-/// Refused on 2-sided faces and on several edges joining the same two vertices, which
-/// OpenSubdiv's face-vertex description cannot express.
+/// One Catmull-Clark step with OpenSubdiv's rules (Sdc::Scheme<SCHEME_CATMARK> masks, the same
+/// weights its Far refiner applies) on any mesh this library holds, including 2-sided faces,
+/// several edges between two vertices and faces running along one edge twice.
+/// Vertices: the V old vertices (moved) keep their numbers, then one per face (V + f), then one
+/// per edge (V + F + e). Faces: one quad per old corner, face by face in loop order from
+/// halfedge(f); the quad of corner c runs from c's vertex point to the edge point of edge(c),
+/// the face point and the edge point of edge(prev(c)), and starts there (halfedge(quad)).
+struct CatmullClarkRefinement {
+  HalfedgeMesh mesh;
+  std::vector<Face> corner_quad;  ///< per half-edge of the input: its quad (invalid if deleted)
+};
+CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& mesh);
+
+/// catmull_clark_refinement(mesh).mesh.
 HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh);
 
 }  // namespace stitch
