@@ -44,7 +44,7 @@ void modeler_vertex_move(benchmark::State& state) {
     benchmark::DoNotOptimize(live.tessellation().positions.data());
   }
   state.counters["faces"] = doc.mesh().num_faces();
-  state.counters["patches"] = static_cast<double>(live.corners().size());
+  state.counters["patches"] = live.num_patches();
   state.counters["recomputed"] = last.recomputed_patches;
 }
 
@@ -74,7 +74,7 @@ void insert_edge(benchmark::State& state, bool surface_only) {
     state.ResumeTiming();
   }
   state.counters["faces"] = doc.mesh().num_faces();
-  state.counters["patches"] = static_cast<double>(live.corners().size());
+  state.counters["patches"] = live.num_patches();
   state.counters["recomputed"] = last.recomputed_patches;
 }
 

@@ -7,6 +7,7 @@
 
 #include <random>
 
+#include "random_operation.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/net/control_net.hpp"
@@ -16,28 +17,6 @@
 
 namespace stitch {
 namespace {
-
-/// A random operation line on the mesh (it may be refused: then the mesh is unchanged).
-std::string random_operation(const HalfedgeMesh& m, std::mt19937& rng) {
-  const auto faces = m.faces();
-  const Face f = faces[rng() % faces.size()];
-  const auto loop = m.face_loop(f);
-  const Halfedge h = loop[rng() % loop.size()];
-  switch (rng() % 4) {
-    case 0: {
-      const Face g = faces[rng() % faces.size()];
-      const auto other = m.face_loop(g);
-      return fmt::format("insert-edge {}@{} {}@{}", m.origin(h).idx + 1, f.idx + 1,
-                         m.origin(other[rng() % other.size()]).idx + 1, g.idx + 1);
-    }
-    case 1:
-      return fmt::format("subdivide-edge {} {}", m.origin(h).idx + 1, m.target(h).idx + 1);
-    case 2:
-      return fmt::format("extrude-face {} 0.3", f.idx + 1);
-    default:
-      return fmt::format("delete-edge {} {}", m.origin(h).idx + 1, m.target(h).idx + 1);
-  }
-}
 
 TEST(RandomEdits, EveryMethodGivesFiniteOutputAndMdcStaysC1) {
   std::mt19937 rng(12345);  // fixed seed: the same 120 meshes every run
@@ -49,7 +28,7 @@ TEST(RandomEdits, EveryMethodGivesFiniteOutputAndMdcStaysC1) {
     for (int k = 0; k < ops; ++k) {
       m.garbage_collection();
       try {
-        apply_operation(m, random_operation(m, rng));
+        apply_operation(m, test::random_operation(m, rng));
       } catch (const MeshError&) {
       }
     }

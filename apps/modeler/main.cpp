@@ -652,9 +652,9 @@ void status_bar(App& app) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
   const Session& s = app.session;
-  ImGui::Text("update %.2f ms (%d of %zu patches%s) | %.0f fps | %s | %s",
+  ImGui::Text("update %.2f ms (%d of %d patches%s) | %.0f fps | %s | %s",
               s.last_update.milliseconds, s.last_update.recomputed_patches,
-              s.surface.corners().size(), s.last_update.full ? ", full" : "", app.fps,
+              s.surface.num_patches(), s.last_update.full ? ", full" : "", app.fps,
               to_string(s.display.method).c_str(), app.status.c_str());
   ImGui::End();
 }

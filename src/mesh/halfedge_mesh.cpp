@@ -108,18 +108,21 @@ void HalfedgeMesh::assign_loop(Halfedge h, Face f) {
 }
 
 void HalfedgeMesh::delete_vertex(Vertex v) {
+  note(v);
   if (!vertex_deleted_[v.idx]) {
     vertex_deleted_[v.idx] = 1;
     ++deleted_vertices_;
   }
 }
 void HalfedgeMesh::delete_edge(Edge e) {
+  note(e);
   if (!edge_deleted_[e.idx]) {
     edge_deleted_[e.idx] = 1;
     ++deleted_edges_;
   }
 }
 void HalfedgeMesh::delete_face(Face f) {
+  note(f);
   if (!face_deleted_[f.idx]) {
     face_deleted_[f.idx] = 1;
     ++deleted_faces_;
@@ -127,6 +130,8 @@ void HalfedgeMesh::delete_face(Face f) {
 }
 
 HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
+  if (journal_open())
+    throw std::logic_error("garbage_collection renumbers everything: not while a journal is open");
   Remap map;
   auto build = [](const std::vector<std::uint8_t>& deleted, std::vector<int>& m) {
     m.assign(deleted.size(), -1);

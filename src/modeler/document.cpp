@@ -43,6 +43,19 @@ auto& controls_of(Options& o, KgonKind kind) {
   return kind == KgonKind::face ? o.face : kind == KgonKind::vertex ? o.vertex : o.edge;
 }
 
+Change topology_change(const HalfedgeMesh::Delta* delta) {
+  Change c;
+  c.kind = Change::Kind::topology;
+  if (delta) {
+    c.vertices = delta->vertices;
+    c.edges = delta->edges;
+    c.faces = delta->faces;
+  } else {
+    c.whole = true;
+  }
+  return c;
+}
+
 }  // namespace
 
 void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered) {
@@ -64,22 +77,33 @@ Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
     : state_{std::move(mesh), std::move(kgons)} {}
 
 Change Document::apply_operation(std::string_view line, OperationReport* report) {
-  DocumentState before = state_;
-  OperationReport r;
-  try {
-    r = stitch::apply_operation(state_.mesh, line);
-  } catch (...) {
-    state_ = std::move(before);  // the library promises no change; make sure of it
-    throw;
-  }
-  if (report) *report = r;
-  if (r.what.empty()) return {};
-  prune_kgon_controls(state_.mesh, state_.kgons, is_remeshing(line));
   std::string label(line);
   label.erase(0, label.find_first_not_of(" \t"));
-  record(Command{std::move(label), Snapshot{std::move(before), state_}});
-  Change c;
-  c.kind = Change::Kind::topology;
+  if (is_remeshing(line)) {  // a new mesh, numbered afresh: keep both whole
+    DocumentState before = state_;
+    const OperationReport r = stitch::apply_operation(state_.mesh, line, Census::counts_only);
+    if (report) *report = r;
+    prune_kgon_controls(state_.mesh, state_.kgons, true);
+    record(Command{std::move(label), Snapshot{std::move(before), state_}});
+    return topology_change(nullptr);
+  }
+  OperationReport r;
+  state_.mesh.begin_journal();
+  try {
+    r = stitch::apply_operation(state_.mesh, line, Census::counts_only);
+  } catch (...) {
+    // The library promises no change; the journal makes sure of it.
+    state_.mesh.apply(state_.mesh.end_journal(), false);
+    throw;
+  }
+  HalfedgeMesh::Delta delta = state_.mesh.end_journal();
+  if (report) *report = r;
+  if (r.what.empty()) return {};
+  KgonOptions kgons_before = state_.kgons;
+  prune_kgon_controls(state_.mesh, state_.kgons, false);
+  Change c = topology_change(&delta);
+  record(Command{std::move(label),
+                 TopologyEdit{std::move(delta), std::move(kgons_before), state_.kgons}});
   return c;
 }
 
@@ -87,9 +111,7 @@ Change Document::replace(DocumentState state, std::string label) {
   Command command{std::move(label), Snapshot{state_, std::move(state)}};
   state_ = std::get<Snapshot>(command.edit).after;
   record(std::move(command));
-  Change c;
-  c.kind = Change::Kind::topology;
-  return c;
+  return topology_change(nullptr);
 }
 
 Change Document::move_vertices(const std::vector<Vertex>& vertices,
@@ -184,10 +206,14 @@ Change Document::apply(const Command& command, bool forward) {
   } else if (const auto* edit = std::get_if<KgonEdit>(&command.edit)) {
     state_.kgons = forward ? edit->after : edit->before;
     c = kgon_change(edit->target);
+  } else if (const auto* topology = std::get_if<TopologyEdit>(&command.edit)) {
+    state_.mesh.apply(topology->mesh, forward);
+    state_.kgons = forward ? topology->kgons_after : topology->kgons_before;
+    c = topology_change(&topology->mesh);
   } else {
     const auto& snapshot = std::get<Snapshot>(command.edit);
     state_ = forward ? snapshot.after : snapshot.before;
-    c.kind = Change::Kind::topology;
+    c = topology_change(nullptr);
   }
   return c;
 }

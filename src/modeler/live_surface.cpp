@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 
 namespace stitch::modeler {
 
@@ -86,10 +87,16 @@ AffectedSet affected_by(const HalfedgeMesh& m, const Change& change) {
   return expand(m, std::move(moved_faces), std::move(a));
 }
 
-bool LiveSurface::layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_live) {
+std::vector<Corner> LiveSurface::corners() const {
+  std::vector<Corner> out;
+  out.reserve(static_cast<size_t>(num_patches_));
+  for (size_t h = 0; h < live_.size(); ++h)
+    if (live_[h]) out.emplace_back(static_cast<int>(h));
+  return out;
+}
+
+void LiveSurface::layout(int slots, const std::vector<int>& changed_slots) {
   const int n = resolution_, per_patch = vertices_per_patch(), per_quads = quads_per_patch();
-  const int slots = mesh.halfedge_capacity();
-  const int old_slots = static_cast<int>(tess_.quads.size()) / std::max(per_quads, 1);
   const size_t nv = static_cast<size_t>(slots) * per_patch;
   tess_.positions.resize(nv, Vec3::Zero());
   tess_.normals.resize(nv, Vec3::Zero());
@@ -97,12 +104,8 @@ bool LiveSurface::layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_
   tess_.patch.resize(nv, -1);
   tess_.level.resize(nv, 0);
   tess_.quads.resize(static_cast<size_t>(slots) * per_quads);
-  corners_ = mesh.halfedges();
-  bool changed = slots != old_slots;
-  for (int h = 0; h < slots; ++h) {
-    const bool live = !mesh.is_deleted(Halfedge(h));
-    if (h < old_slots && h < static_cast<int>(was_live.size()) && was_live[h] == live) continue;
-    changed = true;
+  for (const int h : changed_slots) {
+    const bool live = live_[h] != 0;
     // The same vertex and quad order as tessellate(..., welded = false); dead slots draw nothing.
     const int base = h * per_patch;
     for (int s = 0; s < per_patch; ++s) {
@@ -122,7 +125,6 @@ bool LiveSurface::layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_
                                       base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1}
                  : std::array<int, 4>{base, base, base, base};
   }
-  return changed;
 }
 
 void LiveSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
@@ -150,60 +152,33 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   resolution_ = resolution;
-  mesh_ = mesh;
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
+  const int slots = mesh.halfedge_capacity();
+  live_.assign(static_cast<size_t>(slots), 0);
+  for (Corner c : mesh.halfedges()) live_[c.idx] = 1;
+  num_patches_ = mesh.num_halfedges();
+  std::vector<int> all(static_cast<size_t>(slots));
+  std::iota(all.begin(), all.end(), 0);
   tess_ = SurfaceMesh{};
-  layout(mesh, {});
-  evaluate(corners_, cc.get());
+  layout(slots, all);
+  evaluate(corners(), cc.get());
   UpdateStats stats;
   stats.full = stats.layout_changed = true;
-  stats.candidate_patches = stats.recomputed_patches = static_cast<int>(corners_.size());
+  stats.candidate_patches = stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }
 
-UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOptions& options) {
+UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOptions& options,
+                                         const Change& change) {
+  if (change.whole) return rebuild(m, options, method_, resolution_);
   const Stopwatch watch;
   const auto cc = cc_surface(m, options, method_);  // may refuse: nothing has changed yet
-  const HalfedgeMesh& old = mesh_;
-  const int nh = m.halfedge_capacity(), old_nh = old.halfedge_capacity();
+  const int nh = m.halfedge_capacity(), old_nh = static_cast<int>(live_.size());
 
-  // What differs from the previous mesh. Untouched elements keep their numbers under the
-  // operators, so this is an element-by-element comparison.
-  std::vector<Face> moved_faces;
-  AffectedSet seeds;
-  std::vector<Corner> fresh;  // live corners that had no live patch before
-  std::vector<bool> was_live(old_nh);
-  for (int h = 0; h < old_nh; ++h) was_live[h] = !old.is_deleted(Halfedge(h));
-  for (int i = 0; i < nh; ++i) {
-    const Halfedge h(i);
-    if (m.is_deleted(h)) continue;
-    const bool existed = i < old_nh && was_live[i];
-    if (!existed) fresh.push_back(h);
-    if (existed && old.next(h) == m.next(h) && old.prev(h) == m.prev(h) &&
-        old.origin(h) == m.origin(h) && old.face(h) == m.face(h))
-      continue;
-    moved_faces.push_back(m.face(h));
-    seeds.vertices.push_back(m.origin(h));
-    seeds.edges.push_back(HalfedgeMesh::edge(h));
-  }
-  for (Vertex v : m.vertices()) {
-    const bool same = v.idx < old.vertex_capacity() && !old.is_deleted(v) &&
-                      old.halfedge(v) == m.halfedge(v) && old.position(v) == m.position(v);
-    if (same) continue;
-    seeds.vertices.push_back(v);  // its fan starts elsewhere or it moved
-    for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
-  }
-  for (Face f : m.faces()) {
-    const bool same =
-        f.idx < old.face_capacity() && !old.is_deleted(f) && old.halfedge(f) == m.halfedge(f);
-    if (!same) moved_faces.push_back(f);  // its loop starts elsewhere (K-gon point order)
-  }
-  AffectedSet a = expand(m, std::move(moved_faces), std::move(seeds));
-
-  // Arrays to the new capacities; K-gons and nets of removed elements emptied (as build_kgons
-  // and build_control_nets leave them).
+  // Arrays to the new capacities (an undo can shrink them back); the K-gons and nets of removed
+  // elements are emptied below, as build_kgons and build_control_nets leave them.
   resize_to(kgons_.corner_point, nh);
   resize_to(kgons_.in_face, nh);
   resize_to(kgons_.in_vertex, nh);
@@ -215,41 +190,82 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   ControlNet unused;
   unused.p.fill(Vec3::Zero());
   nets_.resize(static_cast<size_t>(nh), unused);
-  for (int i = 0; i < old_nh && i < nh; ++i)
-    if (was_live[i] && m.is_deleted(Halfedge(i))) {
-      nets_[i].p.fill(Vec3::Zero());  // what's left of a removed corner: never read
-      kgons_.corner_point[i] = Vec3::Zero();
-      kgons_.in_face[i] = kgons_.in_vertex[i] = kgons_.in_next_edge[i] = kgons_.in_prev_edge[i] =
-          -1;
-      if (i % 2 == 0) kgons_.edge[i / 2] = Kgon{};
+  for (int h = nh; h < old_nh; ++h) num_patches_ -= live_[h];
+  live_.resize(static_cast<size_t>(nh), 0);
+
+  // The touched elements seed the update: every touched half-edge's face, vertex and edge, the
+  // fans of touched vertices, and touched faces (their loops may start elsewhere, which orders
+  // their K-gon points).
+  std::vector<Face> moved_faces;
+  AffectedSet seeds;
+  std::vector<Corner> fresh;  // live corners that had no live patch before
+  std::vector<int> relaid;    // slots whose liveness changed
+  for (Edge e : change.edges) {
+    if (e.idx >= m.edge_capacity()) continue;  // removed again by an undo: truncated above
+    for (int side = 0; side < 2; ++side) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, side);
+      const bool now = !m.is_deleted(h);
+      if (now != (live_[h.idx] != 0)) {
+        relaid.push_back(h.idx);
+        num_patches_ += now ? 1 : -1;
+        live_[h.idx] = now ? 1 : 0;
+        if (now) fresh.push_back(h);
+      }
+      if (!now) {
+        nets_[h.idx].p.fill(Vec3::Zero());  // what's left of a removed corner: never read
+        kgons_.corner_point[h.idx] = Vec3::Zero();
+        kgons_.in_face[h.idx] = kgons_.in_vertex[h.idx] = kgons_.in_next_edge[h.idx] =
+            kgons_.in_prev_edge[h.idx] = -1;
+        kgons_.edge[e.idx] = Kgon{};
+        continue;
+      }
+      moved_faces.push_back(m.face(h));
+      seeds.vertices.push_back(m.origin(h));
+      seeds.edges.push_back(e);
     }
-  for (int v = 0; v < std::min(old.vertex_capacity(), m.vertex_capacity()); ++v)
-    if (!old.is_deleted(Vertex(v)) && m.is_deleted(Vertex(v))) kgons_.vertex[v] = Kgon{};
-  for (int f = 0; f < std::min(old.face_capacity(), m.face_capacity()); ++f)
-    if (!old.is_deleted(Face(f)) && m.is_deleted(Face(f))) kgons_.face[f] = Kgon{};
+  }
+  for (Vertex v : change.vertices) {
+    if (v.idx >= m.vertex_capacity()) continue;
+    if (m.is_deleted(v)) {
+      kgons_.vertex[v.idx] = Kgon{};
+      continue;
+    }
+    seeds.vertices.push_back(v);
+    for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
+  }
+  for (Face f : change.faces) {
+    if (f.idx >= m.face_capacity()) continue;
+    if (m.is_deleted(f)) {
+      kgons_.face[f.idx] = Kgon{};
+      continue;
+    }
+    moved_faces.push_back(f);
+  }
+  for (int h = old_nh; h < nh; ++h)  // new slots born dead still need their empty quads
+    if (!live_[h]) relaid.push_back(h);
+  AffectedSet a = expand(m, std::move(moved_faces), std::move(seeds));
 
   update_kgons(m, options, kgons_, a.faces, a.vertices, a.edges);
   std::vector<Corner> changed = fresh;
-  std::vector<bool> is_fresh(nh, false);
-  for (Corner c : fresh) is_fresh[c.idx] = true;
+  std::sort(fresh.begin(), fresh.end());
   for (Corner c : a.corners) {
     ControlNet net = build_control_net(m, kgons_, c);
-    if (is_fresh[c.idx] || net != nets_[c.idx]) {
+    const bool is_fresh = std::binary_search(fresh.begin(), fresh.end(), c);
+    if (is_fresh || net != nets_[c.idx]) {
       nets_[c.idx] = net;
-      if (!is_fresh[c.idx]) changed.push_back(c);
+      if (!is_fresh) changed.push_back(c);
     }
   }
   for (Corner c : fresh)  // not all fresh corners need be candidates (e.g. after an undo)
     nets_[c.idx] = build_control_net(m, kgons_, c);
 
-  const bool layout_changed = layout(m, was_live);
-  mesh_ = m;
+  layout(nh, relaid);
   UpdateStats stats;
-  stats.layout_changed = layout_changed;
+  stats.layout_changed = !relaid.empty() || nh != old_nh;
   stats.candidate_patches = static_cast<int>(a.corners.size());
   if (cc) {
     stats.full = true;
-    evaluate(corners_, cc.get());
+    evaluate(corners(), cc.get());
   } else {
     sort_unique(changed);
     evaluate(changed, nullptr);
@@ -265,18 +281,17 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
     recomputed_.clear();
     return {};
   }
-  if (change.kind == Change::Kind::topology) return update_topology(mesh, options);
+  if (change.kind == Change::Kind::topology) return update_topology(mesh, options, change);
   const Stopwatch watch;
   std::vector<Corner> candidates;
   if (change.all_kgons) {
     kgons_ = build_kgons(mesh, options);
-    candidates = corners_;
+    candidates = corners();
   } else {
     AffectedSet a = affected_by(mesh, change);
     update_kgons(mesh, options, kgons_, a.faces, a.vertices, a.edges);
     candidates = std::move(a.corners);
   }
-  for (Vertex v : change.moved) mesh_.position(v) = mesh.position(v);
   std::vector<Corner> changed;
   for (Corner c : candidates) {
     ControlNet net = build_control_net(mesh, kgons_, c);
@@ -290,7 +305,7 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
     // The limit surface ignores K-gons, and OpenSubdiv rebuilds it whole after a move.
     changed.clear();
     if (change.kind == Change::Kind::geometry) {
-      changed = corners_;
+      changed = corners();
       cc = cc_surface(mesh, options, method_);
     }
   }
@@ -309,10 +324,10 @@ UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions&
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
-  evaluate(corners_, cc.get());
+  evaluate(corners(), cc.get());
   UpdateStats stats;
   stats.full = true;
-  stats.recomputed_patches = static_cast<int>(corners_.size());
+  stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }
@@ -323,12 +338,14 @@ UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOpti
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method_);
   resolution_ = resolution;
+  std::vector<int> all(live_.size());
+  std::iota(all.begin(), all.end(), 0);
   tess_ = SurfaceMesh{};
-  layout(mesh, {});
-  evaluate(corners_, cc.get());
+  layout(static_cast<int>(live_.size()), all);
+  evaluate(corners(), cc.get());
   UpdateStats stats;
   stats.full = stats.layout_changed = true;
-  stats.recomputed_patches = static_cast<int>(corners_.size());
+  stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }

@@ -199,7 +199,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     s.apply(s.document.move_vertices({v}, {p}));
     result.message = fmt::format("vertex {} moved; {} of {} patches recomputed in {:.2f} ms",
                                  v.idx + 1, s.last_update.recomputed_patches,
-                                 s.surface.corners().size(), s.last_update.milliseconds);
+                                 s.surface.num_patches(), s.last_update.milliseconds);
   } else if (cmd == "select") {
     expect(w, 1, 3, "select vertex V | edge V W[@F] | face F | corner V@F | none");
     if (w[1] == "none") {
@@ -376,7 +376,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         "V {} E {} F {}, Euler {}, genus {}, components {}; method {}, {} patches, last update "
         "{:.2f} ms ({} patches)",
         t.vertices, t.edges, t.faces, t.euler, t.genus, t.components, to_string(s.display.method),
-        s.surface.corners().size(), s.last_update.milliseconds, s.last_update.recomputed_patches);
+        s.surface.num_patches(), s.last_update.milliseconds, s.last_update.recomputed_patches);
     if (hooks.print) hooks.print(result.message);
   } else if (cmd == "quit" || cmd == "exit") {
     expect(w, 0, 0, "quit");

@@ -15,7 +15,10 @@ namespace td = topology_detail;
 
 void delete_face(HalfedgeMesh& mesh, Face f) {
   td::check_face(mesh, f, "delete-face");
-  HalfedgeMesh m = mesh;  // worked on a copy: the original is replaced only by a valid result
+  // Worked on a copy: the original changes only once the result is known to be valid, and then
+  // only in the elements the copy's journal says were touched.
+  HalfedgeMesh m = mesh;
+  m.begin_journal();
   const int nh = m.halfedge_capacity();
   std::vector<std::uint8_t> gone(m.edge_capacity(), 0);
   for (Halfedge h : m.face_loop(f)) gone[HalfedgeMesh::edge(h).idx] = 1;
@@ -100,7 +103,7 @@ void delete_face(HalfedgeMesh& mesh, Face f) {
   if (!problems.empty())
     throw MeshError(fmt::format("delete-face: deleting face {} would not give a valid mesh: {}",
                                 f.idx + 1, problems.front()));
-  mesh = std::move(m);
+  mesh.apply(m.end_journal(), true);
 }
 
 }  // namespace stitch

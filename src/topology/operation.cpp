@@ -87,7 +87,7 @@ std::string stats_text(const TopologyStats& s) {
                      s.faces, s.euler, s.genus, s.components);
 }
 
-OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) {
+OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, Census census) {
   const std::string_view op = w[0];
   OperationReport report;
   if (op == "insert-edge") {
@@ -166,13 +166,24 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w) 
                     "delete-face, doo-sabin, vertex-insertion, catmull-clark, dual)",
                     op));
   }
-  report.stats = topology_stats(mesh);
+  if (census == Census::full) {
+    report.stats = topology_stats(mesh);
+  } else {
+    report.components_counted = false;
+    report.stats.vertices = mesh.num_vertices();
+    report.stats.edges = mesh.num_edges();
+    report.stats.faces = mesh.num_faces();
+    report.stats.euler = report.stats.vertices - report.stats.edges + report.stats.faces;
+  }
   return report;
 }
 
 }  // namespace
 
 std::string OperationReport::summary(std::string_view op_text) const {
+  if (!components_counted)
+    return fmt::format("{}: {}; V {} E {} F {}, Euler {}", op_text, what, stats.vertices,
+                       stats.edges, stats.faces, stats.euler);
   return fmt::format("{}: {}; {}", op_text, what, stats_text(stats));
 }
 
@@ -243,7 +254,7 @@ Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_v
                   v.idx + 1, w.idx + 1, f.idx + 1));
 }
 
-OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line) {
+OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line, Census census) {
   if (const size_t hash = line.find('#'); hash != std::string_view::npos) {
     // '#' also marks an occurrence in a corner (V@F#k): only a '#' after a blank starts a comment.
     size_t comment = std::string_view::npos;
@@ -257,7 +268,7 @@ OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line) {
   const std::vector<std::string_view> words = split_words(line);
   if (words.empty()) return {};
   try {
-    return run(mesh, words);
+    return run(mesh, words, census);
   } catch (const MeshError& e) {
     const std::string msg = e.what();
     // Operator messages already start with the operation's name; parser messages do not.

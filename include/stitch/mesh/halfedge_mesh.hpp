@@ -12,14 +12,23 @@
 //
 // Elements are removed by marking them deleted, so the numbers of untouched elements stay stable
 // while a sequence of operators runs; garbage_collection() compacts the arrays, keeping order.
+//
+// While a journal is open (begin_journal ... end_journal) every editing call records the element
+// it is about to change, so a sequence of edits yields a Delta: the touched elements with their
+// state before and after. Applying it backward or forward undoes or redoes the edits exactly, at
+// a cost proportional to what they touched, and its element lists tell whatever depends on the
+// mesh where to update.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // Vec3::cross
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stitch {
@@ -75,7 +84,11 @@ class HalfedgeMesh {
   [[nodiscard]] Halfedge rotate_cw(Halfedge h) const { return next(twin(h)); }
 
   [[nodiscard]] const Vec3& position(Vertex v) const { return positions_[v.idx]; }
-  Vec3& position(Vertex v) { return positions_[v.idx]; }
+  /// Writable position; counts as a change of v for an open journal.
+  Vec3& position(Vertex v) {
+    note(v);
+    return positions_[v.idx];
+  }
   [[nodiscard]] const std::vector<Vec3>& positions() const { return positions_; }
 
   // --- sizes and iteration ----------------------------------------------------------------
@@ -124,13 +137,27 @@ class HalfedgeMesh {
   Halfedge add_edge(Vertex a, Vertex b);
   /// Links h -> n (sets next(h) = n and prev(n) = h).
   void link(Halfedge h, Halfedge n) {
+    note(edge(h));
+    note(edge(n));
     he_next_[h.idx] = n.idx;
     he_prev_[n.idx] = h.idx;
   }
-  void set_face(Halfedge h, Face f) { he_face_[h.idx] = f.idx; }
-  void set_origin(Halfedge h, Vertex v) { he_origin_[h.idx] = v.idx; }
-  void set_halfedge(Face f, Halfedge h) { face_he_[f.idx] = h.idx; }
-  void set_halfedge(Vertex v, Halfedge h) { vertex_he_[v.idx] = h.idx; }
+  void set_face(Halfedge h, Face f) {
+    note(edge(h));
+    he_face_[h.idx] = f.idx;
+  }
+  void set_origin(Halfedge h, Vertex v) {
+    note(edge(h));
+    he_origin_[h.idx] = v.idx;
+  }
+  void set_halfedge(Face f, Halfedge h) {
+    note(f);
+    face_he_[f.idx] = h.idx;
+  }
+  void set_halfedge(Vertex v, Halfedge h) {
+    note(v);
+    vertex_he_[v.idx] = h.idx;
+  }
   /// Sets face(h) = f for every half-edge of the loop through h and makes h the face's start.
   void assign_loop(Halfedge h, Face f);
   void delete_vertex(Vertex v);
@@ -141,13 +168,90 @@ class HalfedgeMesh {
   struct Remap {
     std::vector<int> vertex, edge, face;
   };
-  /// Removes deleted elements, keeping the relative order of the rest.
+  /// Removes deleted elements, keeping the relative order of the rest. Not allowed while a
+  /// journal is open (it renumbers everything).
   Remap garbage_collection();
 
-  /// Exact equality of connectivity and positions (element numbering included).
+  // --- journal: what a sequence of edits changed --------------------------------------------
+  struct VertexState {
+    Vec3 position;
+    int halfedge = -1;
+    std::uint8_t deleted = 0;
+    bool operator==(const VertexState&) const = default;
+  };
+  struct EdgeState {  ///< both half-edges, side 0 first
+    std::array<int, 2> next{}, prev{}, origin{}, face{};
+    std::uint8_t deleted = 0;
+    bool operator==(const EdgeState&) const = default;
+  };
+  struct FaceState {
+    int halfedge = -1;
+    std::uint8_t deleted = 0;
+    bool operator==(const FaceState&) const = default;
+  };
+  /// The mesh at one end of a delta: capacities, deletion counts, and the states of the touched
+  /// elements that exist at that end (index, state).
+  struct DeltaEnd {
+    int vertex_capacity = 0, edge_capacity = 0, face_capacity = 0;
+    int deleted_vertices = 0, deleted_edges = 0, deleted_faces = 0;
+    std::vector<std::pair<int, VertexState>> vertices;
+    std::vector<std::pair<int, EdgeState>> edges;
+    std::vector<std::pair<int, FaceState>> faces;
+  };
+  struct Delta {
+    /// Every element an editing call touched, new ones included, in increasing order (a
+    /// superset of those whose state differs: a touched element may end as it began).
+    std::vector<Vertex> vertices;
+    std::vector<Edge> edges;
+    std::vector<Face> faces;
+    DeltaEnd before, after;
+  };
+  /// Starts recording. Throws std::logic_error if a journal is already open.
+  void begin_journal();
+  [[nodiscard]] bool journal_open() const { return journal_.state != nullptr; }
+  /// Stops recording and returns what changed since begin_journal(). Throws std::logic_error if
+  /// no journal is open (e.g. the mesh was replaced by assignment in between).
+  Delta end_journal();
+  /// Brings the mesh from one end of the delta to the other: from `before` to `after` when
+  /// `forward`, else back. The mesh must be in the state of the end it starts from (e.g. a copy
+  /// of the mesh the delta was recorded on). An open journal records the change, which may
+  /// then not remove elements.
+  void apply(const Delta& delta, bool forward);
+
+  /// Exact equality of connectivity and positions (element numbering included); an open
+  /// journal is bookkeeping, not part of the mesh's value.
   [[nodiscard]] bool operator==(const HalfedgeMesh& o) const = default;
 
  private:
+  struct Journal;
+  /// Holds the open journal. Copies of the mesh do not inherit it; it never affects equality.
+  struct JournalSlot {
+    std::unique_ptr<Journal> state;
+    JournalSlot();
+    JournalSlot(const JournalSlot& other);
+    JournalSlot& operator=(const JournalSlot& other);
+    JournalSlot(JournalSlot&& other) noexcept;
+    JournalSlot& operator=(JournalSlot&& other) noexcept;
+    ~JournalSlot();
+    bool operator==(const JournalSlot& /*other*/) const { return true; }
+  };
+  void note(Vertex v) {
+    if (journal_.state) record(v);
+  }
+  void note(Edge e) {
+    if (journal_.state) record(e);
+  }
+  void note(Face f) {
+    if (journal_.state) record(f);
+  }
+  void record(Vertex v);
+  void record(Edge e);
+  void record(Face f);
+  [[nodiscard]] VertexState state_of(Vertex v) const;
+  [[nodiscard]] EdgeState state_of(Edge e) const;
+  [[nodiscard]] FaceState state_of(Face f) const;
+  [[nodiscard]] DeltaEnd end_state() const;  ///< capacities and counts only
+
   std::vector<Vec3> positions_;
   std::vector<int> vertex_he_;
   std::vector<std::uint8_t> vertex_deleted_;
@@ -156,6 +260,7 @@ class HalfedgeMesh {
   std::vector<int> face_he_;
   std::vector<std::uint8_t> face_deleted_;
   int deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+  JournalSlot journal_;
 };
 
 }  // namespace stitch

@@ -2,9 +2,10 @@
 // recorded commands so every change can be undone and redone without limit.
 //
 // Commands store what they need to go both ways exactly: a vertex move its positions before and
-// after, a K-gon edit the controls before and after, a topology operation the whole document
-// before and after (operators renumber, so a snapshot is the only exact inverse; it costs memory
-// proportional to the mesh per topology step, which is fine for interactive sessions).
+// after, a K-gon edit the controls before and after, a local topology operation the mesh's
+// journal (the touched elements before and after, HalfedgeMesh::Delta) and the K-gon controls
+// before and after. Remeshings and replacing the document renumber everything, so those keep
+// the whole document before and after.
 #pragma once
 
 #include <string>
@@ -30,10 +31,12 @@ struct Change {
   Kind kind = Kind::none;
   std::vector<Vertex> moved;  ///< geometry: the vertices that moved
   /// kgons: the elements whose controls changed (all_kgons: the global control changed).
+  /// topology: the elements the edit touched (HalfedgeMesh::Delta), unless `whole`.
   std::vector<Face> faces;
   std::vector<Vertex> vertices;
   std::vector<Edge> edges;
   bool all_kgons = false;
+  bool whole = false;  ///< topology: everything may have changed (renumbered or replaced)
 
   [[nodiscard]] bool empty() const { return kind == Kind::none; }
 };
@@ -54,8 +57,10 @@ class Document {
   [[nodiscard]] const KgonOptions& kgon_options() const { return state_.kgons; }
   [[nodiscard]] const DocumentState& state() const { return state_; }
 
-  /// Applies one `stitch edit --ops` line (apply_operation). Throws MeshError with the document
-  /// unchanged when the line is refused. A blank line changes nothing and records nothing.
+  /// Applies one `stitch edit --ops` line (apply_operation, which counts V, E, F and the Euler
+  /// characteristic for the report but not genus and components, whose count would need a pass
+  /// over the whole mesh). Throws MeshError with the document unchanged when the line is
+  /// refused. A blank line changes nothing and records nothing.
   Change apply_operation(std::string_view line, OperationReport* report = nullptr);
   /// Replaces the whole document (new primitive, opened file) as one undoable step.
   Change replace(DocumentState state, std::string label);
@@ -93,12 +98,16 @@ class Document {
     KgonTarget target;
     KgonOptions before, after;
   };
+  struct TopologyEdit {
+    HalfedgeMesh::Delta mesh;
+    KgonOptions kgons_before, kgons_after;
+  };
   struct Snapshot {
     DocumentState before, after;
   };
   struct Command {
     std::string label;
-    std::variant<MoveVertices, KgonEdit, Snapshot> edit;
+    std::variant<MoveVertices, KgonEdit, TopologyEdit, Snapshot> edit;
     long revision_before = 0, revision_after = 0;  ///< for modified()
   };
 

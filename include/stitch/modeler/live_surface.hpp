@@ -12,14 +12,16 @@
 // The renderer can re-upload just the changed blocks; after a topology edit the vertex count may
 // change, so the caller uploads the whole buffer then (still without re-evaluating anything).
 //
-// A topology edit is handled by comparing the mesh with the previous one element by element
-// (cheap integer comparisons): changed or new half-edges, vertices and faces seed the same local
-// update as a vertex move. Rebuilt in full (documented in docs/modeler.md): a change of the
-// global K-gon control (it reaches every extraordinary K-gon; nets are still compared so only
-// changed patches are re-evaluated), method and resolution changes, and every change for the
-// Catmull-Clark method, whose OpenSubdiv limit surface is built for the whole mesh.
+// A topology edit comes with the elements it touched (the mesh's journal, see Change): those
+// seed the same local update as a vertex move, so its cost follows the size of the edit, not of
+// the mesh. Rebuilt in full (documented in docs/modeler.md): remeshings and replaced documents,
+// a change of the global K-gon control (it reaches every extraordinary K-gon; nets are still
+// compared so only changed patches are re-evaluated), method and resolution changes, and every
+// change for the Catmull-Clark method, whose OpenSubdiv limit surface is built for the whole
+// mesh.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -65,8 +67,10 @@ class LiveSurface {
   [[nodiscard]] const KgonSet& kgons() const { return kgons_; }
   /// Indexed by corner (half-edge); empty nets for deleted half-edges.
   [[nodiscard]] const std::vector<ControlNet>& nets() const { return nets_; }
-  /// The live corners in index order.
-  [[nodiscard]] const std::vector<Corner>& corners() const { return corners_; }
+  /// The live corners in index order (a pass over every slot).
+  [[nodiscard]] std::vector<Corner> corners() const;
+  /// How many patches there are (live corners).
+  [[nodiscard]] int num_patches() const { return num_patches_; }
   /// One block per half-edge slot (see above).
   [[nodiscard]] const SurfaceMesh& tessellation() const { return tess_; }
   /// The corners whose patches the last update re-evaluated, in increasing order (every live
@@ -81,17 +85,17 @@ class LiveSurface {
   /// Evaluates the listed corners' patches into their blocks; `cc` is the Catmull-Clark surface
   /// when that is the method.
   void evaluate(const std::vector<Corner>& patches, const Surface* cc);
-  /// Sizes the blocks to the mesh's half-edge capacity and sets uv, patch and quads of every
-  /// slot whose liveness differs from `was_live` (all of them when `was_live` is empty).
-  bool layout(const HalfedgeMesh& mesh, const std::vector<bool>& was_live);
-  UpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options);
+  /// Sizes the blocks to `slots` and sets uv, patch and quads of the listed slots from live_.
+  void layout(int slots, const std::vector<int>& changed_slots);
+  UpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options,
+                              const Change& change);
 
   Method method_ = Method::mdc;
   int resolution_ = 8;
-  HalfedgeMesh mesh_;  ///< the mesh of the last update, to find what a topology edit changed
   KgonSet kgons_;
   std::vector<ControlNet> nets_;
-  std::vector<Corner> corners_;
+  std::vector<std::uint8_t> live_;  ///< per slot (half-edge): has a patch
+  int num_patches_ = 0;
   SurfaceMesh tess_;
   std::vector<Corner> recomputed_;
 };

@@ -15,10 +15,17 @@ namespace stitch {
 
 struct OperationReport {
   std::string what;     ///< what changed, e.g. "split face 3 into faces 3 and 7 by new edge 13"
-  TopologyStats stats;  ///< counts after the operation
-  /// One line: the operation, what changed, then V E F, Euler characteristic, genus, components.
+  TopologyStats stats;  ///< counts after the operation (see apply_operation's `census`)
+  bool components_counted = true;  ///< stats has genus and components (and the histograms)
+  /// One line: the operation, what changed, then V E F, Euler characteristic, and genus and
+  /// components when counted.
   [[nodiscard]] std::string summary(std::string_view op_text) const;
 };
+
+/// How much of the topology apply_operation recounts for its report: everything (a pass over
+/// the whole mesh), or only what is known without one (V, E, F, Euler characteristic), for
+/// callers that must not pay in proportion to the mesh, such as the modeler.
+enum class Census { full, counts_only };
 
 /// The words of a line, split at white space.
 std::vector<std::string_view> split_words(std::string_view line);
@@ -27,7 +34,8 @@ std::vector<std::string_view> split_words(std::string_view line);
 /// Leading/trailing blanks and a trailing `# comment` are ignored. Throws MeshError (the mesh is
 /// unchanged) for an unknown operation, bad arguments, or a refused operation, saying why.
 /// A blank or comment-only line does nothing and returns an empty `what`.
-OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line);
+OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line,
+                                Census census = Census::full);
 
 /// The operations with their arguments, one per entry, for help texts.
 std::vector<std::string> operation_synopsis();
