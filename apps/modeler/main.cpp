@@ -257,11 +257,11 @@ bool same_controls(const KgonOptions& a, const KgonOptions& b) {
 }
 
 /// After any session change: upload what the main surface recomputed, and bring the split
-/// view's surface along. The split surface is updated as after a topology edit, which compares
-/// the mesh with its previous one and so finds moved vertices and topology changes alike; a
-/// K-gon control change rebuilds it.
+/// view's surface along with every document change since the last call (Session::take_changes,
+/// which covers moves and topology edits alike); a K-gon control change rebuilds it.
 void after_change(App& app, const Change& change, bool full) {
   Session& s = app.session;
+  const Change missed = s.take_changes();
   const bool layout = full || change.kind == Change::Kind::topology || s.last_update.layout_changed;
   sync_view(app, app.main_view, s.surface, layout);
   if (s.display.split) {
@@ -274,8 +274,7 @@ void after_change(App& app, const Change& change, bool full) {
       app.split_current = true;
       app.split_kgons = s.document.kgon_options();
     } else {
-      stats = app.split_surface.update(s.document.mesh(), s.document.kgon_options(),
-                                       change_of(Change::Kind::topology));
+      stats = app.split_surface.update(s.document.mesh(), s.document.kgon_options(), missed);
     }
     if (!app.split_view.renderer) app.split_view.renderer = std::make_unique<Renderer>();
     sync_view(app, app.split_view, app.split_surface, stats.layout_changed || stats.full);
@@ -653,9 +652,9 @@ void status_bar(App& app) {
                    ImGuiWindowFlags_NoNav);
   const Session& s = app.session;
   ImGui::Text("update %.2f ms (%d of %d patches%s) | %.0f fps | %s | %s",
-              s.last_update.milliseconds, s.last_update.recomputed_patches,
-              s.surface.num_patches(), s.last_update.full ? ", full" : "", app.fps,
-              to_string(s.display.method).c_str(), app.status.c_str());
+              s.last_update.milliseconds, s.last_update.recomputed_patches, s.surface.num_patches(),
+              s.last_update.full ? ", full" : "", app.fps, to_string(s.display.method).c_str(),
+              app.status.c_str());
   ImGui::End();
 }
 

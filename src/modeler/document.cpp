@@ -58,6 +58,28 @@ Change topology_change(const HalfedgeMesh::Delta* delta) {
 
 }  // namespace
 
+Change combined(const std::vector<Change>& changes) {
+  Change out;
+  if (changes.empty()) return out;
+  out.kind = Change::Kind::topology;
+  for (const Change& c : changes) {
+    out.whole = out.whole || c.whole;
+    out.vertices.insert(out.vertices.end(), c.moved.begin(), c.moved.end());
+    if (c.kind != Change::Kind::topology) continue;
+    out.vertices.insert(out.vertices.end(), c.vertices.begin(), c.vertices.end());
+    out.edges.insert(out.edges.end(), c.edges.begin(), c.edges.end());
+    out.faces.insert(out.faces.end(), c.faces.begin(), c.faces.end());
+  }
+  auto sort_unique = [](auto& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  };
+  sort_unique(out.vertices);
+  sort_unique(out.edges);
+  sort_unique(out.faces);
+  return out;
+}
+
 void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered) {
   if (renumbered) {
     kgons.face.clear();

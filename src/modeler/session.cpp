@@ -81,7 +81,25 @@ Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
   view.set_standard(View::iso, mesh_bounds());
 }
 
+void Session::remember(Change change) {
+  constexpr size_t kMostKept = 64;
+  if (untaken_.size() >= kMostKept) {
+    untaken_.clear();
+    change = Change{};
+    change.kind = Change::Kind::topology;
+    change.whole = true;
+  }
+  untaken_.push_back(std::move(change));
+}
+
+Change Session::take_changes() {
+  Change c = combined(untaken_);
+  untaken_.clear();
+  return c;
+}
+
 const UpdateStats& Session::apply(const Change& change) {
+  remember(change);
   if (change.kind == Change::Kind::topology) selection.reset();
   try {
     last_update = surface.update(document.mesh(), document.kgon_options(), change);
@@ -92,6 +110,10 @@ const UpdateStats& Session::apply(const Change& change) {
 }
 
 void Session::rebuild() {
+  Change whole;
+  whole.kind = Change::Kind::topology;
+  whole.whole = true;
+  remember(std::move(whole));
   try {
     last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
                                   display.resolution);

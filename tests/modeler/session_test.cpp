@@ -71,6 +71,43 @@ TEST(ModelerSession, CatmullClarkShowsTheCubeWithAHole) {
   EXPECT_TRUE(s.warning.empty()) << s.warning;
 }
 
+// The split view's surface follows the document only through Session::take_changes, a batch of
+// lines at a time; after each batch it must equal a surface built from scratch (bit for bit:
+// the same code on the same numbers).
+TEST(ModelerSession, ASecondSurfaceFollowsTheDocumentThroughTakenChanges) {
+  Session s(make_cube());
+  LiveSurface follower;
+  follower.rebuild(s.document.mesh(), s.document.kgon_options(), Method::asc, 3);
+  EXPECT_TRUE(s.take_changes().whole);  // the session's own first build
+  const std::vector<std::vector<std::string>> batches = {
+      {"insert-edge 1@1 5@2"},
+      {"move-vertex 2 1.2 1.1 -1", "subdivide-edge 1 5@1", "extrude-face 3 0.3"},
+      {"undo", "undo"},
+      {"redo"},
+      {"mode zebra"},
+      {"catmull-clark", "undo"}};
+  for (const auto& batch : batches) {
+    SCOPED_TRACE(batch.front());
+    ASSERT_FALSE(run_script(s, batch, {}));
+    const Change missed = s.take_changes();
+    follower.update(s.document.mesh(), s.document.kgon_options(), missed);
+    LiveSurface fresh;
+    fresh.rebuild(s.document.mesh(), s.document.kgon_options(), Method::asc, 3);
+    ASSERT_EQ(follower.corners(), fresh.corners());
+    const int per = fresh.vertices_per_patch();
+    int mismatches = 0;
+    for (Corner c : fresh.corners()) {
+      mismatches += follower.nets()[c.idx] == fresh.nets()[c.idx] ? 0 : 1;
+      for (int k = c.idx * per; k < (c.idx + 1) * per; ++k)
+        mismatches += follower.tessellation().positions[k] == fresh.tessellation().positions[k] &&
+                              follower.tessellation().normals[k] == fresh.tessellation().normals[k]
+                          ? 0
+                          : 1;
+    }
+    EXPECT_EQ(mismatches, 0);
+  }
+}
+
 TEST(ModelerSession, SelectionDrivesKgonEdits) {
   Session s(make_cube());
   ASSERT_FALSE(run_script(s, {"select face 3", "kgon scale 0.5", "kgon rotate 20"}, {}));

@@ -41,6 +41,12 @@ struct Change {
   [[nodiscard]] bool empty() const { return kind == Kind::none; }
 };
 
+/// One topology change covering `changes` made one after the other, for a surface that has seen
+/// none of them: the union of what they touched (moved vertices count as touched), whole if any
+/// was. K-gon control changes are not covered (the surface needs the controls themselves).
+/// Kind none when `changes` is empty.
+Change combined(const std::vector<Change>& changes);
+
 /// An element whose K-gon a control applies to; element -1 = the global control.
 struct KgonTarget {
   KgonKind kind = KgonKind::face;

@@ -48,6 +48,10 @@ struct Session {
   explicit Session(HalfedgeMesh mesh = {});
   /// Brings the surface up to date after a document change; returns (and keeps) the stats.
   const UpdateStats& apply(const Change& change);
+  /// The document changes since the last call, for a second surface that follows the document
+  /// (the split view): combined() of them, or whole after a rebuild. Kind none if there were
+  /// none.
+  Change take_changes();
   /// Rebuilds the surface from scratch (after replacing the document or the method).
   void rebuild();
   /// The bounding box of the live input vertices.
@@ -57,6 +61,9 @@ struct Session {
 
  private:
   void fall_back_from_cc(const std::string& why);
+  /// Changes not yet taken; after many, one whole change stands for them all.
+  std::vector<Change> untaken_;
+  void remember(Change change);
 };
 
 /// Opens a mesh (OBJ/OFF/PLY) or project file into the session: a fresh history, the view framed
