@@ -116,12 +116,6 @@ struct App {
   int primitive_index = 1;
 };
 
-Change change_of(Change::Kind kind) {
-  Change c;
-  c.kind = kind;
-  return c;
-}
-
 int framebuffer_width(GLFWwindow* w) {
   int fw = 0, fh = 0;
   glfwGetFramebufferSize(w, &fw, &fh);
@@ -232,20 +226,14 @@ void sync_view(App& app, View3D& view, const LiveSurface& surface, bool full) {
       view.renderer->set_surface(input_faces(s.document.mesh()));
     view.input_uploaded = true;
   } else if (full || view.geometry_dirty || view.input_uploaded) {
-    view.renderer->set_surface(surface.tessellation());
+    view.renderer->set_block_surface(surface.tessellation(), surface.vertices_per_patch(),
+                                     surface.quads_per_patch());
     view.input_uploaded = false;
   } else {
-    // Contiguous runs of recomputed patches (blocks are indexed by corner), one upload each.
-    const int per = surface.vertices_per_patch();
-    const auto& changed = surface.recomputed();
-    size_t i = 0;
-    while (i < changed.size()) {
-      const int first = changed[i].idx;
-      int count = 1;
-      while (i + count < changed.size() && changed[i + count].idx == first + count) ++count;
-      view.renderer->update_surface_vertices(surface.tessellation(), first * per, count * per);
-      i += count;
-    }
+    // The blocks (indexed by corner) of recomputed patches and of slots laid out again.
+    std::vector<int> blocks = surface.relaid();
+    for (Corner c : surface.recomputed()) blocks.push_back(c.idx);
+    view.renderer->update_surface_blocks(surface.tessellation(), std::move(blocks));
   }
   view.geometry_dirty = false;
 }
@@ -259,11 +247,10 @@ bool same_controls(const KgonOptions& a, const KgonOptions& b) {
 /// After any session change: upload what the main surface recomputed, and bring the split
 /// view's surface along with every document change since the last call (Session::take_changes,
 /// which covers moves and topology edits alike); a K-gon control change rebuilds it.
-void after_change(App& app, const Change& change, bool full) {
+void after_change(App& app, bool full) {
   Session& s = app.session;
   const Change missed = s.take_changes();
-  const bool layout = full || change.kind == Change::Kind::topology || s.last_update.layout_changed;
-  sync_view(app, app.main_view, s.surface, layout);
+  sync_view(app, app.main_view, s.surface, full);
   if (s.display.split) {
     UpdateStats stats;
     if (!app.split_current || app.split_surface.method() != *s.display.split ||
@@ -277,7 +264,7 @@ void after_change(App& app, const Change& change, bool full) {
       stats = app.split_surface.update(s.document.mesh(), s.document.kgon_options(), missed);
     }
     if (!app.split_view.renderer) app.split_view.renderer = std::make_unique<Renderer>();
-    sync_view(app, app.split_view, app.split_surface, stats.layout_changed || stats.full);
+    sync_view(app, app.split_view, app.split_surface, stats.full);
   } else {
     app.split_current = false;
   }
@@ -331,15 +318,12 @@ void run_line(App& app, const std::string& line, const ScriptHooks& hooks) {
   const DisplaySettings& now = app.session.display;
   const bool full = now.method != before.method || now.resolution != before.resolution ||
                     now.input_polygons != before.input_polygons || now.split != before.split ||
-                    app.session.path != path_before || app.session.last_update.full ||
-                    app.session.last_update.layout_changed;
+                    app.session.path != path_before || app.session.last_update.full;
   // A save leaves nothing to recover.
   if (was_modified && !app.session.document.modified() && line.rfind("save", 0) == 0)
     remove_autosave(app);
   // run_script_line kept the surface current; what changed is in session.surface.recomputed().
-  Change c;
-  c.kind = Change::Kind::geometry;
-  after_change(app, c, full);
+  after_change(app, full);
 }
 
 void draw_scene(App& app) {
@@ -495,7 +479,7 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
         s.apply(s.document.set_kgon_control(t, n, merge));
         app.status = fmt::format("K-gon updated: {} patches in {:.2f} ms",
                                  s.last_update.recomputed_patches, s.last_update.milliseconds);
-        after_change(app, change_of(Change::Kind::kgons), s.last_update.full);
+        after_change(app, s.last_update.full);
       } catch (const std::exception& e) {
         app.status = e.what();
       }
@@ -723,7 +707,7 @@ void handle_mouse(App& app) {
         app.drag_has_moved = true;
         app.status = fmt::format("vertex {} at {:.3f} {:.3f} {:.3f}", s.selection->index + 1, p.x(),
                                  p.y(), p.z());
-        after_change(app, change_of(Change::Kind::geometry), false);
+        after_change(app, false);
       } catch (const std::exception& ex) {
         app.status = ex.what();
       }
@@ -893,7 +877,7 @@ int main(int argc, char** argv) {
         app.session.path.clear();
         app.session.document.mark_modified();
       }
-      after_change(app, change_of(Change::Kind::topology), true);
+      after_change(app, true);
 
       bool quit = false;
       if (!script.empty()) {
@@ -909,9 +893,8 @@ int main(int argc, char** argv) {
             const bool full = now.method != before.method || now.resolution != before.resolution ||
                               now.input_polygons != before.input_polygons ||
                               now.split != before.split || app.session.path != path_before ||
-                              app.session.last_update.full ||
-                              app.session.last_update.layout_changed;
-            after_change(app, change_of(Change::Kind::geometry), full);
+                              app.session.last_update.full;
+            after_change(app, full);
           } catch (const std::exception& e) {
             std::cerr << script << ":" << i + 1 << ": " << e.what() << "\n";
             status = 2;

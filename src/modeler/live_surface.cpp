@@ -104,6 +104,7 @@ void LiveSurface::layout(int slots, const std::vector<int>& changed_slots) {
   tess_.patch.resize(nv, -1);
   tess_.level.resize(nv, 0);
   tess_.quads.resize(static_cast<size_t>(slots) * per_quads);
+  relaid_ = changed_slots;
   for (const int h : changed_slots) {
     const bool live = live_[h] != 0;
     // The same vertex and quad order as tessellate(..., welded = false); dead slots draw nothing.
@@ -277,11 +278,12 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
 
 UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& options,
                                 const Change& change) {
+  if (change.kind == Change::Kind::topology) return update_topology(mesh, options, change);
+  relaid_.clear();
   if (change.kind == Change::Kind::none) {
     recomputed_.clear();
     return {};
   }
-  if (change.kind == Change::Kind::topology) return update_topology(mesh, options, change);
   const Stopwatch watch;
   std::vector<Corner> candidates;
   if (change.all_kgons) {

@@ -4,9 +4,11 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <stdexcept>
+#include <vector>
 
 #include "shaders.hpp"
 #include "stitch/render/gl_context.hpp"
@@ -168,6 +170,9 @@ struct Renderer::Impl {
   GLuint surface_program = 0, line_program = 0, marker_program = 0;
   Buffer surface;
   int surface_vertices = 0;
+  // A block surface (set_block_surface): block sizes and the blocks the buffers have room for;
+  // zero for a plain surface.
+  int block_vertices = 0, block_quads = 0, block_capacity = 0;
   std::array<Buffer, num_overlays> overlays;
   Buffer markers;
 
@@ -200,35 +205,42 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-void Renderer::set_surface(const SurfaceMesh& s) {
-  check_surface(s);
-  std::vector<SurfaceVertex> vertices(s.positions.size());
-  for (int i = 0; i < s.num_vertices(); ++i) vertices[i] = surface_vertex(s, i);
-  std::vector<std::uint32_t> indices;
-  indices.reserve(s.quads.size() * 6);
-  for (const auto& q : s.quads) {
-    for (const int i : q) {
-      if (i < 0 || i >= s.num_vertices()) {
+namespace {
+
+void check_quads(const SurfaceMesh& s) {
+  for (const auto& q : s.quads)
+    for (const int i : q)
+      if (i < 0 || i >= s.num_vertices())
         throw std::out_of_range(
             fmt::format("surface quad refers to vertex {} of {}", i, s.num_vertices()));
-      }
-    }
-    // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
-    for (const auto& t : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
-      indices.insert(indices.end(), t.begin(), t.end());
-    }
+}
+
+std::vector<SurfaceVertex> surface_vertices(const SurfaceMesh& s, int first, int count) {
+  std::vector<SurfaceVertex> vertices(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i) vertices[i] = surface_vertex(s, first + i);
+  return vertices;
+}
+
+// Both triangles of quads [first, first + count), degenerate ones included.
+std::vector<std::uint32_t> quad_triangles(const SurfaceMesh& s, int first, int count) {
+  std::vector<std::uint32_t> indices;
+  indices.reserve(static_cast<size_t>(count) * 6);
+  for (int k = first; k < first + count; ++k) {
+    const auto& q = s.quads[k];
+    for (const int i : {q[0], q[1], q[2], q[0], q[2], q[3]})
+      indices.push_back(static_cast<std::uint32_t>(i));
   }
-  Buffer& b = impl_->surface;
-  glBindVertexArray(b.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
-  // DYNAMIC_DRAW: the modeler rewrites vertex ranges of edited patches.
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(SurfaceVertex)),
-               vertices.data(), GL_DYNAMIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-               static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
-               GL_STATIC_DRAW);
+  return indices;
+}
+
+// DYNAMIC_DRAW: the modeler rewrites ranges of edited patches. `capacity` bytes are allocated,
+// the data fills the start.
+void buffer_data(GLenum target, size_t capacity, size_t size, const void* data) {
+  glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_DRAW);
+  if (size > 0) glBufferSubData(target, 0, static_cast<GLsizeiptr>(size), data);
+}
+
+void set_surface_attributes() {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(SurfaceVertex),
                         reinterpret_cast<void*>(offsetof(SurfaceVertex, position)));
@@ -241,9 +253,116 @@ void Renderer::set_surface(const SurfaceMesh& s) {
   glEnableVertexAttribArray(3);
   glVertexAttribIPointer(3, 1, GL_INT, sizeof(SurfaceVertex),
                          reinterpret_cast<void*>(offsetof(SurfaceVertex, level)));
+}
+
+}  // namespace
+
+void Renderer::set_surface(const SurfaceMesh& s) {
+  check_surface(s);
+  check_quads(s);
+  const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
+  std::vector<std::uint32_t> indices;
+  indices.reserve(s.quads.size() * 6);
+  for (const auto& q : s.quads) {
+    // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
+    for (const auto& t : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+      indices.insert(indices.end(), t.begin(), t.end());
+    }
+  }
+  Buffer& b = impl_->surface;
+  glBindVertexArray(b.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  const size_t vertex_bytes = vertices.size() * sizeof(SurfaceVertex);
+  buffer_data(GL_ARRAY_BUFFER, vertex_bytes, vertex_bytes, vertices.data());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+  const size_t index_bytes = indices.size() * sizeof(std::uint32_t);
+  buffer_data(GL_ELEMENT_ARRAY_BUFFER, index_bytes, index_bytes, indices.data());
+  set_surface_attributes();
   glBindVertexArray(0);
   b.count = static_cast<GLsizei>(indices.size());
   impl_->surface_vertices = s.num_vertices();
+  impl_->block_vertices = impl_->block_quads = impl_->block_capacity = 0;
+}
+
+void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
+                                 int quads_per_block) {
+  check_surface(s);
+  check_quads(s);
+  if (vertices_per_block < 1 || quads_per_block < 1 || s.num_vertices() % vertices_per_block != 0 ||
+      static_cast<int>(s.quads.size()) != s.num_vertices() / vertices_per_block * quads_per_block)
+    throw std::invalid_argument(fmt::format(
+        "a block surface of {} vertices and {} quads cannot have blocks of {} vertices and {} "
+        "quads",
+        s.num_vertices(), s.quads.size(), vertices_per_block, quads_per_block));
+  const int blocks = s.num_vertices() / vertices_per_block;
+  // Room for half as many blocks again: growing past it re-uploads everything, so over a
+  // session that cost is spread thin, as for a std::vector.
+  const int capacity = blocks + blocks / 2 + 16;
+  const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
+  const std::vector<std::uint32_t> indices = quad_triangles(s, 0, static_cast<int>(s.quads.size()));
+  Buffer& b = impl_->surface;
+  glBindVertexArray(b.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+  buffer_data(GL_ARRAY_BUFFER,
+              static_cast<size_t>(capacity) * vertices_per_block * sizeof(SurfaceVertex),
+              vertices.size() * sizeof(SurfaceVertex), vertices.data());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+  buffer_data(GL_ELEMENT_ARRAY_BUFFER,
+              static_cast<size_t>(capacity) * quads_per_block * 6 * sizeof(std::uint32_t),
+              indices.size() * sizeof(std::uint32_t), indices.data());
+  set_surface_attributes();
+  glBindVertexArray(0);
+  b.count = static_cast<GLsizei>(indices.size());
+  impl_->surface_vertices = s.num_vertices();
+  impl_->block_vertices = vertices_per_block;
+  impl_->block_quads = quads_per_block;
+  impl_->block_capacity = capacity;
+}
+
+void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> blocks) {
+  Impl& r = *impl_;
+  if (r.block_vertices == 0)
+    throw std::logic_error("update_surface_blocks: no block surface has been uploaded");
+  check_surface(s);
+  const int per_v = r.block_vertices, per_q = r.block_quads;
+  if (s.num_vertices() % per_v != 0 ||
+      static_cast<int>(s.quads.size()) != s.num_vertices() / per_v * per_q)
+    throw std::invalid_argument("update_surface_blocks: the surface's blocks changed size");
+  const int count = s.num_vertices() / per_v, old_count = r.surface_vertices / per_v;
+  if (count > r.block_capacity) {
+    set_block_surface(s, per_v, per_q);
+    return;
+  }
+  for (int k = old_count; k < count; ++k) blocks.push_back(k);  // new blocks: all of them
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+  glBindVertexArray(r.surface.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, r.surface.vbo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.surface.ebo);
+  for (size_t i = 0; i < blocks.size();) {  // one upload per run of consecutive blocks
+    const int first = blocks[i];
+    if (first < 0 || first >= count)
+      throw std::out_of_range(
+          fmt::format("update_surface_blocks: no block {} in a surface of {}", first, count));
+    size_t n = 1;
+    while (i + n < blocks.size() && blocks[i + n] == first + static_cast<int>(n)) ++n;
+    const int run = static_cast<int>(std::min<size_t>(n, static_cast<size_t>(count - first)));
+    const auto vertices = surface_vertices(s, first * per_v, run * per_v);
+    glBufferSubData(
+        GL_ARRAY_BUFFER,
+        static_cast<GLintptr>(static_cast<size_t>(first) * per_v * sizeof(SurfaceVertex)),
+        static_cast<GLsizeiptr>(vertices.size() * sizeof(SurfaceVertex)), vertices.data());
+    const auto indices = quad_triangles(s, first * per_q, run * per_q);
+    glBufferSubData(
+        GL_ELEMENT_ARRAY_BUFFER,
+        static_cast<GLintptr>(static_cast<size_t>(first) * per_q * 6 * sizeof(std::uint32_t)),
+        static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
+    i += n;
+  }
+  glBindVertexArray(0);
+  r.surface.count = static_cast<GLsizei>(static_cast<size_t>(count) * per_q * 6);
+  r.surface_vertices = s.num_vertices();
 }
 
 void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
@@ -254,8 +373,7 @@ void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int coun
         fmt::format("cannot update vertices [{}, {}) of a surface of {} vertices (uploaded: {})",
                     first, first + count, s.num_vertices(), impl_->surface_vertices));
   }
-  std::vector<SurfaceVertex> vertices(count);
-  for (int i = 0; i < count; ++i) vertices[i] = surface_vertex(s, first + i);
+  const std::vector<SurfaceVertex> vertices = surface_vertices(s, first, count);
   glBindBuffer(GL_ARRAY_BUFFER, impl_->surface.vbo);
   glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(first * sizeof(SurfaceVertex)),
                   static_cast<GLsizeiptr>(count * sizeof(SurfaceVertex)), vertices.data());

@@ -133,6 +133,76 @@ TEST_F(RendererTest, UpdatingOnePatchChangesOnlyThatPatch) {
   EXPECT_THROW(renderer_->update_surface_vertices(sphere_, 480, 10), std::out_of_range);
 }
 
+// The modeler's block surface: updating some blocks (and adding or dropping blocks at the end)
+// must draw exactly what uploading the whole result draws. The same triangles in the same
+// order give the same pixels, so images are compared for equality.
+TEST_F(RendererTest, BlockUpdatesDrawWhatAFullUploadDraws) {
+  constexpr int kBlockVertices = 81, kBlockQuads = 64;  // cube_sphere(8): 6 patches of 8x8
+  ASSERT_EQ(sphere_.quads.size(), 6u * kBlockQuads);
+  RenderStyle style;
+  style.mode = ShadingMode::patches;
+  auto full_upload_image = [&](const SurfaceMesh& s) {
+    renderer_->set_surface(s);
+    const Image im = render(style);
+    renderer_->set_block_surface(sphere_, kBlockVertices, kBlockQuads);
+    return im;
+  };
+  renderer_->set_block_surface(sphere_, kBlockVertices, kBlockQuads);
+  const Image whole = render(style);
+  EXPECT_EQ(test::mean_difference(whole, full_upload_image(sphere_)), 0.0);
+
+  // Block 0 pushed out, block 2 emptied (degenerate quads, as for a deleted corner), the last
+  // block dropped.
+  SurfaceMesh edited = sphere_;
+  for (int i = 0; i < kBlockVertices; ++i) edited.positions[i] *= 1.3;
+  for (int q = 2 * kBlockQuads; q < 3 * kBlockQuads; ++q) {
+    const int base = 2 * kBlockVertices;
+    edited.quads[q] = {base, base, base, base};
+  }
+  const auto drop_last = [&](SurfaceMesh& s) {
+    s.positions.resize(5 * kBlockVertices);
+    s.normals.resize(5 * kBlockVertices);
+    s.uv.resize(5 * kBlockVertices);
+    s.patch.resize(5 * kBlockVertices);
+    s.level.resize(5 * kBlockVertices);
+    s.quads.resize(5 * kBlockQuads);
+  };
+  drop_last(edited);
+  const Image expected = full_upload_image(edited);
+  EXPECT_GT(test::mean_difference(whole, expected), 0.5);
+  renderer_->set_block_surface(sphere_, kBlockVertices, kBlockQuads);
+  renderer_->update_surface_blocks(edited, {0, 2});
+  EXPECT_EQ(test::mean_difference(expected, render(style)), 0.0);
+  // Back: blocks 0 and 2 listed, block 5 comes back as a new block at the end.
+  renderer_->update_surface_blocks(sphere_, {2, 0});
+  EXPECT_EQ(test::mean_difference(whole, render(style)), 0.0);
+
+  // Growing past the room kept (6 + 3 + 16 blocks) uploads everything again.
+  SurfaceMesh big = sphere_;
+  for (int copy = 0; copy < 4; ++copy) {
+    const int offset = big.num_vertices();
+    for (int i = 0; i < sphere_.num_vertices(); ++i) {
+      big.positions.push_back(sphere_.positions[i] * (0.5 + 0.1 * copy));
+      big.normals.push_back(sphere_.normals[i]);
+      big.uv.push_back(sphere_.uv[i]);
+      big.patch.push_back(sphere_.patch[i] + 6 * (copy + 1));
+      big.level.push_back(sphere_.level[i]);
+    }
+    for (auto q : sphere_.quads) {
+      for (int& i : q) i += offset;
+      big.quads.push_back(q);
+    }
+  }
+  const Image big_image = full_upload_image(big);
+  renderer_->update_surface_blocks(big, {});
+  EXPECT_EQ(test::mean_difference(big_image, render(style)), 0.0);
+
+  EXPECT_THROW(renderer_->update_surface_blocks(big, {99}), std::out_of_range);
+  EXPECT_THROW(renderer_->set_block_surface(sphere_, 80, kBlockQuads), std::invalid_argument);
+  renderer_->set_surface(sphere_);
+  EXPECT_THROW(renderer_->update_surface_blocks(sphere_, {0}), std::logic_error);
+}
+
 TEST_F(RendererTest, PngRoundTrips) {
   const Image im = render({}, 40, 30);
   const auto png = encode_png(im);

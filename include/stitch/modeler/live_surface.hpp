@@ -76,6 +76,10 @@ class LiveSurface {
   /// The corners whose patches the last update re-evaluated, in increasing order (every live
   /// corner after a full rebuild).
   [[nodiscard]] const std::vector<Corner>& recomputed() const { return recomputed_; }
+  /// The slots the last update laid out again (a patch appeared or went; every slot after a
+  /// full rebuild). With recomputed(), the blocks a renderer must upload again
+  /// (Renderer::update_surface_blocks).
+  [[nodiscard]] const std::vector<int>& relaid() const { return relaid_; }
   /// Corner c's block is [c.idx * vertices_per_patch(), (c.idx + 1) * vertices_per_patch()),
   /// its quads [c.idx * quads_per_patch(), ...).
   [[nodiscard]] int vertices_per_patch() const { return (resolution_ + 1) * (resolution_ + 1); }
@@ -98,6 +102,7 @@ class LiveSurface {
   int num_patches_ = 0;
   SurfaceMesh tess_;
   std::vector<Corner> recomputed_;
+  std::vector<int> relaid_;
 };
 
 }  // namespace stitch::modeler
