@@ -46,7 +46,7 @@ run render $H -o $F/cube_hole_cc.png --size 480x480 --view front --method cc --m
 run render $H -o $F/cube_hole_mdc.png --size 480x480 --view front --method mdc --mode zebra --resolution 16
 run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra --resolution 16
 run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra --resolution 16
-#    The hole that OpenSubdiv can take: both faces dented, then joined by a tube (all quads).
+#    A hole made by connect-faces instead: both faces dented, then joined by a tube (all quads).
 run edit $C --op "extrude-face 1 -0.4 0.5" --op "extrude-face 2 -0.4 0.5" --op "connect-faces 1 2" -o $F/cube_tunnel.obj
 run render $F/cube_tunnel.obj -o $F/cube_tunnel_cc.png --size 480x480 --eye 2.5,-3.5,4 --method cc --mode zebra --resolution 16
 run render $F/cube_tunnel.obj -o $F/cube_tunnel_mdc.png --size 480x480 --eye 2.5,-3.5,4 --method mdc --mode zebra --resolution 16
