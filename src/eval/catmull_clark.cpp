@@ -207,7 +207,14 @@ struct CatmullClarkSurface::Impl {
   // When the mesh needed a Catmull-Clark step first: the refined mesh's surface, and per
   // half-edge of this mesh the four corners of its quad there (from its vertex point on).
   std::unique_ptr<CatmullClarkSurface> refined;
-  std::vector<std::array<Corner, 4>> quad_corners;
+  std::vector<std::array<Corner, 4>> quad_corners;  // invalid corners for deleted half-edges
+
+  [[nodiscard]] bool live(Corner c) const {
+    if (c.idx < 0) return false;
+    const auto i = static_cast<size_t>(c.idx);
+    return refined ? i < quad_corners.size() && quad_corners[i][0].valid()
+                   : i < corner_face.size() && corner_face[i] >= 0;
+  }
 };
 
 CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : CatmullClarkSurface(mesh, 0) {}
@@ -308,10 +315,8 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
 void CatmullClarkSurface::init_from_refinement(const HalfedgeMesh& mesh, int steps_taken) {
   const CatmullClarkRefinement step = catmull_clark_refinement(mesh);
   Impl& impl = *impl_;
-  impl.corner_face.assign(static_cast<size_t>(mesh.halfedge_capacity()), -1);
   impl.quad_corners.assign(static_cast<size_t>(mesh.halfedge_capacity()), {});
   for (Corner c : mesh.halfedges()) {
-    impl.corner_face[c.idx] = 0;  // marks the live corners for evaluate()'s check
     const auto loop = step.mesh.face_loop(step.corner_quad[c.idx]);
     std::copy(loop.begin(), loop.end(), impl.quad_corners[c.idx].begin());
   }
@@ -324,8 +329,7 @@ CatmullClarkSurface& CatmullClarkSurface::operator=(CatmullClarkSurface&&) noexc
 
 SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   const Impl& impl = *impl_;
-  if (c.idx < 0 || c.idx >= static_cast<int>(impl.corner_face.size()) ||
-      impl.corner_face[c.idx] < 0) {
+  if (!impl.live(c)) {
     throw MeshError(
         fmt::format("cc: half-edge {} (0-based) is not a live corner of the mesh", c.idx));
   }

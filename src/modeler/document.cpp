@@ -6,6 +6,8 @@
 #include <cmath>
 #include <utility>
 
+#include "sort_unique.hpp"
+
 namespace stitch::modeler {
 
 namespace {
@@ -70,13 +72,9 @@ Change combined(const std::vector<Change>& changes) {
     out.edges.insert(out.edges.end(), c.edges.begin(), c.edges.end());
     out.faces.insert(out.faces.end(), c.faces.begin(), c.faces.end());
   }
-  auto sort_unique = [](auto& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-  };
-  sort_unique(out.vertices);
-  sort_unique(out.edges);
-  sort_unique(out.faces);
+  detail::sort_unique(out.vertices);
+  detail::sort_unique(out.edges);
+  detail::sort_unique(out.faces);
   return out;
 }
 

@@ -6,15 +6,13 @@
 #include <chrono>
 #include <numeric>
 
+#include "sort_unique.hpp"
+
 namespace stitch::modeler {
 
 namespace {
 
-template <class H>
-void sort_unique(std::vector<H>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
+using detail::sort_unique;
 
 class Stopwatch {
  public:

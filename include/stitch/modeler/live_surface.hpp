@@ -9,8 +9,8 @@
 // topology edit adds or removes elements (the operators keep the numbers of untouched elements).
 // A slot whose half-edge is deleted keeps its place with degenerate quads (nothing is drawn) and
 // patch = -1. The live blocks, in corner order, are exactly tessellate(..., welded = false).
-// The renderer can re-upload just the changed blocks; after a topology edit the vertex count may
-// change, so the caller uploads the whole buffer then (still without re-evaluating anything).
+// The renderer re-uploads just the blocks of recomputed() patches and relaid() slots, also after
+// a topology edit that adds or removes slots (Renderer::update_surface_blocks).
 //
 // A topology edit comes with the elements it touched (the mesh's journal, see Change): those
 // seed the same local update as a vertex move, so its cost follows the size of the edit, not of
@@ -44,7 +44,7 @@ AffectedSet affected_by(const HalfedgeMesh& mesh, const Change& change);
 
 struct UpdateStats {
   bool full = false;            ///< everything was re-evaluated
-  bool layout_changed = false;  ///< slots were added, removed, revived or killed: upload all
+  bool layout_changed = false;  ///< slots were added, removed, revived or killed (see relaid())
   int candidate_patches = 0;    ///< nets rebuilt and compared
   int recomputed_patches = 0;   ///< patches re-evaluated
   double milliseconds = 0.0;    ///< wall time of the update

@@ -7,7 +7,8 @@
 // Surface buffers are laid out for partial updates: the vertex buffer is the SurfaceMesh's own
 // vertex array, so a tessellation with one contiguous vertex block per patch (tessellate with
 // welded = false) lets an editor re-upload only the patches it changed (patch_vertex_ranges +
-// update_surface_vertices), without touching the index buffer.
+// update_surface_vertices). A block surface (set_block_surface) also gives each block its own
+// range of the index buffer, so blocks can appear and disappear (update_surface_blocks).
 #pragma once
 
 #include <array>
