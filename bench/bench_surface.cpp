@@ -37,10 +37,10 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/opensubdiv_topology.hpp"
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
-#include "stitch/mesh/opensubdiv_topology.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/insert_edge.hpp"
 #include "stitch/topology/primitives.hpp"

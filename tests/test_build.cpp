@@ -1,5 +1,5 @@
-// Building half-edge meshes from files: the bundled examples, the shared OpenSubdiv shapes (closed,
-// with boundary, non-manifold), and the refusal of invalid polygon soups.
+// Building half-edge meshes from files: the bundled examples, the OpenSubdiv regression shapes
+// (closed, with boundary, non-manifold), and the refusal of invalid polygon soups.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -23,8 +23,8 @@ using stitch::test::error_of;
 std::string example(const std::string& name) {
   return stitch::test::example_path(name + ".obj");
 }
-std::string shared_mesh(const std::string& name) {
-  return stitch::test::shared_path(name + ".obj");
+std::string opensubdiv_mesh(const std::string& name) {
+  return stitch::test::opensubdiv_shape(name + ".obj");
 }
 /// Signed volume enclosed by the faces, each fanned from its first corner: positive when the
 /// faces are oriented outward.
@@ -126,7 +126,7 @@ class ClosedShapes : public ::testing::TestWithParam<ExpectedShape> {};
 TEST_P(ClosedShapes, Build) {
   const ExpectedShape& x = GetParam();
   std::vector<std::string> warnings;
-  const HalfedgeMesh mesh = stitch::read_mesh(shared_mesh(x.name), {}, nullptr, &warnings);
+  const HalfedgeMesh mesh = stitch::read_mesh(opensubdiv_mesh(x.name), {}, nullptr, &warnings);
   EXPECT_TRUE(stitch::find_problems(mesh).empty());
   const stitch::TopologyStats s = stitch::topology_stats(mesh);
   EXPECT_EQ(s.vertices, x.vertices);
@@ -157,7 +157,7 @@ INSTANTIATE_TEST_SUITE_P(OpenSubdiv, ClosedShapes,
 class BoundaryShapes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BoundaryShapes, RefusedUnlessHolesAreFilled) {
-  const std::string path = shared_mesh(GetParam());
+  const std::string path = opensubdiv_mesh(GetParam());
   const std::string message = error_of([&] { (void)stitch::read_mesh(path); });
   EXPECT_NE(message.find("boundary"), std::string::npos) << message;
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -188,7 +188,7 @@ void PrintTo(const NonManifoldShape& x, std::ostream* os) {
 class NonManifoldShapes : public ::testing::TestWithParam<NonManifoldShape> {};
 
 TEST_P(NonManifoldShapes, RefusedWithAMessageNamingTheProblem) {
-  const std::string path = shared_mesh(GetParam().name);
+  const std::string path = opensubdiv_mesh(GetParam().name);
   for (bool fill_holes : {false, true}) {
     BuildOptions options;
     options.fill_holes = fill_holes;

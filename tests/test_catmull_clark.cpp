@@ -9,10 +9,10 @@
 #include <thread>
 #include <vector>
 
+#include "mesh/opensubdiv_topology.hpp"
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
-#include "stitch/mesh/opensubdiv_topology.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/net/control_net.hpp"
 #include "stitch/topology/insert_edge.hpp"
@@ -26,7 +26,7 @@ namespace {
 namespace Osd = OpenSubdiv;
 
 std::string shape(const std::string& name) {
-  return std::string(STITCH_SHARED_DATA_DIR) + "/" + name + ".obj";
+  return std::string(STITCH_OPENSUBDIV_SHAPES_DIR) + "/" + name + ".obj";
 }
 
 HalfedgeMesh load(const std::string& name) {

@@ -58,7 +58,7 @@ TEST(CliSmooth, UnweldedWantsPlyAndRefusesOtherwiseWithoutWriting) {
 
 TEST(CliSmooth, RefusesBoundaryUnlessHolesAreFilled) {
   TempFolder folder;
-  const std::string in = test::shared_path("catmark_pawn.obj");
+  const std::string in = test::opensubdiv_shape("catmark_pawn.obj");
   auto r = stitch_cli(folder, "smooth '" + in + "' -o s.obj --resolution 1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("boundary"), std::string::npos) << r.err;

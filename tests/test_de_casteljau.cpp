@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "eval/split_net.hpp"
 #include "stitch/eval/bezier.hpp"
 #include "stitch/eval/bezier_surface.hpp"
 #include "stitch/eval/de_casteljau.hpp"

@@ -10,8 +10,8 @@
 
 namespace stitch::test {
 
-inline std::string shared_path(const std::string& name) {
-  return std::string(STITCH_SHARED_DATA_DIR) + "/" + name;
+inline std::string opensubdiv_shape(const std::string& name) {
+  return std::string(STITCH_OPENSUBDIV_SHAPES_DIR) + "/" + name;
 }
 inline std::string example_path(const std::string& name) {
   return std::string(STITCH_EXAMPLES_DIR) + "/" + name;
@@ -28,8 +28,9 @@ std::string error_of(F&& f) {
   return "";
 }
 
-/// The closed orientable meshes of the shared OpenSubdiv set (see its README).
-inline const std::vector<std::string>& closed_shared_meshes() {
+/// The closed orientable meshes of the OpenSubdiv regression shapes (tests/data/opensubdiv-shapes,
+/// see its README).
+inline const std::vector<std::string>& closed_opensubdiv_shapes() {
   static const std::vector<std::string> names{
       "bilinear_cube.obj",          "catmark_cube.obj",       "catmark_torus.obj",
       "catmark_torus_creases0.obj", "catmark_pyramid.obj",    "catmark_smoothtris0.obj",

@@ -24,7 +24,7 @@ TEST(DooSabin, WeightsSumToOne) {
 }
 
 TEST(Kgons, EveryCornerHasFourPointsAndExtraordinaryKgonsArePlanar) {
-  const HalfedgeMesh mesh = read_mesh(test::shared_path("catmark_pyramid.obj"));
+  const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"));
   const KgonSet k = build_kgons(mesh);
   for (Halfedge h : mesh.halfedges()) {
     EXPECT_GE(k.in_face[h.idx], 0);
@@ -66,7 +66,7 @@ TEST(Kgons, ControlsScaleRotateAndRegularize) {
 }
 
 TEST(ControlNets, BoundaryPointsAreMidpointsAndNeighboursShareCurves) {
-  const HalfedgeMesh mesh = read_mesh(test::shared_path("catmark_pyramid.obj"));
+  const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"));
   const BezierSurface s = build_bezier_surface(mesh);
   for (Halfedge h : mesh.halfedges()) {
     const ControlNet& n = s.nets[h.idx];
@@ -88,7 +88,7 @@ TEST(ControlNets, BoundaryPointsAreMidpointsAndNeighboursShareCurves) {
 
 TEST(Surface, NormalsPointOutwardOnConvexMeshes) {
   for (const char* name : {"catmark_cube.obj", "loop_tetrahedron.obj", "loop_icosahedron.obj"}) {
-    const HalfedgeMesh mesh = read_mesh(test::shared_path(name));
+    const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape(name));
     Vec3 centre = Vec3::Zero();
     for (Vertex v : mesh.vertices()) centre += mesh.position(v);
     centre /= mesh.num_vertices();
@@ -108,8 +108,8 @@ TEST(Surface, NormalsPointOutwardOnConvexMeshes) {
 // jump across every boundary a matter of round-off; 1e-8 degrees is ~1e-10 rad, some 10^5 times
 // double epsilon, leaving room for the ~40 nested splits at t = 2^-12 but nothing more.
 TEST(Continuity, MdcIsC1AcrossEveryBoundaryOfEveryClosedSharedMesh) {
-  for (const std::string& name : test::closed_shared_meshes()) {
-    const HalfedgeMesh mesh = read_mesh(test::shared_path(name));
+  for (const std::string& name : test::closed_opensubdiv_shapes()) {
+    const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape(name));
     const ContinuityReport r = analyze_continuity(mesh, Surface(mesh, Method::mdc));
     EXPECT_LT(r.touching_ev.max_deg, 1e-8) << name;
     EXPECT_LT(r.away_from_ev.max_deg, 1e-8) << name;

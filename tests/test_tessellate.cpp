@@ -48,8 +48,8 @@ void expect_welded_surface_ok(const HalfedgeMesh& input, Method method, int reso
 }
 
 TEST(Tessellate, WeldedOutputIsAClosedOrientedManifoldWithTheInputsTopology) {
-  for (const std::string& name : test::closed_shared_meshes())
-    expect_welded_surface_ok(read_mesh(test::shared_path(name)), Method::mdc, 4, name);
+  for (const std::string& name : test::closed_opensubdiv_shapes())
+    expect_welded_surface_ok(read_mesh(test::opensubdiv_shape(name)), Method::mdc, 4, name);
   for (const char* name :
        {"cube.obj", "tetrahedron.obj", "torus.obj", "cube_hole.obj", "two_cubes.obj"})
     expect_welded_surface_ok(read_mesh(test::example_path(name)), Method::mdc, 3, name);

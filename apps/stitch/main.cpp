@@ -16,8 +16,10 @@ int main(int argc, char** argv) {
   stitch::cli::add_analyze_command(app);
   stitch::cli::add_info_command(app);
   // more commands: add_*_command calls below this line
+#if STITCH_WITH_RENDER
   stitch::cli::add_render_command(app);
   stitch::cli::add_compare_command(app);
+#endif
   stitch::cli::add_edit_command(app);
   stitch::cli::add_primitive_command(app);
   stitch::cli::add_check_surface_command(app);

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "stitch/mesh/opensubdiv_topology.hpp"
+#include "mesh/opensubdiv_topology.hpp"
 #include "stitch/topology/remesh.hpp"
 
 namespace stitch {

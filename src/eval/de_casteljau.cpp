@@ -1,5 +1,7 @@
 #include "stitch/eval/de_casteljau.hpp"
 
+#include "eval/split_net.hpp"
+
 namespace stitch {
 
 namespace {

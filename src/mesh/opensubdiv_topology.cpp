@@ -1,4 +1,4 @@
-#include "stitch/mesh/opensubdiv_topology.hpp"
+#include "mesh/opensubdiv_topology.hpp"
 
 #include <opensubdiv/far/topologyDescriptor.h>
 

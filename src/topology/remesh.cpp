@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "mesh/opensubdiv_topology.hpp"
 #include "raw_mesh.hpp"
-#include "stitch/mesh/opensubdiv_topology.hpp"
 
 namespace stitch {
 

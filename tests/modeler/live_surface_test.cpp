@@ -85,7 +85,7 @@ std::vector<Case> cases() {
           {"cube_hole", read_mesh(test::example_path("cube_hole.obj"), {false, true})},
           {"torus", make_torus(8, 6)},
           {"tetrahedron", make_tetrahedron()},
-          {"pyramid", read_mesh(test::shared_path("catmark_pyramid.obj"))}};
+          {"pyramid", read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"))}};
 }
 
 TEST(ModelerLiveSurface, VertexMovesRecomputeExactlyTheChangedPatches) {

@@ -17,7 +17,4 @@ enum class SplitRule {
 /// Each child keeps only the extraordinary flag of the parent corner it contains.
 std::array<ControlNet, 4> split(const ControlNet& net, SplitRule rule);
 
-/// The 7x7 net N = S P S^T (classic) or its modified form, for tests and figures.
-std::array<std::array<Vec3, 7>, 7> split_net(const ControlNet& net, SplitRule rule);
-
 }  // namespace stitch

@@ -1,0 +1,43 @@
+// stitch's public API in one include: read or build a mesh, edit it, build a smooth surface
+// with a method and K-gon controls, evaluate it exactly, tessellate, analyse and export.
+// docs/library.md is the tutorial. The renderer (<stitch/render/...>, stitch::render) and the
+// modeler library (<stitch/modeler/...>, stitch::modeler) are separate components.
+#pragma once
+
+// mesh: the half-edge mesh, building it from polygons with every check, file I/O
+#include "stitch/mesh/build.hpp"
+#include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/polygon.hpp"
+#include "stitch/mesh/validate.hpp"
+
+// topology: the operators (insert/delete edge and those built on them), remeshing, primitives
+#include "stitch/topology/compare.hpp"
+#include "stitch/topology/connect_faces.hpp"
+#include "stitch/topology/delete_face.hpp"
+#include "stitch/topology/edge_ops.hpp"
+#include "stitch/topology/extrude.hpp"
+#include "stitch/topology/insert_edge.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "stitch/topology/remesh.hpp"
+
+// K-gons and control nets
+#include "stitch/kgon/kgon.hpp"
+#include "stitch/net/control_net.hpp"
+
+// evaluation: Bézier patches, the (modified) de Casteljau split, the surface of a method
+#include "stitch/eval/bezier.hpp"
+#include "stitch/eval/bezier_surface.hpp"
+#include "stitch/eval/catmull_clark.hpp"
+#include "stitch/eval/de_casteljau.hpp"
+#include "stitch/eval/surface.hpp"
+
+// tessellation and export
+#include "stitch/tess/export.hpp"
+#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellate.hpp"
+
+// analysis: continuity measured, surface checks
+#include "stitch/analysis/continuity.hpp"
+#include "stitch/analysis/surface_check.hpp"
