@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_meshes.hpp"
 #include "mesh/opensubdiv_topology.hpp"
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/eval/surface.hpp"
@@ -49,55 +50,10 @@ namespace {
 
 using stitch::Corner;
 using stitch::HalfedgeMesh;
+using namespace stitch::bench;
 
 constexpr int kResolution = 8;
 constexpr int kSamplesPerPatch = (kResolution + 1) * (kResolution + 1);
-
-enum MeshKind : int { quad_torus = 0, mixed_torus = 1 };
-
-// A torus of m x n quads, all vertices regular.
-HalfedgeMesh make_quad_torus(int m, int n) {
-  return stitch::make_torus(m, n);
-}
-
-// The same torus with the diagonal of every fourth quad inserted (a quarter of the quads become
-// two triangles): half of the vertices get valence 5, and two fifths of the faces are triangles,
-// where the hierarchical evaluation of mdc and the irregular patches of Bfr do extra work.
-HalfedgeMesh make_mixed_torus(int m, int n) {
-  HalfedgeMesh mesh = stitch::make_torus(m, n);
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < n; ++j) {
-      if ((i + 2 * j) % 4 != 0) continue;
-      const Corner a = mesh.halfedge(stitch::Face(i * n + j));
-      stitch::insert_edge(mesh, a, mesh.next(mesh.next(a)));
-    }
-  }
-  return mesh;
-}
-
-// Grid sizes giving about 1k, 10k and 100k faces.
-std::pair<int, int> torus_grid(MeshKind kind, int target_faces) {
-  const double quads = kind == quad_torus ? target_faces : target_faces / 1.25;
-  const int side = static_cast<int>(std::lround(std::sqrt(quads)));
-  return {side, side};
-}
-
-const HalfedgeMesh& bench_mesh(MeshKind kind, int target_faces) {
-  static std::map<std::pair<int, int>, HalfedgeMesh> cache;
-  const auto key = std::make_pair(static_cast<int>(kind), target_faces);
-  auto it = cache.find(key);
-  if (it == cache.end()) {
-    const auto [m, n] = torus_grid(kind, target_faces);
-    it = cache.emplace(key, kind == quad_torus ? make_quad_torus(m, n) : make_mixed_torus(m, n))
-             .first;
-  }
-  return it->second;
-}
-
-std::string mesh_label(MeshKind kind, const HalfedgeMesh& mesh) {
-  return std::string(kind == quad_torus ? "quad torus" : "tris+quads torus") + ", " +
-         std::to_string(mesh.num_faces()) + " faces";
-}
 
 // Evaluates every corner grid the way tessellate() samples (in parallel over corners), keeping
 // only a checksum: this measures evaluation without the memory traffic of storing 81 samples

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages stitch needs. Idempotent: does nothing when all are present.
+# Installs the Debian packages stitch needs, and any packages given as arguments (the sanitizer
+# and fuzzing scripts add clang's). Idempotent: does nothing when all are present.
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
@@ -7,8 +8,12 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libepoxy-dev libegl-dev libegl1-mesa-dev libgl-dev libgbm-dev libosmesa6-dev libgl1-mesa-dri
   libglfw3-dev libimgui-dev libstb-dev
+  libtinygltf-dev libocct-data-exchange-dev libocct-modeling-algorithms-dev
+  libocct-modeling-data-dev libocct-foundation-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
   xvfb xauth gnuplot-nox
 )
+packages+=("$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

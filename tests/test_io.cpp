@@ -345,7 +345,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n",
                   "line 13: face refers to vertex -1"},
-        Malformed{"unknown.stl", "solid\n", "extension '.stl'"}),
+        Malformed{"unknown.xyz", "solid\n", "extension '.xyz'"},
+        Malformed{"stl_loop.stl", "solid t\nfacet normal 0 0 1\nvertex 0 0 0\n",
+                  "line 3: 'vertex' outside 'outer loop'"}),
     [](const auto& info) {
       std::string name = info.param.name;
       for (char& c : name)
@@ -454,10 +456,17 @@ TEST(WriteSurfaceMesh, WritesEveryFormatReadableBack) {
   const std::string obj = read_file(folder.file("surface.obj"));
   EXPECT_NE(obj.find("\nvn 0 0 1\n"), std::string::npos);
   EXPECT_NE(obj.find("\nf 1//1 2//2 5//5 4//4\n"), std::string::npos);
+  // .ply is binary unless asked for text; both hold double positions and normals.
   const std::string ply = read_file(folder.file("surface.ply"));
-  EXPECT_NE(ply.find("property double nx\nproperty double ny\nproperty double nz\n"),
+  EXPECT_NE(ply.find("format binary_little_endian 1.0\n"), std::string::npos);
+  stitch::SurfaceFileOptions text;
+  text.ascii_ply = true;
+  stitch::write_surface_mesh(folder.file("text.ply"), mesh, text);
+  const std::string ascii = read_file(folder.file("text.ply"));
+  EXPECT_NE(ascii.find("property double nx\nproperty double ny\nproperty double nz\n"),
             std::string::npos);
-  EXPECT_NE(ply.find("\n1 0 0 0 0 1\n"), std::string::npos);  // sample 1: x y z nx ny nz
+  EXPECT_NE(ascii.find("\n1 0 0 0 0 1\n"), std::string::npos);  // sample 1: x y z nx ny nz
+  EXPECT_EQ(stitch::read_polygon_soup(folder.file("text.ply")).positions, mesh.positions);
 
   stitch::write_surface_mesh(folder.file("surface.stl"), mesh);
   const std::string stl = read_file(folder.file("surface.stl"));

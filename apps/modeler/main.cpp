@@ -14,7 +14,6 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -22,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "stitch/mesh/io.hpp"
 #include "stitch/modeler/session.hpp"
 #include "stitch/render/gl_context.hpp"
 #include "stitch/render/image.hpp"
@@ -780,8 +780,7 @@ void screenshot(App& app, const ScriptHooks& hooks, const std::string& path) {
 }
 
 std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw MeshError(fmt::format("{}: cannot open the script", path));
+  std::istringstream in(read_regular_file(path));
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) lines.push_back(l);
   return lines;

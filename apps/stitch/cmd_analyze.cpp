@@ -17,7 +17,7 @@ struct AnalyzeArgs {
   InputOptions in;
   std::string method = "all";
   bool json = false;
-  bool progress = false;
+  ProgressFlags progress;
   int samples = 8;
   KgonCliOptions kgon;
 };
@@ -38,7 +38,7 @@ nlohmann::json to_json(const ContinuityReport& r) {
 }
 
 void run_analyze(const AnalyzeArgs& a) {
-  StageReporter stage(a.progress || stderr_is_terminal());
+  StageReporter stage(a.progress);
   const HalfedgeMesh mesh = load_input(a.in);
   std::vector<Method> methods;
   if (a.method == "all")

@@ -6,8 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "options.hpp"
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::cli {
 
@@ -83,12 +85,13 @@ void add_check_surface_command(CLI::App& app) {
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--fold-angle", args->options.fold_angle_deg,
                   "adjacent triangles fold when their normals differ by more than this, degrees")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(finite_range(0.0, 180.0))
       ->capture_default_str();
   cmd->add_option("--through", args->through,
                   "X1 Y1 Z1 X2 Y2 Z2: a segment that must pass without meeting the surface (e.g. "
                   "the axis of a hole); hits count as problems")
-      ->expected(6);
+      ->expected(6)
+      ->check(finite_range(-limits::max_coordinate, limits::max_coordinate));
   cmd->callback([args] { run_check_surface(*args); });
 }
 

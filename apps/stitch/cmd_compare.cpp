@@ -38,7 +38,7 @@ struct CompareArgs {
   int resolution = 16;
   int stripes = 32;
   double zoom = 0.6;
-  bool progress = false;
+  ProgressFlags progress;
   KgonCliOptions kgon;
 };
 
@@ -233,7 +233,7 @@ void run_compare(const CompareArgs& a) {
     throw MeshError(fmt::format("the output '{}' exists and is not a directory", a.out));
   }
 
-  StageReporter stage(a.progress || stderr_is_terminal());
+  StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
   const HalfedgeMesh mesh = load_input(a.in);
   stage.end();
@@ -331,7 +331,7 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--zoom", args->zoom,
                   "radius of the region shown in the close-up, in patch sizes")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_range(kMinZoom, kMaxZoom))
       ->capture_default_str();
   add_kgon_options(cmd, args->kgon);
   add_progress_option(cmd, args->progress);

@@ -1,11 +1,12 @@
 // stitch edit IN -o OUT --op "OP ARGS" [--op ...] [--ops FILE]: topology operations in order.
 #include <fmt/format.h>
 
-#include <fstream>
 #include <memory>
+#include <sstream>
 
 #include "commands.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/operation.hpp"
 
@@ -24,8 +25,7 @@ struct OpLine {
 };
 
 std::vector<OpLine> read_ops_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw MeshError(fmt::format("cannot open operations file {}", path));
+  std::istringstream file(read_regular_file(path));
   std::vector<OpLine> ops;
   std::string line;
   for (int number = 1; std::getline(file, line); ++number) {
@@ -44,7 +44,7 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   for (const CLI::Option* opt : cmd.parse_order()) {
     if (opt->get_name() == "--op") {
       const std::string& text = op_values.at(op_index++);
-      ops.push_back({text, fmt::format("--op {} ('{}')", op_index, text)});
+      ops.push_back({text, fmt::format("--op {} ('{}')", op_index, limits::quoted(text))});
     } else if (opt->get_name() == "--ops") {
       const auto lines = read_ops_file(file_values.at(file_index++));
       ops.insert(ops.end(), lines.begin(), lines.end());

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/render/gl_context.hpp"
 #include "stitch/render/image.hpp"
 #include "stitch/render/options.hpp"
@@ -31,7 +32,7 @@ struct RenderArgs {
   int resolution = 8;
   int stripes = 24;
   std::string draw = "smooth";
-  bool progress = false;
+  ProgressFlags progress;
   KgonCliOptions kgon;
 };
 
@@ -59,8 +60,10 @@ void run_render(const RenderArgs& a) {
       a.eye.empty() ? std::nullopt : std::optional(parse_point(a.eye, "--eye"));
   const std::optional<Vec3> target =
       a.target.empty() ? std::nullopt : std::optional(parse_point(a.target, "--target"));
+  if (eye) limits::check_coordinates(*eye, "--eye");
+  if (target) limits::check_coordinates(*target, "--target");
 
-  StageReporter stage(a.progress || stderr_is_terminal());
+  StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
   const HalfedgeMesh mesh = load_input(a.in);
   stage.end();
@@ -123,7 +126,7 @@ void add_render_command(CLI::App& app) {
                 "tilted by 30 degrees");
   cmd->add_option("--zoom", args->zoom,
                   "with --focus-ev: radius of the region shown around the point, in patch sizes")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_range(kMinZoom, kMaxZoom))
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "segments per patch side")
       ->check(CLI::Range(1, 256))

@@ -1,9 +1,11 @@
 // stitch smooth IN -o OUT: the main job, from a mesh to its tessellated smooth surface.
 #include <fmt/format.h>
 
+#include <fstream>
 #include <memory>
 
 #include "commands.hpp"
+#include "exact_output.hpp"
 #include "options.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/export.hpp"
@@ -19,9 +21,39 @@ struct SmoothArgs {
   std::string method = "mdc";
   int resolution = 8;
   bool unwelded = false;
-  bool progress = false;
+  bool ascii = false;
+  double max_memory_gb = 0;  ///< 0: the memory the machine has available
+  ProgressFlags progress;
   KgonCliOptions kgon;
+  ExactOutputOptions exact;
 };
+
+/// The machine's available memory in bytes (MemAvailable), or 0 when it cannot be told.
+std::int64_t available_memory() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::int64_t kilobytes = 0;
+  std::string unit;
+  while (meminfo >> key >> kilobytes >> unit)
+    if (key == "MemAvailable:") return kilobytes * 1024;
+  return 0;
+}
+
+/// Refuses up front, with the estimate and the limit, a run that would not fit in memory.
+void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh) {
+  const std::int64_t limit =
+      a.max_memory_gb > 0 ? static_cast<std::int64_t>(a.max_memory_gb * 1e9) : available_memory();
+  const std::int64_t need = smooth_memory_estimate(mesh, a.resolution, !a.unwelded, a.out);
+  if (limit > 0 && need > limit)
+    throw MeshError(fmt::format(
+        "smoothing {} ({} corners) at resolution {}{} needs about {:.2f} GB of memory, more than "
+        "the {:.2f} GB {}; {}",
+        a.in.path, mesh.num_halfedges(), a.resolution, a.unwelded ? " unwelded" : "", need / 1e9,
+        limit / 1e9, a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
+        a.unwelded || file_extension(a.out) == ".stl"
+            ? "write a welded .ply (streamed) or lower --resolution"
+            : "the mesh itself is too large for this machine"));
+}
 
 void run_smooth(const SmoothArgs& a) {
   // Refuse a bad output name before any work, so nothing is computed for nothing.
@@ -29,28 +61,44 @@ void run_smooth(const SmoothArgs& a) {
   if (a.unwelded && ext != ".ply")
     throw MeshError(
         fmt::format("--unwelded writes PLY (per-sample attributes); '{}' is not .ply", a.out));
-  if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw MeshError(
-        fmt::format("cannot tell the output format of '{}': use .obj, .ply, .off or .stl", a.out));
+  if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" &&
+      ext != ".glb" && ext != ".gltf" && !is_exact_output(a.out))
+    throw MeshError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
+                                smooth_output_extensions()));
+  check_exact_outputs(a.out, a.exact);
 
-  StageReporter stage(a.progress || stderr_is_terminal());
+  StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
   const HalfedgeMesh mesh = load_input(a.in);
   stage.end();
+  check_memory(a, mesh);
   stage.begin(fmt::format("building the {} surface ({} patches)", a.method, mesh.num_halfedges()));
   const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
   stage.end();
-  stage.begin(fmt::format("tessellating at resolution {}", a.resolution));
-  const SurfaceMesh result = tessellate(mesh, surface, {a.resolution, !a.unwelded});
-  stage.end();
-  stage.begin("writing " + a.out);
-  if (a.unwelded)
-    write_surface_samples_ply(a.out, result);
-  else
-    write_surface_mesh(a.out, result);
+  if (const std::string exact = write_exact_outputs(a.out, mesh, surface, a.exact, stage);
+      !exact.empty()) {
+    fmt::print("wrote {} ({}, method {})\n", a.out, exact, a.method);
+    return;
+  }
+  SurfaceFileCounts written;
+  if (a.unwelded) {
+    stage.begin(fmt::format("tessellating at resolution {}", a.resolution));
+    const SurfaceMesh samples = tessellate(mesh, surface, {a.resolution, false});
+    stage.end();
+    stage.begin("writing " + a.out);
+    write_surface_samples_ply(a.out, samples);
+    written = {samples.num_vertices(), static_cast<std::int64_t>(samples.quads.size())};
+  } else {
+    // Evaluated block by block as it is written: the tessellation is never held whole.
+    stage.begin(fmt::format("tessellating at resolution {} and writing {}", a.resolution, a.out));
+    SurfaceFileOptions file;
+    file.ascii_ply = a.ascii;
+    file.progress = [&stage](double done) { stage.fraction(done); };
+    written = write_smooth_surface(a.out, mesh, surface, a.resolution, file);
+  }
   stage.end();
   fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {})\n", a.out,
-             result.num_vertices(), result.quads.size(), mesh.num_halfedges(),
+             written.vertices, written.quads, mesh.num_halfedges(),
              a.method == "cc" ? "sub-patches" : "bicubic patches", a.method, a.resolution);
 }
 
@@ -61,7 +109,11 @@ void add_smooth_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "smooth", "Turn a closed mesh into its smooth surface, tessellated as a polygon mesh");
   add_input_options(cmd, args->in);
-  cmd->add_option("-o,--output", args->out, "output mesh: .obj, .ply, .off or .stl")->required();
+  cmd->add_option("-o,--output", args->out,
+                  "output mesh: .obj, .ply (binary; the fastest and smallest, best for large "
+                  "meshes), .off, .stl, .glb or .gltf (+ .bin); or the exact patches: .json "
+                  "(Bezier JSON), .step/.stp or .igs/.iges (B-spline faces)")
+      ->required();
   add_method_option(cmd, args->method);
   cmd->add_option("--resolution", args->resolution, "segments per patch side")
       ->check(CLI::Range(1, 1024))
@@ -69,7 +121,13 @@ void add_smooth_command(CLI::App& app) {
   cmd->add_flag("--unwelded", args->unwelded,
                 "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
                 "int patch, to check continuity from the file alone");
+  cmd->add_flag("--ascii", args->ascii, "write .ply as text instead of binary");
+  cmd->add_option("--max-memory", args->max_memory_gb,
+                  "refuse up front a run estimated to need more memory than this many GB "
+                  "(default: the memory available)")
+      ->check(CLI::Range(0.0, 1e6));
   add_kgon_options(cmd, args->kgon);
+  add_exact_output_options(cmd, args->exact);
   add_progress_option(cmd, args->progress);
   cmd->callback([args] { run_smooth(*args); });
 }

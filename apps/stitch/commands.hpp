@@ -29,4 +29,6 @@ void add_compare_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
 void add_primitive_command(CLI::App& app);
 void add_check_surface_command(CLI::App& app);
+void add_eval_command(CLI::App& app);
+void add_cad_mesh_command(CLI::App& app);  // with OpenCASCADE only (STITCH_WITH_CAD)
 }  // namespace stitch::cli

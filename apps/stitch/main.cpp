@@ -23,6 +23,10 @@ int main(int argc, char** argv) {
   stitch::cli::add_edit_command(app);
   stitch::cli::add_primitive_command(app);
   stitch::cli::add_check_surface_command(app);
+  stitch::cli::add_eval_command(app);
+#if STITCH_WITH_CAD
+  stitch::cli::add_cad_mesh_command(app);
+#endif
 
   try {
     app.parse(argc, argv);

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 
 namespace stitch::cli {
@@ -43,12 +45,31 @@ HalfedgeMesh load_input(const InputOptions& in) {
   return mesh;
 }
 
+CLI::Validator finite_range(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](const std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value))
+          return fmt::format("'{}' is not a number", limits::quoted(text));
+        if (!(value >= lo && value <= hi))
+          return fmt::format("{} is not a finite number from {:g} to {:g}", limits::quoted(text),
+                             lo, hi);
+        return {};
+      },
+      fmt::format("NUMBER in [{:g}, {:g}]", lo, hi));
+}
+
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
   cmd->add_option("--kgon-scale", k.scale,
-                  "scale every K-gon with K != 4 about its centroid (default 1)")
-      ->check(CLI::PositiveNumber);
+                  fmt::format("scale every K-gon with K != 4 about its centroid (default 1, from "
+                              "{:g} to {:g})",
+                              limits::min_kgon_scale, limits::max_kgon_scale))
+      ->check(finite_range(limits::min_kgon_scale, limits::max_kgon_scale));
   cmd->add_option("--kgon-rotate", k.rotate_deg,
-                  "rotate every K-gon with K != 4 in its plane, degrees (default 0)");
+                  fmt::format("rotate every K-gon with K != 4 in its plane, degrees (default 0, "
+                              "at most {:g} either way)",
+                              limits::max_rotation_deg))
+      ->check(finite_range(-limits::max_rotation_deg, limits::max_rotation_deg));
   cmd->add_flag("--regularize", k.regularize,
                 "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
                 "(makes star-shaped K-gons convex)");
@@ -87,22 +108,40 @@ bool stderr_is_terminal() {
   return isatty(fileno(stderr)) != 0;
 }
 
-StageReporter::StageReporter(bool enabled) : enabled_(enabled) {}
+StageReporter::StageReporter(const ProgressFlags& flags)
+    : enabled_(!flags.quiet && (flags.progress || stderr_is_terminal())),
+      terminal_(enabled_ && stderr_is_terminal()) {}
 
 void StageReporter::begin(const std::string& stage) {
   start_ = std::chrono::steady_clock::now();
+  stage_ = stage;
+  percent_ = -1;
   if (enabled_) fmt::print(stderr, "stitch: {}...", stage);
+}
+
+void StageReporter::fraction(double done) {
+  if (!terminal_) return;
+  const int percent = static_cast<int>(std::clamp(done, 0.0, 1.0) * 100);
+  if (percent == percent_) return;
+  percent_ = percent;
+  // Redraw the stage line in place: carriage return, text, erase to the end of the line.
+  fmt::print(stderr, "\rstitch: {}... {:3d}%\x1b[K", stage_, percent);
+  std::fflush(stderr);
 }
 
 void StageReporter::end() {
   if (!enabled_) return;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  fmt::print(stderr, " {:.2f} s\n", s);
+  if (percent_ >= 0)
+    fmt::print(stderr, "\rstitch: {}... {:.2f} s\x1b[K\n", stage_, s);
+  else
+    fmt::print(stderr, " {:.2f} s\n", s);
 }
 
-void add_progress_option(CLI::App* cmd, bool& progress) {
-  cmd->add_flag("--progress", progress,
+void add_progress_option(CLI::App* cmd, ProgressFlags& flags) {
+  cmd->add_flag("--progress", flags.progress,
                 "print each stage and its time on stderr (default when stderr is a terminal)");
+  cmd->add_flag("--quiet", flags.quiet, "print nothing on stderr but errors and warnings");
 }
 
 }  // namespace stitch::cli

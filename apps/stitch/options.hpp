@@ -32,23 +32,41 @@ struct KgonCliOptions {
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
 
+/// A CLI11 check for a finite number from lo to hi (CLI::Range and CLI::PositiveNumber let NaN
+/// through, and a number too large to use would turn the output into NaN).
+CLI::Validator finite_range(double lo, double hi);
+/// --zoom of render and compare, in patch sizes.
+inline constexpr double kMinZoom = 1e-3, kMaxZoom = 1e3;
+
 /// Adds --method with the given default; `allow_all` accepts "all" as well.
 void add_method_option(CLI::App* cmd, std::string& method, bool allow_all = false);
 
+/// --progress and --quiet.
+struct ProgressFlags {
+  bool progress = false;  ///< stage lines even when stderr is not a terminal
+  bool quiet = false;     ///< nothing on stderr but errors and warnings
+};
+
 /// Prints "stitch: <stage>..." and the time it took, on stderr, when stderr is a terminal or
-/// progress was asked for; silent otherwise so scripts and tests see only results.
+/// --progress was given, never under --quiet; silent otherwise so scripts and tests see only
+/// results. On a terminal, long stages also show the percentage done.
 class StageReporter {
  public:
-  explicit StageReporter(bool enabled);
+  explicit StageReporter(const ProgressFlags& flags);
   void begin(const std::string& stage);
+  /// How much of the current stage is done (0..1). Call from one thread at a time.
+  void fraction(double done);
   void end();
 
  private:
   bool enabled_;
+  bool terminal_;
+  int percent_ = -1;
+  std::string stage_;
   std::chrono::steady_clock::time_point start_;
 };
-/// Adds --progress (force stage messages).
-void add_progress_option(CLI::App* cmd, bool& progress);
+/// Adds --progress (force stage messages) and --quiet.
+void add_progress_option(CLI::App* cmd, ProgressFlags& flags);
 bool stderr_is_terminal();
 
 }  // namespace stitch::cli

@@ -34,7 +34,9 @@
 #include "stitch/eval/surface.hpp"
 
 // tessellation and export
+#include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/export.hpp"
+#include "stitch/tess/patches.hpp"
 #include "stitch/tess/surface_mesh.hpp"
 #include "stitch/tess/tessellate.hpp"
 

@@ -1,5 +1,6 @@
 #include "stitch/analysis/continuity.hpp"
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -109,6 +110,15 @@ ContinuityReport analyze_continuity(const HalfedgeMesh& mesh, const Surface& sur
     rep.ev_normal_spread_deg = std::max(rep.ev_normal_spread_deg, spread(at));
     ++rep.extraordinary_points;
   }
+  // analyze prints these and compare writes them: a NaN must stop both, not pass as a number.
+  bool finite = std::isfinite(rep.touching_ev.max_deg) && std::isfinite(rep.touching_ev.mean_deg) &&
+                std::isfinite(rep.away_from_ev.max_deg) &&
+                std::isfinite(rep.away_from_ev.mean_deg) && std::isfinite(rep.max_gap) &&
+                std::isfinite(rep.ev_normal_spread_deg);
+  for (const auto& [t, jump] : rep.jump_by_distance) finite = finite && std::isfinite(jump);
+  if (!finite)
+    throw MeshError(fmt::format("the continuity measures of the {} surface are not finite",
+                                to_string(rep.method)));
   return rep;
 }
 

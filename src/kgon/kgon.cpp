@@ -1,5 +1,7 @@
 #include "stitch/kgon/kgon.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
@@ -179,15 +181,23 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   set.vertex.resize(m.vertex_capacity());
   set.edge.resize(m.edge_capacity());
 
+  // Every step writes only its own element's entries (a face's corners, a vertex's fan, an
+  // edge's four corners), so each runs over its elements in parallel with the same result.
+  const std::vector<Face> faces = m.faces();
+  const std::vector<Vertex> vertices = m.vertices();
+  const std::vector<Edge> edges = m.edges();
   std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
-  for (Face f : m.faces()) {
-    face_normal[f.idx] = newell_normal(face_points(m, f));
-    set_corner_points(m, options, set, f);
-  }
+  tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
+    face_normal[faces[i].idx] = newell_normal(face_points(m, faces[i]));
+    set_corner_points(m, options, set, faces[i]);
+  });
   auto normal_of = [&](Face f) { return face_normal[f.idx]; };
-  for (Face f : m.faces()) build_face_kgon(m, options, set, f, normal_of);
-  for (Vertex v : m.vertices()) build_vertex_kgon(m, options, set, v, normal_of);
-  for (Edge e : m.edges()) build_edge_kgon(m, options, set, e, normal_of);
+  tbb::parallel_for(size_t{0}, faces.size(),
+                    [&](size_t i) { build_face_kgon(m, options, set, faces[i], normal_of); });
+  tbb::parallel_for(size_t{0}, vertices.size(),
+                    [&](size_t i) { build_vertex_kgon(m, options, set, vertices[i], normal_of); });
+  tbb::parallel_for(size_t{0}, edges.size(),
+                    [&](size_t i) { build_edge_kgon(m, options, set, edges[i], normal_of); });
   return set;
 }
 

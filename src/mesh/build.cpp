@@ -7,6 +7,7 @@
 #include <map>
 #include <utility>
 
+#include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 
 namespace stitch {
@@ -32,15 +33,22 @@ std::string where_vertex(const PolygonSoup& soup, int v) {
 void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
   const int nv = static_cast<int>(soup.positions.size());
   for (int v = 0; v < nv; ++v)
-    if (!soup.positions[v].allFinite())
-      throw MeshError(fmt::format("{} has a non-finite coordinate", where_vertex(soup, v)));
+    if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
+      throw MeshError(fmt::format("{} {}", where_vertex(soup, v), problem));
   if (soup.faces.empty()) throw MeshError("the mesh has no faces");
   const size_t min_degree = options.allow_two_gons ? 2 : 3;
+  size_t corners = 0;
   for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
     const auto& loop = soup.faces[f];
     if (loop.size() < min_degree)
       throw MeshError(fmt::format("{} has {} vertices; a face needs at least {}",
                                   where_face(soup, f), loop.size(), min_degree));
+    corners += loop.size();
+    if (corners > static_cast<size_t>(limits::max_halfedges))
+      throw MeshError(
+          fmt::format("the mesh has more than {} corners (face {}); stitch numbers "
+                      "its elements with 32-bit integers",
+                      limits::max_halfedges, f + 1));
     for (size_t i = 0; i < loop.size(); ++i) {
       if (loop[i] < 0 || loop[i] >= nv)
         throw MeshError(fmt::format("{} refers to vertex {}, but there are {} vertices",
@@ -52,9 +60,198 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
   }
 }
 
+/// Refuses a mesh so small that squared lengths of its normals underflow (see limits.hpp).
+void check_extent(const PolygonSoup& soup, const std::vector<int>& used) {
+  Vec3 lo = Vec3::Constant(limits::max_coordinate), hi = -lo;
+  for (size_t v = 0; v < used.size(); ++v)
+    if (used[v]) {
+      lo = lo.cwiseMin(soup.positions[v]);
+      hi = hi.cwiseMax(soup.positions[v]);
+    }
+  const double side = (hi - lo).maxCoeff();
+  if (side < limits::min_extent)
+    throw MeshError(fmt::format(
+        "the mesh is too small: the longest side of its bounding box is {:g}, below {:g}, where "
+        "normals can no longer be computed; scale the model up",
+        side, limits::min_extent));
+}
+
 struct DirectedEdge {
   int face;
   int slot;  // position in the face loop; the edge runs from slot to slot+1
+};
+
+/// The directed edges of a file joining two vertices, and which of them are twins.
+struct Group {
+  int a, b;                            // mesh vertices, a < b in soup order
+  std::vector<DirectedEdge> fwd, bwd;  // a -> b and b -> a
+  std::vector<int> perm;               // fwd[i] pairs with bwd[perm[i]]
+  std::vector<DirectedEdge> boundary;  // an edge with no partner (fill_holes only)
+};
+
+/// Corner steps the pairing search may take in all (a fraction of a second); beyond it the mesh is
+/// refused rather than searched for longer.
+constexpr long long kSearchBudget = 20'000'000;
+
+/// Where several edges join the same two vertices a file cannot say which directed edge is the
+/// twin of which. This chooses the pairings (Group::perm) so that every vertex gets a single
+/// fan, by a depth-first search over the ambiguous groups that checks a vertex as soon as all
+/// groups around it are chosen. A vertex is checked on its own corners only, so the search costs
+/// in proportion to the corners it touches, not to the mesh. Every valid pairing is reachable, so
+/// a mesh written from a valid half-edge mesh always reads back. When there is no valid pairing
+/// the groups keep their first pairing and the caller reports a vertex with several fans.
+class PairingSearch {
+ public:
+  PairingSearch(const PolygonSoup& soup, const std::vector<int>& remap, int num_vertices,
+                std::vector<Group>& groups)
+      : groups_(groups), num_vertices_(num_vertices) {
+    // Corner c = offset[f] + i of face f is also the directed edge leaving it.
+    std::vector<int> offset(soup.faces.size() + 1, 0);
+    for (size_t f = 0; f < soup.faces.size(); ++f)
+      offset[f + 1] = offset[f] + static_cast<int>(soup.faces[f].size());
+    const int corners = offset.back();
+    next_.resize(corners);
+    vertex_.resize(corners);
+    twin_.assign(corners, -1);
+    for (size_t f = 0; f < soup.faces.size(); ++f) {
+      const int k = static_cast<int>(soup.faces[f].size());
+      for (int i = 0; i < k; ++i) {
+        next_[offset[f] + i] = offset[f] + (i + 1) % k;
+        vertex_[offset[f] + i] = remap[soup.faces[f][i]];
+      }
+    }
+    auto id = [&](const DirectedEdge& d) { return offset[d.face] + d.slot; };
+    fwd_.resize(groups.size());
+    bwd_.resize(groups.size());
+    boundary_in_.assign(num_vertices, -1);
+    for (size_t g = 0; g < groups.size(); ++g) {
+      for (const DirectedEdge& d : groups[g].fwd) fwd_[g].push_back(id(d));
+      for (const DirectedEdge& d : groups[g].bwd) bwd_[g].push_back(id(d));
+      for (const DirectedEdge& d : groups[g].boundary) {
+        // An unpaired edge u -> v: the hole's loop leaves v where this edge arrives.
+        const int c = id(d);
+        int& in = boundary_in_[vertex_[next_[c]]];
+        in = in == -1 ? c : -2;  // -2: several holes meet there (build_mesh refuses it)
+      }
+      set_twins(static_cast<int>(g));
+    }
+    // Corners per vertex, as one array sliced by vertex.
+    first_corner_.assign(num_vertices + 1, 0);
+    for (int c = 0; c < corners; ++c) ++first_corner_[vertex_[c] + 1];
+    for (int v = 0; v < num_vertices; ++v) first_corner_[v + 1] += first_corner_[v];
+    corners_at_.resize(corners);
+    std::vector<int> fill(first_corner_.begin(), first_corner_.end() - 1);
+    for (int c = 0; c < corners; ++c) corners_at_[fill[vertex_[c]]++] = c;
+  }
+
+  /// Searches; returns false when the budget ran out before an answer.
+  bool run() {
+    std::vector<int> open;  // ambiguous groups
+    std::vector<std::vector<int>> around(num_vertices_);
+    for (size_t g = 0; g < groups_.size(); ++g)
+      if (groups_[g].perm.size() >= 2) {
+        open.push_back(static_cast<int>(g));
+        around[groups_[g].a].push_back(static_cast<int>(g));
+        around[groups_[g].b].push_back(static_cast<int>(g));
+      }
+    if (open.empty()) return true;
+    pending_.assign(num_vertices_, 0);
+    for (int v = 0; v < num_vertices_; ++v) pending_[v] = static_cast<int>(around[v].size());
+    // A vertex no choice can change decides the answer on its own.
+    for (int v = 0; v < num_vertices_; ++v)
+      if (pending_[v] == 0 && !single_fan(v)) return true;
+    // Groups linked through shared vertices are searched together, each cluster on its own, in
+    // breadth-first order so every vertex is checked soon after its first group is chosen.
+    std::vector<char> placed(groups_.size(), 0), seen(num_vertices_, 0);
+    for (int start : open) {
+      if (placed[start]) continue;
+      std::vector<int> order{start}, queue;
+      placed[start] = 1;
+      for (size_t i = 0; i < order.size(); ++i)
+        for (int v : {groups_[order[i]].a, groups_[order[i]].b}) {
+          if (seen[v]) continue;
+          seen[v] = 1;
+          for (int g : around[v])
+            if (!placed[g]) {
+              placed[g] = 1;
+              order.push_back(g);
+            }
+        }
+      if (!search(order)) return false;
+    }
+    return true;
+  }
+
+ private:
+  void set_twins(int g) {
+    const Group& grp = groups_[g];
+    for (size_t i = 0; i < grp.perm.size(); ++i) {
+      twin_[fwd_[g][i]] = bwd_[g][grp.perm[i]];
+      twin_[bwd_[g][grp.perm[i]]] = fwd_[g][i];
+    }
+  }
+
+  /// Whether the corners at v form one cycle under "next corner around v".
+  bool single_fan(int v) {
+    const int count = first_corner_[v + 1] - first_corner_[v];
+    const int start = corners_at_[first_corner_[v]];
+    int c = start, steps = 0;
+    do {
+      const int t = twin_[c];
+      if (t >= 0) {
+        c = next_[t];
+      } else {  // through the hole: on along the unpaired edge that arrives at v
+        if (boundary_in_[v] < 0) return false;
+        c = next_[boundary_in_[v]];
+      }
+      ++steps;
+    } while (c != start && steps <= count);
+    work_ += steps;
+    return steps == count && c == start;
+  }
+
+  /// Chooses the pairings of the groups in `order`; false when the budget is spent.
+  bool search(const std::vector<int>& order) {
+    const int n = static_cast<int>(order.size());
+    std::vector<char> started(n, 0);
+    int pos = 0;
+    while (pos >= 0 && pos < n) {
+      const int g = order[pos];
+      Group& grp = groups_[g];
+      if (!started[pos]) {
+        started[pos] = 1;
+      } else {
+        ++pending_[grp.a];
+        ++pending_[grp.b];
+        if (!std::next_permutation(grp.perm.begin(), grp.perm.end())) {
+          // Every pairing of this group failed: back to the previous group's next choice.
+          started[pos] = 0;
+          set_twins(g);
+          --pos;
+          continue;
+        }
+      }
+      if (++work_ > kSearchBudget) return false;
+      set_twins(g);
+      --pending_[grp.a];
+      --pending_[grp.b];
+      if ((pending_[grp.a] > 0 || single_fan(grp.a)) && (pending_[grp.b] > 0 || single_fan(grp.b)))
+        ++pos;
+    }
+    if (pos < 0) {
+      // No pairing works (next_permutation left every group at its first pairing): the caller
+      // names a vertex with several fans under the first pairings.
+      for (int g : order) set_twins(g);
+    }
+    return true;
+  }
+
+  std::vector<Group>& groups_;
+  int num_vertices_;
+  std::vector<int> next_, vertex_, twin_, boundary_in_;
+  std::vector<std::vector<int>> fwd_, bwd_;
+  std::vector<int> first_corner_, corners_at_, pending_;
+  long long work_ = 0;
 };
 
 }  // namespace
@@ -79,6 +276,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     remap[v] = mesh.add_vertex(soup.positions[v]).idx;
     rep.vertex_source.push_back(v);
   }
+  check_extent(soup, used);
   if (rep.dropped_vertices > 0)
     rep.warnings.push_back(fmt::format("dropped {} unused vertices (not referenced by any face)",
                                        rep.dropped_vertices));
@@ -98,12 +296,6 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
   // Pairing: an edge seen once per direction pairs itself. Where several edges join the same two
   // vertices the file cannot say which directed edge is the twin of which, so the pairings of
   // those groups are searched for one under which every vertex has a single fan.
-  struct Group {
-    int a, b;                            // mesh vertices, a < b in soup order
-    std::vector<DirectedEdge> fwd, bwd;  // a -> b and b -> a
-    std::vector<int> perm;               // fwd[i] pairs with bwd[perm[i]]
-    std::vector<DirectedEdge> boundary;  // an edge with no partner (fill_holes only)
-  };
   std::vector<Group> pairs;
   std::string boundary_error;  // the first boundary edge, when holes are not to be filled
   for (auto& [key, g] : groups) {
@@ -144,10 +336,8 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     pairs.push_back(std::move(grp));
   }
 
-  const HalfedgeMesh vertices_only = mesh;
-  // Builds the connectivity for the current pairings; returns the vertices with several fans.
+  // Builds the connectivity for the chosen pairings; returns the vertices with several fans.
   auto assemble = [&](HalfedgeMesh& out) {
-    out = vertices_only;
     std::vector<std::vector<Halfedge>> slot_he(soup.faces.size());
     for (size_t f = 0; f < soup.faces.size(); ++f) slot_he[f].resize(soup.faces[f].size());
     std::vector<Halfedge> boundary;  // half-edges with no face: twins of unpaired edges
@@ -204,30 +394,14 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     return bad;
   };
 
-  auto bad = assemble(mesh);
-  for (Group& g : pairs) {
-    if (bad.empty()) break;
-    if (g.perm.size() < 2 || g.perm.size() > 5) continue;  // beyond 5! tries: leave as is
-    auto touches = [&](const std::vector<std::pair<Vertex, int>>& b) {
-      return std::any_of(b.begin(), b.end(), [&](const auto& vb) {
-        return vb.first.idx == g.a || vb.first.idx == g.b;
-      });
-    };
-    if (!touches(bad)) continue;
-    std::vector<int> best = g.perm;
-    size_t best_bad = bad.size();
-    std::sort(g.perm.begin(), g.perm.end());
-    do {
-      HalfedgeMesh trial;
-      const auto b = assemble(trial);
-      if (b.size() < best_bad) {
-        best_bad = b.size();
-        best = g.perm;
-      }
-    } while (best_bad > 0 && std::next_permutation(g.perm.begin(), g.perm.end()));
-    g.perm = best;
-    bad = assemble(mesh);
-  }
+  const bool ambiguous =
+      std::any_of(pairs.begin(), pairs.end(), [](const Group& g) { return g.perm.size() >= 2; });
+  if (ambiguous && !PairingSearch(soup, remap, mesh.vertex_capacity(), pairs).run())
+    throw MeshError(
+        fmt::format("too many faces run along the same pairs of vertices to tell which of them are "
+                    "neighbours (gave up after {} steps); give each face its own vertices",
+                    kSearchBudget));
+  const auto bad = assemble(mesh);
   if (!bad.empty()) {
     const auto [v, fan] = bad.front();
     int outgoing = 0;
@@ -257,6 +431,20 @@ PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh) {
     soup.faces.push_back(std::move(loop));
   }
   return soup;
+}
+
+void check_reads_back(const HalfedgeMesh& mesh) {
+  BuildOptions options;
+  options.allow_two_gons = true;
+  const TopologyStats before = topology_stats(mesh);
+  const TopologyStats after = topology_stats(build_mesh(to_polygon_soup(mesh), options));
+  if (after.vertices != before.vertices || after.edges != before.edges ||
+      after.faces != before.faces || after.components != before.components ||
+      after.genus != before.genus)
+    throw MeshError(fmt::format(
+        "written to a file, the mesh would read back as another surface ({} components of genus "
+        "{} instead of {} of genus {})",
+        after.components, after.genus, before.components, before.genus));
 }
 
 }  // namespace stitch

@@ -1,5 +1,9 @@
 #include "stitch/mesh/halfedge_mesh.hpp"
 
+#include <fmt/format.h>
+
+#include "stitch/mesh/limits.hpp"
+
 namespace stitch {
 
 namespace {
@@ -10,6 +14,15 @@ std::vector<H> live(int capacity, const std::vector<std::uint8_t>& deleted) {
   for (int i = 0; i < capacity; ++i)
     if (!deleted[i]) out.emplace_back(i);
   return out;
+}
+
+/// Element numbers are `int`: refuse to grow past limits::max_halfedges rather than overflow.
+void check_room(int capacity, int more, const char* what) {
+  if (capacity > limits::max_halfedges - more)
+    throw MeshError(
+        fmt::format("the mesh would have more than {} {}; stitch numbers its elements "
+                    "with 32-bit integers",
+                    limits::max_halfedges, what));
 }
 }  // namespace
 
@@ -77,6 +90,7 @@ int HalfedgeMesh::index_in_face(Halfedge h) const {
 }
 
 Vertex HalfedgeMesh::add_vertex(const Vec3& p) {
+  check_room(vertex_capacity(), 1, "vertices");
   positions_.push_back(p);
   vertex_he_.push_back(-1);
   vertex_deleted_.push_back(0);
@@ -84,12 +98,14 @@ Vertex HalfedgeMesh::add_vertex(const Vec3& p) {
 }
 
 Face HalfedgeMesh::add_face() {
+  check_room(face_capacity(), 1, "faces");
   face_he_.push_back(-1);
   face_deleted_.push_back(0);
   return Face(face_capacity() - 1);
 }
 
 Halfedge HalfedgeMesh::add_edge(Vertex a, Vertex b) {
+  check_room(halfedge_capacity(), 2, "half-edges");
   const int h = halfedge_capacity();
   for (int i = 0; i < 2; ++i) {
     he_next_.push_back(-1);

@@ -15,6 +15,8 @@
 #include <sstream>
 
 #include "io_detail.hpp"
+#include "mesh_writer.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
@@ -40,11 +42,11 @@ double parse_double(std::string_view token, const std::string& where) {
   double value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec == std::errc::result_out_of_range)
-    throw MeshError(fmt::format("{}: number '{}' is out of range", where, token));
+    throw MeshError(fmt::format("{}: number '{}' is out of range", where, limits::quoted(token)));
   if (ec != std::errc() || end != t.data() + t.size())
-    throw MeshError(fmt::format("{}: '{}' is not a number", where, token));
+    throw MeshError(fmt::format("{}: '{}' is not a number", where, limits::quoted(token)));
   if (!std::isfinite(value))
-    throw MeshError(fmt::format("{}: coordinate '{}' is not finite", where, token));
+    throw MeshError(fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
   return value;
 }
 
@@ -53,9 +55,9 @@ long long parse_integer(std::string_view token, const std::string& where) {
   long long value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec == std::errc::result_out_of_range)
-    throw MeshError(fmt::format("{}: integer '{}' is out of range", where, token));
+    throw MeshError(fmt::format("{}: integer '{}' is out of range", where, limits::quoted(token)));
   if (ec != std::errc() || end != t.data() + t.size())
-    throw MeshError(fmt::format("{}: '{}' is not an integer", where, token));
+    throw MeshError(fmt::format("{}: '{}' is not an integer", where, limits::quoted(token)));
   return value;
 }
 
@@ -99,10 +101,23 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
 
 namespace {
 
-std::string read_whole_file(const std::string& path) {
+std::string supported_list() {
+  return ".obj, .off, .ply, .stl";
+}
+
+constexpr std::string_view kComment = "written by stitch";
+
+}  // namespace
+
+std::string read_regular_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw MeshError(fmt::format("{}: is a folder, not a mesh file", path));
+  const auto status = std::filesystem::status(path, ec);  // follows symbolic links
+  if (ec) throw MeshError(fmt::format("{}: cannot open: {}", path, ec.message()));
+  if (std::filesystem::is_directory(status))
+    throw MeshError(fmt::format("{}: is a folder, not a file", path));
+  // A FIFO, a device such as /dev/zero or a socket may never end: only plain files are read.
+  if (!std::filesystem::is_regular_file(status))
+    throw MeshError(fmt::format("{}: not a regular file (a pipe, device or socket)", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   std::ostringstream buffer;
@@ -110,14 +125,6 @@ std::string read_whole_file(const std::string& path) {
   if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
   return std::move(buffer).str();
 }
-
-std::string supported_list() {
-  return ".obj, .off, .ply";
-}
-
-constexpr std::string_view kComment = "written by stitch";
-
-}  // namespace
 
 std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -128,14 +135,15 @@ std::string file_extension(const std::string& path) {
 
 PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings) {
   const std::string ext = file_extension(path);
-  if (ext != ".obj" && ext != ".off" && ext != ".ply")
+  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                ext, supported_list()));
-  const std::string text = read_whole_file(path);
+                                limits::quoted(ext), supported_list()));
+  const std::string text = read_regular_file(path);
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw MeshError(fmt::format("{}: the file is empty", path));
   PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings)
                      : ext == ".off" ? io_detail::read_off(text, path, warnings)
+                     : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
                                      : io_detail::read_ply(text, path, warnings);
   soup.source = path;
   if (soup.faces.empty()) throw MeshError(fmt::format("{}: the file contains no faces", path));
@@ -163,25 +171,26 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
       if (v < 0 || v >= nv)
         throw MeshError(
             fmt::format("cannot write {}: a face refers to vertex {} of {}", path, v + 1, nv));
+  // What is written must read back, so it meets the reader's coordinate limits.
+  for (int v = 0; v < nv; ++v)
+    if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
+      throw MeshError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
   using namespace io_detail;
+  const MeshStream stream = stream_arrays(soup.positions, nullptr, soup.faces);
   if (ext == ".obj")
-    write_file_atomically(path, [&](std::ostream& out) {
-      write_obj(out, soup.positions, nullptr, soup.faces, kComment);
-    });
+    write_mesh_file(path, false, [&](std::ostream& out) { write_obj(out, stream, kComment); });
   else if (ext == ".off")
-    write_file_atomically(
-        path, [&](std::ostream& out) { write_off(out, soup.positions, soup.faces, kComment); });
-  else if (ext == ".ply")
-    write_file_atomically(path, [&](std::ostream& out) {
-      write_ply_ascii(out, soup.positions, nullptr, soup.faces, kComment);
+    write_mesh_file(path, false, [&](std::ostream& out) { write_off(out, stream, kComment); });
+  else if (ext == ".ply")  // ASCII: edited meshes are small, and people read them
+    write_mesh_file(path, false, [&](std::ostream& out) {
+      write_ply(out, stream, PlyEncoding::ascii, kComment);
     });
   else if (ext == ".stl")
-    write_file_atomically(
-        path, [&](std::ostream& out) { write_stl(out, soup.positions, soup.faces, kComment); },
-        true);
+    write_mesh_file(path, true,
+                    [&](std::ostream& out) { write_stl(out, stream, soup.positions, kComment); });
   else
-    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {}, .stl)",
-                                path, ext, supported_list()));
+    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                ext, supported_list()));
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
@@ -190,20 +199,26 @@ void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec))
-    throw MeshError(
-        fmt::format("cannot write {}: folder '{}' does not exist", path, folder.string()));
-  if (fs::is_directory(target, ec))
-    throw MeshError(fmt::format("cannot write {}: it is a folder", path));
+  write_file_atomically_at(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+    if (!out) throw MeshError(fmt::format("cannot write {}: {}", temporary, std::strerror(errno)));
+    write(out);
+    out.flush();
+    if (!out) throw MeshError(fmt::format("cannot write {}: write error (disk full?)", path));
+    out.close();
+    if (out.fail()) throw MeshError(fmt::format("cannot write {}: error closing the file", path));
+  });
+}
 
-  // A fresh name beside the target (same file system, so the rename is atomic). O_EXCL makes
-  // sure we never write into someone else's file; mode 0666 lets the umask decide permissions.
+namespace {
+
+/// A fresh empty file in `folder` named after `target` (O_EXCL: never someone else's file; mode
+/// 0666 lets the umask decide permissions).
+std::filesystem::path create_temporary(const std::filesystem::path& folder,
+                                       const std::filesystem::path& target,
+                                       const std::string& path) {
   std::random_device entropy;
-  fs::path temporary;
+  std::filesystem::path temporary;
   int fd = -1;
   for (int attempt = 0; attempt < 16 && fd < 0; ++attempt) {
     temporary = folder / fmt::format(".{}.tmp-{:08x}", target.filename().string(), entropy());
@@ -214,18 +229,42 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     throw MeshError(fmt::format("cannot write {}: cannot create a file in '{}': {}", path,
                                 folder.string(), std::strerror(errno)));
   ::close(fd);
+  return temporary;
+}
 
+}  // namespace
+
+void write_file_atomically_at(const std::string& path,
+                              const std::function<void(const std::string&)>& write) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw MeshError(
+        fmt::format("cannot write {}: folder '{}' does not exist", path, folder.string()));
+  if (fs::is_directory(target, ec))
+    throw MeshError(fmt::format("cannot write {}: it is a folder", path));
+  // A device or pipe (/dev/stdout, /dev/full) must not be renamed over: the bytes are made in a
+  // temporary file elsewhere and then sent to it, and a failed send is still an error.
+  const auto status = fs::status(target, ec);
+  const bool device = fs::exists(status) && !fs::is_regular_file(status);
+
+  // Beside the target (same file system, so the rename is atomic).
+  const fs::path temporary =
+      create_temporary(device ? fs::temp_directory_path() : folder, target, path);
   try {
-    {
-      std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-      if (!out)
-        throw MeshError(
-            fmt::format("cannot write {}: {}", temporary.string(), std::strerror(errno)));
-      write(out);
+    write(temporary.string());
+    if (device) {
+      std::ifstream in(temporary, std::ios::binary);
+      std::ofstream out(target, std::ios::binary);
+      if (!in || !out)
+        throw MeshError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+      out << in.rdbuf();
       out.flush();
       if (!out) throw MeshError(fmt::format("cannot write {}: write error (disk full?)", path));
-      out.close();
-      if (out.fail()) throw MeshError(fmt::format("cannot write {}: error closing the file", path));
+      fs::remove(temporary, ec);
+      return;
     }
     // Make the data durable before the rename makes it visible under the final name.
     if (const int sync_fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC); sync_fd >= 0) {

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "io_detail.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::io_detail {
 
@@ -34,13 +35,15 @@ int face_vertex(std::string_view entry, int vertices_so_far, const std::string& 
   while (true) {
     const size_t slash = entry.find('/', start);
     if (count == parts.size())
-      throw MeshError(fmt::format("{}: face entry '{}' has more than three parts", where, entry));
+      throw MeshError(fmt::format("{}: face entry '{}' has more than three parts", where,
+                                  limits::quoted(entry)));
     parts[count++] = entry.substr(start, slash == std::string_view::npos ? slash : slash - start);
     if (slash == std::string_view::npos) break;
     start = slash + 1;
   }
   if (parts[0].empty())
-    throw MeshError(fmt::format("{}: face entry '{}' has no vertex index", where, entry));
+    throw MeshError(
+        fmt::format("{}: face entry '{}' has no vertex index", where, limits::quoted(entry)));
   // Texture and normal indices are not used, but must still be numbers.
   for (size_t i = 1; i < count; ++i)
     if (!parts[i].empty()) parse_integer(parts[i], where);
@@ -100,10 +103,10 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
       if (warnings && warned.insert(std::string(keyword)).second)
         warnings->push_back(
             fmt::format("{}: ignoring unsupported OBJ statement '{}' (and any later ones)",
-                        at_line(path, number), keyword));
+                        at_line(path, number), limits::quoted(keyword)));
     } else {
       throw MeshError(fmt::format("{}: unrecognised statement '{}'", at_line(path, number),
-                                  keyword.substr(0, 40)));
+                                  limits::quoted(keyword)));
     }
   }
   // Positive indices may refer to vertices defined further down, so they are checked at the end.

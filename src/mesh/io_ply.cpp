@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "io_detail.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::io_detail {
 
@@ -88,12 +89,13 @@ Header read_header(std::string_view text, const std::string& path) {
       else if (words[1] == "binary_big_endian")
         header.format = Format::binary_big_endian;
       else
-        throw MeshError(fmt::format("{}: unknown PLY format '{}'", where, words[1]));
+        throw MeshError(
+            fmt::format("{}: unknown PLY format '{}'", where, limits::quoted(words[1])));
       have_format = true;
     } else if (words[0] == "element") {
       if (words.size() != 3)
         throw MeshError(fmt::format("{}: expected 'element <name> <count>'", where));
-      Element element{std::string(words[1]), parse_integer(words[2], where), {}, number};
+      Element element{limits::quoted(words[1]), parse_integer(words[2], where), {}, number};
       if (element.count < 0 || element.count > std::numeric_limits<int>::max())
         throw MeshError(fmt::format("{}: invalid element count {}", where, element.count));
       header.elements.push_back(std::move(element));
@@ -105,15 +107,17 @@ Header read_header(std::string_view text, const std::string& path) {
         property.list_count = parse_type(words[2]);
         const auto item = parse_type(words[3]);
         if (!property.list_count || property.list_count->is_float || !item)
-          throw MeshError(
-              fmt::format("{}: invalid list property types '{} {}'", where, words[2], words[3]));
+          throw MeshError(fmt::format("{}: invalid list property types '{} {}'", where,
+                                      limits::quoted(words[2]), limits::quoted(words[3])));
         property.type = *item;
-        property.name = words[4];
+        property.name = limits::quoted(words[4]);
       } else if (words.size() == 3) {
         const auto type = parse_type(words[1]);
-        if (!type) throw MeshError(fmt::format("{}: unknown property type '{}'", where, words[1]));
+        if (!type)
+          throw MeshError(
+              fmt::format("{}: unknown property type '{}'", where, limits::quoted(words[1])));
         property.type = *type;
-        property.name = words[2];
+        property.name = limits::quoted(words[2]);
       } else {
         throw MeshError(
             fmt::format("{}: expected 'property <type> <name>' or 'property list "
@@ -122,7 +126,7 @@ Header read_header(std::string_view text, const std::string& path) {
       }
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      throw MeshError(fmt::format("{}: unknown header line '{}'", where, words[0]));
+      throw MeshError(fmt::format("{}: unknown header line '{}'", where, limits::quoted(words[0])));
     }
   }
   throw MeshError(fmt::format("{}: the header has no 'end_header' line", path));
@@ -145,7 +149,7 @@ Roles find_roles(const Header& header, const std::string& path) {
       for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
         const Property& property = element.properties[p];
         for (int k = 0; k < 3; ++k)
-          if (property.name == std::string_view("xyz" + k, 1)) {
+          if (property.name == std::string_view(&"xyz"[k], 1)) {
             if (property.list_count)
               throw MeshError(
                   fmt::format("{}: vertex property {} is a list", where, property.name));
@@ -177,6 +181,28 @@ Roles find_roles(const Header& header, const std::string& path) {
   if (roles.face_element < 0)
     throw MeshError(fmt::format("{}: the header declares no 'face' element", path));
   return roles;
+}
+
+/// Refuses element counts that the data after the header cannot hold, before anything is
+/// allocated or looped over: a binary element takes at least one byte per scalar and per list
+/// length, an ASCII one at least two characters ("0 ") per value.
+void check_counts_fit(const Header& header, size_t body_size, const std::string& path) {
+  size_t left = body_size + 1;  // an ASCII file's last value needs no separator after it
+  for (const Element& element : header.elements) {
+    size_t least = 0;
+    for (const Property& property : element.properties)
+      least += header.format == Format::ascii ? 2
+               : property.list_count          ? property.list_count->size
+                                              : property.type.size;
+    if (least == 0) continue;
+    const auto count = static_cast<size_t>(element.count);
+    if (count > left / least)
+      throw MeshError(fmt::format(
+          "{}: the header declares {} '{}' elements of at least {} bytes each, but only {} bytes "
+          "follow the header (truncated, or a wrong count?)",
+          at_line(path, element.header_line), element.count, element.name, least, body_size));
+    left -= count * least;
+  }
 }
 
 /// Reads the values of one element instance (ASCII: one line; binary: a run of bytes) and hands
@@ -230,17 +256,17 @@ class BodyReader {
       return type.is_float ? parse_double(word, where)
                            : static_cast<double>(parse_integer(word, where));
     };
-    read_properties(element, take, use, where);
+    read_properties(element, take, use, [&] { return where; });
     if (next != words.size())
       throw MeshError(fmt::format("{}: {} values more than a '{}' element has", where,
                                   words.size() - next, element.name));
   }
 
   /// Hands every property value of one element to `use(property, list_index, value)`
-  /// (list_index -1 for a scalar or a list's length), reading values with `take(type)`.
-  template <class Take, class Use>
-  static void read_properties(const Element& element, Take& take, Use& use,
-                              const std::string& where) {
+  /// (list_index -1 for a scalar or a list's length), reading values with `take(type)`;
+  /// `where()` places the element for messages.
+  template <class Take, class Use, class Where>
+  static void read_properties(const Element& element, Take& take, Use& use, const Where& where) {
     for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
       const Property& property = element.properties[p];
       if (!property.list_count) {
@@ -248,7 +274,10 @@ class BodyReader {
         continue;
       }
       const double count = take(*property.list_count);
-      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where, count));
+      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where(), count));
+      if (count > limits::max_halfedges)
+        throw MeshError(fmt::format("{}: list length {} is more than the {} a face may have",
+                                    where(), count, limits::max_halfedges));
       use(p, -1, count);
       for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
     }
@@ -256,8 +285,11 @@ class BodyReader {
 
   template <class Use>
   void read_binary(const Element& element, long long index, Use& use) {
-    const std::string where =
-        fmt::format("{}, {} element {} (counting from 0, binary data)", path_, element.name, index);
+    // Formatted only for a message: binary elements are many and cheap to read.
+    auto where = [&] {
+      return fmt::format("{}, {} element {} (counting from 0, binary data)", path_, element.name,
+                         index);
+    };
     auto take = [&](const Type& type) {
       if (position_ + type.size > body_.size())
         throw MeshError(
@@ -308,12 +340,16 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings) {
   const Header header = read_header(text, path);
   const Roles roles = find_roles(header, path);
+  check_counts_fit(header, text.size() - header.body_offset, path);
   const long long nv = header.elements[roles.vertex_element].count;
   PolygonSoup soup;
   BodyReader body(text, header, path);
   const bool ascii = header.format == Format::ascii;
   for (int e = 0; e < static_cast<int>(header.elements.size()); ++e) {
     const Element& element = header.elements[e];
+    // A binary element without properties takes no bytes: there is nothing to read, however
+    // many the header declares.
+    if (element.properties.empty() && !ascii) continue;
     for (long long i = 0; i < element.count; ++i) {
       if (e == roles.vertex_element) {
         Vec3 p = Vec3::Zero();
@@ -334,11 +370,14 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
         std::string bad_index;
         const int line = body.read(element, i, [&](int property, int item, double value) {
           if (property != roles.indices || item < 0) return;
-          if ((value < 0 || value >= static_cast<double>(nv)) && bad_index.empty())
-            bad_index = fmt::format(
-                "face refers to vertex {} (0-based), but the file has {} "
-                "vertices",
-                value, nv);
+          if (value < 0 || value >= static_cast<double>(nv)) {
+            if (bad_index.empty())
+              bad_index = fmt::format(
+                  "face refers to vertex {} (0-based), but the file has {} "
+                  "vertices",
+                  value, nv);
+            return;
+          }
           loop.push_back(static_cast<int>(value));
         });
         if (!bad_index.empty())

@@ -77,7 +77,8 @@ void OrbitView::pan(double dx_px, double dy_px, double height_px) {
 }
 
 void OrbitView::zoom(double steps) {
-  distance *= std::pow(0.9, steps);
+  // Bounded so that no sequence of zooms reaches 0 or infinity (models span up to 1e50 units).
+  distance = std::clamp(distance * std::pow(0.9, steps), 1e-60, 1e60);
 }
 
 void OrbitView::frame(const Vec3& center, double radius) {

@@ -4,12 +4,11 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::modeler {
 
@@ -26,8 +25,8 @@ json vec_json(const Vec3& p) {
 
 Vec3 vec_from(const json& j, const std::string& what) {
   if (!j.is_array() || j.size() != 3) throw MeshError(what + " must be an array of 3 numbers");
-  Vec3 p(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
-  if (!p.allFinite()) throw MeshError(what + " must be finite");
+  const Vec3 p(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+  limits::check_coordinates(p, what);
   return p;
 }
 
@@ -44,8 +43,10 @@ KgonControl control_from(const json& j, const std::string& what) {
   c.rotate_deg = j.value("rotate", 0.0);
   if (j.contains("offset")) c.offset = vec_from(j["offset"], what + " offset");
   c.regularize = j.value("regularize", false);
-  if (!std::isfinite(c.scale) || !std::isfinite(c.rotate_deg))
-    throw MeshError(what + ": scale and rotate must be finite");
+  // The same ranges as the `kgon` command: a project file is input like any other.
+  limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, what + ": scale");
+  limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                      what + ": rotate");
   return c;
 }
 
@@ -181,8 +182,12 @@ Project project_from_json(const std::string& text, const std::string& source) {
     p.view.yaw_deg = v.at("yaw").get<double>();
     p.view.pitch_deg = v.at("pitch").get<double>();
     p.view.fov_y_deg = v.value("fov", 30.0);
-    if (!(p.view.distance > 0) || !(p.view.fov_y_deg > 0 && p.view.fov_y_deg < 180))
+    if (!(p.view.distance > 0 && std::isfinite(p.view.distance)) ||
+        !(p.view.fov_y_deg > 0 && p.view.fov_y_deg < 180))
       throw MeshError("the view needs a positive distance and a field of view in (0, 180)");
+    limits::check_range(p.view.yaw_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                        "the view's yaw");
+    limits::check_range(p.view.pitch_deg, -90, 90, "the view's pitch");
 
     const json& d = j.at("display");
     p.display.method = parse_method(d.at("method").get<std::string>());
@@ -194,7 +199,8 @@ Project project_from_json(const std::string& text, const std::string& source) {
     for (const json& o : d.value("overlays", json::array())) {
       const auto name = o.get<std::string>();
       const auto* it = std::find(std::begin(overlay_names), std::end(overlay_names), name);
-      if (it == std::end(overlay_names)) throw MeshError("unknown overlay '" + name + "'");
+      if (it == std::end(overlay_names))
+        throw MeshError("unknown overlay '" + limits::quoted(name) + "'");
       p.display.overlays[it - std::begin(overlay_names)] = true;
     }
     p.display.markers = d.value("markers", false);
@@ -216,11 +222,7 @@ void save_project(const std::string& path, const Project& project) {
 }
 
 Project load_project(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MeshError(fmt::format("{}: cannot open the project file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return project_from_json(text.str(), path);
+  return project_from_json(read_regular_file(path), path);
 }
 
 std::string autosave_path(const std::string& document_path) {

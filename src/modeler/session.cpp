@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/primitives.hpp"
 
@@ -26,7 +27,8 @@ double number(const std::string& text, const std::string& what) {
   double v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v))
-    throw MeshError(fmt::format("{} must be a finite number, not '{}'", what, text));
+    throw MeshError(
+        fmt::format("{} must be a finite number, not '{}'", what, limits::quoted(text)));
   return v;
 }
 
@@ -34,7 +36,7 @@ int integer(const std::string& text, const std::string& what) {
   int v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end != text.data() + text.size())
-    throw MeshError(fmt::format("{} must be an integer, not '{}'", what, text));
+    throw MeshError(fmt::format("{} must be an integer, not '{}'", what, limits::quoted(text)));
   return v;
 }
 
@@ -45,13 +47,13 @@ void expect(const std::vector<std::string>& w, size_t min, size_t max, const cha
 bool on_off(const std::string& text) {
   if (text == "on") return true;
   if (text == "off") return false;
-  throw MeshError(fmt::format("expected on or off, not '{}'", text));
+  throw MeshError(fmt::format("expected on or off, not '{}'", limits::quoted(text)));
 }
 
 Vertex vertex_number(const HalfedgeMesh& m, const std::string& text) {
   const int n = integer(text, "a vertex number");
   if (n < 1 || n > m.vertex_capacity() || m.is_deleted(Vertex(n - 1)))
-    throw MeshError(fmt::format("there is no vertex {}", text));
+    throw MeshError(fmt::format("there is no vertex {}", limits::quoted(text)));
   return Vertex(n - 1);
 }
 
@@ -73,6 +75,9 @@ bool is_operation(const std::string& word) {
 }
 
 const char* const overlay_words[] = {"mesh", "kgons", "nets", "tess"};
+
+/// Zoom steps in one command: 0.9^100 is a factor of 4e-5, more than any view needs at once.
+constexpr double kMostZoomSteps = 100;
 
 }  // namespace
 
@@ -218,6 +223,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     const Vertex v = vertex_number(mesh, w[1]);
     Vec3 p(number(w[2], "x"), number(w[3], "y"), number(w[4], "z"));
     if (cmd == "translate-vertex") p += mesh.position(v);
+    limits::check_coordinates(p, fmt::format("{}: vertex {}", cmd, v.idx + 1));
     s.apply(s.document.move_vertices({v}, {p}));
     result.message = fmt::format("vertex {} moved; {} of {} patches recomputed in {:.2f} ms",
                                  v.idx + 1, s.last_update.recomputed_patches,
@@ -275,12 +281,16 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     if (what == "scale") {
       need(1);
       c.scale = number(w[i + 1], "the scale");
+      limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, "the scale");
     } else if (what == "rotate") {
       need(1);
       c.rotate_deg = number(w[i + 1], "the rotation");
+      limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                          "the rotation");
     } else if (what == "offset") {
       need(3);
       c.offset = Vec3(number(w[i + 1], "x"), number(w[i + 2], "y"), number(w[i + 3], "z"));
+      limits::check_coordinates(c.offset, "the offset");
     } else if (what == "regularize" || what == "regularise") {
       need(1);
       c.regularize = on_off(w[i + 1]);
@@ -369,11 +379,17 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     }
   } else if (cmd == "orbit") {
     expect(w, 2, 2, "orbit DYAW DPITCH");
-    s.view.yaw_deg += number(w[1], "the yaw");
-    s.view.pitch_deg = std::clamp(s.view.pitch_deg + number(w[2], "the pitch"), -90.0, 90.0);
+    const double yaw = number(w[1], "the yaw"), pitch = number(w[2], "the pitch");
+    limits::check_range(yaw, -limits::max_rotation_deg, limits::max_rotation_deg, "the yaw");
+    limits::check_range(pitch, -limits::max_rotation_deg, limits::max_rotation_deg, "the pitch");
+    // Kept to one turn, so that no number of orbits loses the angle's precision.
+    s.view.yaw_deg = std::remainder(s.view.yaw_deg + yaw, 360.0);
+    s.view.pitch_deg = std::clamp(s.view.pitch_deg + pitch, -90.0, 90.0);
   } else if (cmd == "zoom") {
     expect(w, 1, 1, "zoom STEPS");
-    s.view.zoom(number(w[1], "the zoom steps"));
+    const double steps = number(w[1], "the zoom steps");
+    limits::check_range(steps, -kMostZoomSteps, kMostZoomSteps, "the zoom steps");
+    s.view.zoom(steps);
   } else if (cmd == "screenshot") {
     const std::string path = rest_after_first_word(strip_comment(raw));
     if (path.empty()) throw MeshError("usage: screenshot PATH");

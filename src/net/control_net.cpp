@@ -1,5 +1,7 @@
 #include "stitch/net/control_net.hpp"
 
+#include <tbb/parallel_for.h>
+
 namespace stitch {
 
 ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c) {
@@ -44,7 +46,10 @@ ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c)
 
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& m, const KgonSet& kgons) {
   std::vector<ControlNet> nets(m.halfedge_capacity());
-  for (Halfedge h : m.halfedges()) nets[h.idx] = build_control_net(m, kgons, h);
+  const std::vector<Halfedge> corners = m.halfedges();
+  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
+    nets[corners[i].idx] = build_control_net(m, kgons, corners[i]);
+  });
   return nets;
 }
 

@@ -20,13 +20,16 @@ ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) 
         "connect-faces: face {} has {} sides but face {} has {}; they must match (subdivide-edge "
         "or insert-edge first)",
         f.idx + 1, k, g.idx + 1, lg.size()));
-  auto partner = [&](int i) { return lg[((twist - i) % k + k) % k]; };
+  // Reduced first: twist - i must not overflow for a twist near INT_MIN.
+  const int turn = (twist % k + k) % k;
+  auto partner_index = [&](int i) { return (turn - i + k) % k; };
+  auto partner = [&](int i) { return lg[partner_index(i)]; };
   for (int i = 0; i < k; ++i)
     if (mesh.origin(lf[i]) == mesh.origin(partner(i)))
       throw MeshError(fmt::format(
           "connect-faces: corner {} of face {} and corner {} of face {} are both vertex {}; the "
           "edge joining them would be a loop",
-          i + 1, f.idx + 1, ((twist - i) % k + k) % k + 1, g.idx + 1, mesh.origin(lf[i]).idx + 1));
+          i + 1, f.idx + 1, partner_index(i) + 1, g.idx + 1, mesh.origin(lf[i]).idx + 1));
 
   ConnectFacesResult result;
   result.degree = k;

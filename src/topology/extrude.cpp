@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "raw_mesh.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
@@ -41,10 +42,18 @@ ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double s
   ExtrudeResult result;
   result.degree = k;
   const Vec3 centre = td::face_centroid(mesh, f);
-  std::vector<Vertex> top(k);
+  // Checked before the mesh changes, so a refused extrusion leaves it as it was.
+  std::vector<Vec3> points(k);
   for (int i = 0; i < k; ++i) {
     const Vec3 p = mesh.position(mesh.origin(loop[i]));
-    top[i] = mesh.add_vertex(centre + scale * (p - centre) + distance * n);
+    points[i] = centre + scale * (p - centre) + distance * n;
+    limits::check_coordinates(
+        points[i],
+        fmt::format("extrude-face: the extruded corner {} of face {}", i + 1, f.idx + 1));
+  }
+  std::vector<Vertex> top(k);
+  for (int i = 0; i < k; ++i) {
+    top[i] = mesh.add_vertex(points[i]);
     if (i == 0) result.first_vertex = top[i].idx;
   }
   std::vector<Face> side(k);

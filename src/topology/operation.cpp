@@ -8,6 +8,8 @@
 #include <set>
 
 #include "raw_mesh.hpp"
+#include "stitch/mesh/build.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/topology/connect_faces.hpp"
 #include "stitch/topology/delete_face.hpp"
 #include "stitch/topology/edge_ops.hpp"
@@ -37,7 +39,8 @@ int parse_number(std::string_view text, const char* what) {
   int value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || value < 1)
-    throw MeshError(fmt::format("'{}' is not a valid {} number (a positive integer)", text, what));
+    throw MeshError(fmt::format("'{}' is not a valid {} number (a positive integer)",
+                                limits::quoted(text), what));
   return value;
 }
 
@@ -47,7 +50,7 @@ int parse_int(std::string_view text, const char* what) {
   if (!text.empty() && text[0] == '+') ++first;
   const auto [end, ec] = std::from_chars(first, text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || first == end)
-    throw MeshError(fmt::format("'{}' is not a valid {} (an integer)", text, what));
+    throw MeshError(fmt::format("'{}' is not a valid {} (an integer)", limits::quoted(text), what));
   return value;
 }
 
@@ -56,7 +59,8 @@ double parse_double(std::string_view text, const char* what) {
   char* end = nullptr;
   const double value = std::strtod(s.c_str(), &end);
   if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
-    throw MeshError(fmt::format("'{}' is not a valid {} (a finite number)", text, what));
+    throw MeshError(
+        fmt::format("'{}' is not a valid {} (a finite number)", limits::quoted(text), what));
   return value;
 }
 
@@ -157,6 +161,11 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, 
                           : op == "vertex-insertion" ? vertex_insertion(mesh)
                           : op == "catmull-clark"    ? catmull_clark_step(mesh)
                                                      : dual(mesh);
+    // New points are averages of old ones, so this holds unless the input was already wrong;
+    // checked anyway because everything downstream trusts it.
+    for (Vertex v : result.vertices())
+      limits::check_coordinates(result.position(v),
+                                fmt::format("{}: new vertex {}", op, v.idx + 1));
     mesh = std::move(result);
     report.what = "whole mesh remeshed and renumbered";
   } else {
@@ -164,7 +173,7 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, 
         fmt::format("unknown operation '{}' (known: insert-edge, delete-edge, "
                     "subdivide-edge, collapse-edge, extrude-face, connect-faces, "
                     "delete-face, doo-sabin, vertex-insertion, catmull-clark, dual)",
-                    op));
+                    limits::quoted(op)));
   }
   if (census == Census::full) {
     report.stats = topology_stats(mesh);
@@ -190,7 +199,8 @@ std::string OperationReport::summary(std::string_view op_text) const {
 Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text) {
   const size_t at = text.find('@');
   if (at == std::string_view::npos)
-    throw MeshError(fmt::format("'{}' is not a corner; write V@F (vertex V on face F)", text));
+    throw MeshError(
+        fmt::format("'{}' is not a corner; write V@F (vertex V on face F)", limits::quoted(text)));
   const std::string_view v_text = text.substr(0, at);
   std::string_view f_text = text.substr(at + 1);
   int occurrence = 0;
@@ -268,7 +278,18 @@ OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line, Censu
   const std::vector<std::string_view> words = split_words(line);
   if (words.empty()) return {};
   try {
-    return run(mesh, words, census);
+    if (census == Census::counts_only) return run(mesh, words, census);
+    // The full census already costs a pass over the mesh; so does making sure the result reads
+    // back from a file, which needs the mesh as it was to return to when it would not.
+    HalfedgeMesh before = mesh;
+    OperationReport report = run(mesh, words, census);
+    try {
+      check_reads_back(mesh);
+    } catch (const MeshError& e) {
+      mesh = std::move(before);
+      throw MeshError(fmt::format("refused: {}", e.what()));
+    }
+    return report;
   } catch (const MeshError& e) {
     const std::string msg = e.what();
     // Operator messages already start with the operation's name; parser messages do not.

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
@@ -89,6 +90,10 @@ HalfedgeMesh make_dodecahedron() {
 
 HalfedgeMesh make_prism(int n) {
   if (n < 2) throw MeshError(fmt::format("prism: needs n >= 2 sides, got {}", n));
+  if (n > limits::max_primitive_faces - 2)
+    throw MeshError(
+        fmt::format("prism: at most {} sides (a primitive has at most {} faces), got {}",
+                    limits::max_primitive_faces - 2, limits::max_primitive_faces, n));
   std::vector<Vec3> pos;
   for (int z : {-1, 1})
     for (int i = 0; i < n; ++i) {
@@ -116,6 +121,9 @@ HalfedgeMesh make_prism(int n) {
 HalfedgeMesh make_torus(int m, int n, double major_radius, double minor_radius) {
   if (m < 3 || n < 3)
     throw MeshError(fmt::format("torus: needs m, n >= 3 segments, got {} x {}", m, n));
+  if (static_cast<long long>(m) * n > limits::max_primitive_faces)
+    throw MeshError(fmt::format("torus: at most {} faces (m x n), got {} x {}",
+                                limits::max_primitive_faces, m, n));
   PolygonSoup soup;
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < n; ++j) {

@@ -42,4 +42,9 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options = {
 /// The inverse: positions and face loops (0-based, live elements only, in index order).
 PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh);
 
+/// Throws MeshError saying why unless the mesh, written as a file (to_polygon_soup), reads back
+/// through build_mesh (2-sided faces allowed) with the same counts, components and genus. Every
+/// edit passes this before it is accepted, so everything stitch writes it can read again.
+void check_reads_back(const HalfedgeMesh& mesh);
+
 }  // namespace stitch

@@ -11,7 +11,9 @@
 
 namespace stitch {
 
-/// Reads a polygon soup; the format is chosen by the file's extension (.obj, .off, .ply).
+/// Reads a polygon soup; the format is chosen by the file's extension (.obj, .off, .ply, .stl).
+/// STL (ASCII or binary) has no shared vertices: corners closer than 1e-6 of the bounding box
+/// diagonal are welded into one vertex, and triangles that collapse in the welding are dropped.
 /// OBJ: faces of any degree, texture/normal indices and negative (relative) indices accepted,
 /// OpenSubdiv's `t` tag lines and other unsupported statements ignored (one warning each kind).
 /// Throws MeshError naming the file and line (or element) for anything malformed.
@@ -32,6 +34,16 @@ void write_mesh(const std::string& path, const HalfedgeMesh& mesh);
 /// as it was, and the error is rethrown (as MeshError for I/O failures).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
+/// The same for writers that can only write to a path (OpenCASCADE's): `write` gets the
+/// temporary file's path. A target that exists and is not a regular file (a device such as
+/// /dev/stdout or /dev/full, a pipe) is not replaced: the bytes are written to it, and a write
+/// error (ENOSPC) is thrown like any other.
+void write_file_atomically_at(const std::string& path,
+                              const std::function<void(const std::string& temporary)>& write);
+
+/// The bytes of a regular file (after following symbolic links). Pipes, devices and sockets
+/// are refused, since reading them may never end. Throws MeshError naming the file.
+std::string read_regular_file(const std::string& path);
 
 /// Lower-case extension of a path including the dot (".obj"), or "" when it has none.
 std::string file_extension(const std::string& path);

@@ -1,15 +1,51 @@
 // Writing tessellated surfaces.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
+#include "stitch/eval/surface.hpp"
 #include "stitch/tess/surface_mesh.hpp"
 
 namespace stitch {
 
-/// Writes a welded surface by extension: .obj (with vn), .ply (with normals), .off, .stl.
-/// Atomic (see write_file_atomically).
-void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh);
+/// How a welded surface is written.
+struct SurfaceFileOptions {
+  /// .ply as text instead of binary little-endian (both hold double x y z nx ny nz: exact).
+  bool ascii_ply = false;
+  /// Called with the fraction (0..1) done; from one thread at a time.
+  std::function<void(double)> progress;
+};
+
+/// The extensions write_surface_mesh and write_smooth_surface take, for messages.
+inline constexpr const char* kSurfaceMeshExtensions = ".obj, .ply, .off, .stl, .glb, .gltf";
+
+/// Writes a welded surface by extension: .obj (with vn), .ply (binary with normals unless
+/// options.ascii_ply), .off, .stl (binary), and glTF 2.0 with normals: .glb, or .gltf with its
+/// buffer in a .bin beside it. Atomic (see write_file_atomically).
+void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
+                        const SurfaceFileOptions& options = {});
+
+/// What write_smooth_surface wrote.
+struct SurfaceFileCounts {
+  std::int64_t vertices = 0, quads = 0;
+};
+
+/// The same file as write_surface_mesh(path, tessellate(mesh, surface, {resolution, true})),
+/// byte for byte, made block by block while it is written: memory grows with the input mesh,
+/// not with the resolution (only .stl, which repeats positions per triangle, holds them all),
+/// and evaluation runs on every core. Refuses non-finite samples. Atomic.
+SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
+                                       const Surface& surface, int resolution,
+                                       const SurfaceFileOptions& options = {});
+
+/// Bytes of memory `stitch smooth` needs at its peak for this mesh: the mesh and its surface
+/// (about 1 kB per corner, measured: docs/performance.md) and whatever the output holds whole
+/// (.stl: every position; unwelded: the whole tessellation). The welded streamed writer holds
+/// only a few blocks, so the resolution does not count there.
+std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bool welded,
+                                    const std::string& path);
 
 /// Writes every sample with its patch attributes as binary little-endian PLY: double x y z
 /// nx ny nz u v and int patch, so continuity can be checked from the file alone. Atomic.

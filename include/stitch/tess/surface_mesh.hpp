@@ -20,4 +20,7 @@ struct SurfaceMesh {
   [[nodiscard]] int num_vertices() const { return static_cast<int>(positions.size()); }
 };
 
+/// The first sample whose position or normal is not finite, or -1 when there is none.
+int first_non_finite_sample(const SurfaceMesh& mesh);
+
 }  // namespace stitch

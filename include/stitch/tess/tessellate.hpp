@@ -9,6 +9,8 @@ namespace stitch {
 struct TessellationOptions {
   int resolution = 8;  ///< segments per patch side, >= 1
   bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
+  /// Fill SurfaceMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
+  bool sample_attributes = true;
 };
 
 /// Welded: one watertight, consistently oriented mesh with the input's genus; a sample shared by

@@ -24,7 +24,10 @@ struct OperationReport {
 
 /// How much of the topology apply_operation recounts for its report: everything (a pass over
 /// the whole mesh), or only what is known without one (V, E, F, Euler characteristic), for
-/// callers that must not pay in proportion to the mesh, such as the modeler.
+/// callers that must not pay in proportion to the mesh, such as the modeler. With the full
+/// census the result must also pass check_reads_back (the operation is refused, and the mesh
+/// left as it was, when it does not); without it the reader's exhaustive pairing search is
+/// what makes the result read back (see build_mesh).
 enum class Census { full, counts_only };
 
 /// The words of a line, split at white space.

@@ -1,0 +1,26 @@
+// What the binding files of the Python module share: the mesh as Python holds it, and the
+// functions that add each part of the API to the module.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch::python {
+
+namespace py = pybind11;
+
+/// A Python `stitch.Mesh`: an immutable snapshot that edits replace as a whole, so a Surface
+/// (or a numpy view of the vertices) keeps the mesh it was made from, whatever happens later.
+struct MeshHandle {
+  std::shared_ptr<const HalfedgeMesh> mesh;
+};
+
+/// stitch.Mesh, stitch.read, stitch.primitive.
+void bind_mesh(py::module_& m);
+/// stitch.Surface and the stitch.Tessellation it returns.
+void bind_surface(py::module_& m);
+
+}  // namespace stitch::python

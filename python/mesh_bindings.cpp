@@ -1,0 +1,218 @@
+// stitch.Mesh, stitch.read and stitch.primitive: building, inspecting, editing and writing meshes.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <string_view>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "stitch/mesh/build.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
+
+namespace stitch::python {
+
+namespace {
+
+BuildOptions build_options(bool fill_holes) {
+  BuildOptions o;
+  o.fill_holes = fill_holes;
+  // The topology operators make 2-sided faces and edited meshes must read back, as in the CLI.
+  o.allow_two_gons = true;
+  return o;
+}
+
+void warn(const std::vector<std::string>& messages) {
+  for (const std::string& w : messages)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes) {
+  PolygonSoup soup;
+  soup.positions = to_positions(vertices);
+  soup.faces = to_faces(faces);
+  BuildReport report;
+  std::shared_ptr<const HalfedgeMesh> mesh;
+  {
+    py::gil_scoped_release release;
+    mesh =
+        std::make_shared<const HalfedgeMesh>(build_mesh(soup, build_options(fill_holes), &report));
+  }
+  warn(report.warnings);
+  return {std::move(mesh)};
+}
+
+MeshHandle read(const std::string& path, bool fill_holes) {
+  BuildReport report;
+  std::vector<std::string> warnings;
+  std::shared_ptr<const HalfedgeMesh> mesh;
+  {
+    py::gil_scoped_release release;
+    mesh = std::make_shared<const HalfedgeMesh>(
+        read_mesh(path, build_options(fill_holes), &report, &warnings));
+  }
+  warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  warn(warnings);
+  return {std::move(mesh)};
+}
+
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+/// One `stitch edit` run: numbers refer to the mesh as it stands during the call (see
+/// docs/editing.md), and the mesh is replaced only when every operation succeeded.
+std::vector<std::string> edit(MeshHandle& self, const std::vector<std::string>& ops) {
+  std::vector<std::string> summaries;
+  std::shared_ptr<HalfedgeMesh> edited;
+  const std::shared_ptr<const HalfedgeMesh> before = self.mesh;  // see `stats`
+  {
+    py::gil_scoped_release release;
+    edited = std::make_shared<HalfedgeMesh>(*before);
+    int number = 0;
+    for (const std::string& text : ops) {
+      std::string_view rest = text;
+      while (!rest.empty()) {  // a string may hold several lines, as an ops file does
+        const std::string_view line = trimmed(rest.substr(0, rest.find('\n')));
+        rest = rest.find('\n') == std::string_view::npos ? "" : rest.substr(rest.find('\n') + 1);
+        ++number;
+        OperationReport r;
+        try {
+          r = apply_operation(*edited, line);
+        } catch (const MeshError& e) {
+          throw MeshError(fmt::format("operation {} ('{}'): {} (the mesh is unchanged)", number,
+                                      line, e.what()));
+        }
+        if (!r.what.empty()) summaries.push_back(r.summary(line.substr(0, line.find(" #"))));
+      }
+    }
+    validate(*edited);
+    // Compacted as the file `stitch edit` writes, so the numbers of the next edit are the ones
+    // `faces` and `vertices` show (plus one).
+    edited->garbage_collection();
+  }
+  self.mesh = std::move(edited);
+  return summaries;
+}
+
+int euler(const HalfedgeMesh& mesh) {
+  return mesh.num_vertices() - mesh.num_edges() + mesh.num_faces();
+}
+
+// Takes the snapshot by value, before the GIL is released: another thread may edit the Mesh
+// meanwhile, which replaces its snapshot but leaves this one alive.
+TopologyStats stats(std::shared_ptr<const HalfedgeMesh> mesh) {
+  py::gil_scoped_release release;
+  return topology_stats(*mesh);
+}
+
+py::dict topology(std::shared_ptr<const HalfedgeMesh> mesh) {
+  const TopologyStats s = stats(mesh);
+  py::dict d;
+  d["vertices"] = s.vertices;
+  d["edges"] = s.edges;
+  d["faces"] = s.faces;
+  d["components"] = s.components;
+  d["euler"] = s.euler;
+  d["genus"] = s.genus;
+  d["valence_histogram"] = s.valence_histogram;
+  d["degree_histogram"] = s.degree_histogram;
+  d["extraordinary_vertices"] = s.extraordinary_vertices;
+  d["extraordinary_faces"] = s.extraordinary_faces;
+  return d;
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  py::class_<MeshHandle>(m, "Mesh",
+                         "A closed, oriented, manifold polygon mesh (faces of any degree). "
+                         "Immutable except through edit().")
+      .def(py::init(&build), py::arg("vertices"), py::arg("faces"), py::kw_only(),
+           py::arg("fill_holes") = false,
+           "Builds a mesh from an (n, 3) array of positions and faces given as 0-based vertex "
+           "index lists of any length or an (m, k) integer array. Raises StitchError (a "
+           "ValueError) for anything but a closed oriented manifold; messages number vertices "
+           "and faces from 1, as files do. fill_holes closes each boundary loop with one face.")
+      .def_property_readonly("num_vertices",
+                             [](const MeshHandle& h) { return h.mesh->num_vertices(); })
+      .def_property_readonly("num_edges", [](const MeshHandle& h) { return h.mesh->num_edges(); })
+      .def_property_readonly("num_faces", [](const MeshHandle& h) { return h.mesh->num_faces(); })
+      .def_property_readonly(
+          "num_patches", [](const MeshHandle& h) { return h.mesh->num_halfedges(); },
+          "one patch per corner (half-edge)")
+      .def_property_readonly("euler", [](const MeshHandle& h) { return euler(*h.mesh); })
+      .def_property_readonly(
+          "genus", [](const MeshHandle& h) { return stats(h.mesh).genus; },
+          "total genus over all components")
+      .def_property_readonly("components",
+                             [](const MeshHandle& h) { return stats(h.mesh).components; })
+      .def(
+          "topology", [](const MeshHandle& h) { return topology(h.mesh); },
+          "counts, Euler characteristic, genus, components and the valence and degree "
+          "histograms, as `stitch info` reports them")
+      .def_property_readonly(
+          "vertices",
+          [](const MeshHandle& h) {
+            // The owner is a Mesh sharing this snapshot, so a later edit() leaves the view valid.
+            return view_rows<double, 3>(h.mesh->positions(), py::cast(MeshHandle{h.mesh}));
+          },
+          "(n, 3) float64 positions, a read-only view")
+      .def_property_readonly(
+          "faces", [](const MeshHandle& h) { return to_polygon_soup(*h.mesh).faces; },
+          "list of 0-based vertex index lists")
+      .def(
+          "edit",
+          [](MeshHandle& h, const py::args& ops) {
+            std::vector<std::string> lines;
+            for (py::handle op : ops) {
+              if (!py::isinstance<py::str>(op))
+                throw py::value_error(
+                    "edit() takes operation strings, e.g. \"insert-edge 1@1 5@2\"");
+              lines.push_back(op.cast<std::string>());
+            }
+            return edit(h, lines);
+          },
+          "Applies operations in the syntax of `stitch edit --op` (docs/editing.md), in order, "
+          "each argument one operation or several lines of them. Vertices and faces are numbered "
+          "from 1 in the order of `vertices` and `faces`; within one call the numbers refer to "
+          "the mesh as it stands (removed elements leave gaps), afterwards the mesh is compacted. "
+          "All or nothing: when an operation is refused the mesh is unchanged. Returns one "
+          "summary line per operation.")
+      .def(
+          "write",
+          [](const MeshHandle& h, const std::string& path) {
+            const std::shared_ptr<const HalfedgeMesh> mesh = h.mesh;  // see `stats`
+            py::gil_scoped_release release;
+            write_mesh(path, *mesh);
+          },
+          py::arg("path"), "Writes the mesh by extension (.obj, .off, .ply, .stl), atomically.")
+      .def("__repr__", [](const MeshHandle& h) {
+        return fmt::format("<stitch.Mesh V {} E {} F {}, Euler {}>", h.mesh->num_vertices(),
+                           h.mesh->num_edges(), h.mesh->num_faces(), euler(*h.mesh));
+      });
+
+  m.def("read", &read, py::arg("path"), py::kw_only(), py::arg("fill_holes") = false,
+        "Reads .obj, .off or .ply with every check of the command line; warnings (dropped "
+        "unused vertices, filled holes) become Python UserWarnings.");
+  m.def(
+      "primitive",
+      [](const std::string& name, const py::args& params) {
+        std::vector<int> p;
+        for (py::handle param : params)
+          if (to_int(param, p.emplace_back()) != IntStatus::ok)
+            throw py::value_error(
+                fmt::format("primitive {}: parameters are integers of int's range", name));
+        py::gil_scoped_release release;
+        return MeshHandle{std::make_shared<const HalfedgeMesh>(make_primitive(name, p))};
+      },
+      py::arg("name"),
+      "A primitive solid as `stitch primitive` makes it: tetrahedron, cube, octahedron, "
+      "dodecahedron, icosahedron, prism N, torus M N (numbering in docs/editing.md).");
+}
+
+}  // namespace stitch::python

@@ -1,0 +1,37 @@
+#include "stitch/mesh/limits.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace stitch::limits {
+
+std::string quoted(std::string_view token) {
+  if (token.size() <= max_quoted) return std::string(token);
+  return fmt::format("{}... ({} more characters)", token.substr(0, max_quoted),
+                     token.size() - max_quoted);
+}
+
+std::string coordinate_problem(const Vec3& p) {
+  if (!p.allFinite())
+    return fmt::format("has a non-finite coordinate ({}, {}, {})", p.x(), p.y(), p.z());
+  if (p.cwiseAbs().maxCoeff() > max_coordinate)
+    return fmt::format(
+        "has a coordinate beyond ±{:g} ({:g}, {:g}, {:g}): products of such coordinates "
+        "overflow; scale the model down",
+        max_coordinate, p.x(), p.y(), p.z());
+  return {};
+}
+
+void check_coordinates(const Vec3& p, std::string_view what) {
+  if (const std::string problem = coordinate_problem(p); !problem.empty())
+    throw MeshError(fmt::format("{} {}", what, problem));
+}
+
+void check_range(double value, double lo, double hi, std::string_view what) {
+  if (!(value >= lo && value <= hi))
+    throw MeshError(
+        fmt::format("{} must be a number from {:g} to {:g}, not {:g}", what, lo, hi, value));
+}
+
+}  // namespace stitch::limits

@@ -1,0 +1,166 @@
+// Writing polygon meshes at the speed of the disk: vertices and faces are produced and formatted
+// in blocks on every core and written in order, so a mesh can be written while it is computed
+// (the smooth surface of a large mesh never has to be held whole) and the bytes do not depend on
+// the number of threads. Numbers go through std::to_chars (shortest text that reads back
+// exactly), binary values into bulk buffers. Internal to the library.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch::io_detail {
+
+/// One block of vertices: positions, and normals when the mesh has them.
+struct VertexBlock {
+  std::vector<Vec3> positions, normals;
+};
+
+/// One block of faces: the size of each face and all their vertex indices (0-based), in order.
+struct FaceBlock {
+  std::vector<int> sizes;
+  std::vector<int> indices;
+};
+
+/// A mesh as a writer reads it. The callbacks may run for several blocks at once on different
+/// threads; each fills its block from scratch (resize, then assign).
+struct MeshStream {
+  std::int64_t num_vertices = 0;
+  std::int64_t num_faces = 0;
+  bool has_normals = false;
+  int max_face_degree = 3;     ///< the PLY face list's count type: uchar up to 255, else int
+  std::int64_t triangles = 0;  ///< sum over faces of (size - 2): STL's triangle count
+  std::function<void(std::int64_t begin, std::int64_t end, VertexBlock&)> vertices;
+  std::function<void(std::int64_t begin, std::int64_t end, FaceBlock&)> faces;
+};
+
+/// Called with the fraction (0..1) of the file written so far.
+using WriteProgress = std::function<void(double)>;
+
+enum class PlyEncoding { ascii, binary_little_endian };
+
+/// OBJ: `v` (and `vn`, referenced as `a//a`) lines block by block, then 1-based faces.
+void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+               const WriteProgress& progress = {});
+/// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals.
+void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+               const WriteProgress& progress = {});
+/// PLY with double x y z (and nx ny nz): an exact round trip in either encoding.
+void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
+               std::string_view comment, const WriteProgress& progress = {});
+/// Binary STL; every polygon is fanned from its first vertex into triangles, whose corners are
+/// looked up in `positions` (STL repeats them per triangle, so they must be at hand).
+void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+               std::string_view comment, const WriteProgress& progress = {});
+
+/// Bytes a block is formatted into. Unlike std::string it neither zero-fills what it is about to
+/// overwrite nor gives its memory back when cleared, so the few buffers the writers cycle through
+/// are allocated (and their pages touched) once per file, not once per block.
+class OutputBuffer {
+ public:
+  [[nodiscard]] const char* data() const { return data_.get(); }
+  [[nodiscard]] size_t size() const { return size_; }
+  void clear() { size_ = 0; }
+  void reserve(size_t capacity);
+  /// Makes room for n more bytes and returns where they go.
+  char* extend(size_t n) {
+    if (size_ + n > capacity_) reserve(std::max(2 * capacity_, size_ + n));
+    char* at = data_.get() + size_;
+    size_ += n;
+    return at;
+  }
+  void append(const char* first, const char* last) {
+    std::memcpy(extend(static_cast<size_t>(last - first)), first,
+                static_cast<size_t>(last - first));
+  }
+  OutputBuffer& operator+=(char c) {
+    *extend(1) = c;
+    return *this;
+  }
+  OutputBuffer& operator+=(std::string_view text) {
+    append(text.data(), text.data() + text.size());
+    return *this;
+  }
+
+ private:
+  std::unique_ptr<char[]> data_;
+  size_t size_ = 0, capacity_ = 0;
+};
+
+/// Formats [0, count) in blocks of `block` items, format(begin, end, text) for several blocks at
+/// once on all cores, and writes the texts to `out` in block order; written(items) after each.
+/// Throws MeshError when the stream fails.
+void write_blocks(std::ostream& out, std::int64_t count, std::int64_t block,
+                  const std::function<void(std::int64_t, std::int64_t, OutputBuffer&)>& format,
+                  const std::function<void(std::int64_t)>& written = {});
+
+/// Little-endian values into a buffer sized once up front (binary formats write millions of
+/// small values: one append each would cost more than the values).
+class LittleEndianWriter {
+ public:
+  /// Appends `size` bytes to `bytes`, to be filled by put().
+  LittleEndianWriter(OutputBuffer& bytes, size_t size) : at_(bytes.extend(size)) {}
+  template <class T>
+  void put(T value) {
+    std::array<char, sizeof(T)> raw;
+    std::memcpy(raw.data(), &value, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(raw.begin(), raw.end());
+    std::memcpy(at_, raw.data(), sizeof(T));
+    at_ += sizeof(T);
+  }
+  void put(const Vec3& p) {
+    put(p.x());
+    put(p.y());
+    put(p.z());
+  }
+
+ private:
+  char* at_;
+};
+
+/// write_file_atomically with a message naming `path` when a writer fails.
+void write_mesh_file(const std::string& path, bool binary,
+                     const std::function<void(std::ostream&)>& write);
+
+/// A stream over vertex and face arrays held in memory (`normals` may be null). Faces is any
+/// container of index loops (std::vector<int>, std::array<int, 4>, ...).
+template <class Faces>
+MeshStream stream_arrays(const std::vector<Vec3>& positions, const std::vector<Vec3>* normals,
+                         const Faces& faces) {
+  MeshStream s;
+  s.num_vertices = static_cast<std::int64_t>(positions.size());
+  s.num_faces = static_cast<std::int64_t>(std::size(faces));
+  s.has_normals = normals != nullptr;
+  s.max_face_degree = 0;
+  for (const auto& loop : faces) {
+    const int size = static_cast<int>(std::size(loop));
+    s.max_face_degree = std::max(s.max_face_degree, size);
+    s.triangles += std::max(0, size - 2);
+  }
+  s.vertices = [&positions, normals](std::int64_t begin, std::int64_t end, VertexBlock& block) {
+    block.positions.assign(positions.begin() + begin, positions.begin() + end);
+    if (normals) block.normals.assign(normals->begin() + begin, normals->begin() + end);
+  };
+  s.faces = [&faces](std::int64_t begin, std::int64_t end, FaceBlock& block) {
+    block.sizes.clear();
+    block.indices.clear();
+    for (std::int64_t f = begin; f < end; ++f) {
+      const auto& loop = faces[static_cast<size_t>(f)];
+      block.sizes.push_back(static_cast<int>(std::size(loop)));
+      block.indices.insert(block.indices.end(), std::begin(loop), std::end(loop));
+    }
+  };
+  return s;
+}
+
+}  // namespace stitch::io_detail

@@ -1,0 +1,171 @@
+#include "layout.hpp"
+
+#include <fmt/format.h>
+
+#include <limits>
+
+#include "../eval/patch_sampler.hpp"
+
+namespace stitch {
+
+TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vector<Corner>& corners,
+                                       int resolution, bool welded)
+    : mesh_(mesh), corners_(corners), n_(resolution), welded_(welded) {
+  if (n_ < 1) throw MeshError("the resolution must be at least 1");
+  const auto num_corners = static_cast<std::int64_t>(corners.size());
+  const std::int64_t per_side = n_ - 1;
+  if (!welded_) {
+    num_vertices_ = num_corners * (n_ + 1) * (n_ + 1);
+  } else {
+    corner_index_.assign(mesh.halfedge_capacity(), -1);
+    for (size_t k = 0; k < corners.size(); ++k) corner_index_[corners[k].idx] = static_cast<int>(k);
+    vertex_slot_.assign(mesh.vertex_capacity(), -1);
+    face_slot_.assign(mesh.face_capacity(), -1);
+    edge_slot_.assign(mesh.edge_capacity(), -1);
+    for (int v = 0; v < mesh.vertex_capacity(); ++v)
+      if (!mesh.is_deleted(Vertex(v))) {
+        vertex_slot_[v] = static_cast<int>(vertices_.size());
+        vertices_.push_back(Vertex(v));
+      }
+    for (int f = 0; f < mesh.face_capacity(); ++f)
+      if (!mesh.is_deleted(Face(f))) {
+        face_slot_[f] = static_cast<int>(faces_.size());
+        faces_.push_back(Face(f));
+      }
+    for (int e = 0; e < mesh.edge_capacity(); ++e)
+      if (!mesh.is_deleted(Edge(e))) {
+        edge_slot_[e] = static_cast<int>(edges_.size());
+        edges_.push_back(Edge(e));
+      }
+    first_face_ = static_cast<std::int64_t>(vertices_.size());
+    first_edge_ = first_face_ + static_cast<std::int64_t>(faces_.size());
+    first_half_ = first_edge_ + static_cast<std::int64_t>(edges_.size());
+    first_spoke_ = first_half_ + num_corners * per_side;
+    first_interior_ = first_spoke_ + num_corners * per_side;
+    num_vertices_ = first_interior_ + num_corners * per_side * per_side;
+  }
+  // Output files and SurfaceMesh number vertices with 32-bit ints.
+  if (num_vertices_ > std::numeric_limits<int>::max())
+    throw MeshError(
+        fmt::format("{} corners at resolution {} make {} surface vertices, more than 2^31 - 1: use "
+                    "a lower resolution",
+                    num_corners, n_, num_vertices_));
+}
+
+std::int64_t TessellationLayout::vertex(int k, int i, int j) const {
+  const int n = n_;
+  if (!welded_) return (static_cast<std::int64_t>(k) * (n + 1) + i) * (n + 1) + j;
+  const Corner c = corners_[k];
+  if (i == 0 && j == 0) return vertex_slot_[mesh_.origin(c).idx];
+  if (i == n && j == n) return first_face_ + face_slot_[mesh_.face(c).idx];
+  if (i == n && j == 0) return first_edge_ + edge_slot_[HalfedgeMesh::edge(c).idx];
+  if (i == 0 && j == n) return first_edge_ + edge_slot_[HalfedgeMesh::edge(mesh_.prev(c)).idx];
+  const std::int64_t side = n - 1;
+  // Side j = 0 is the half of edge(c) at the corner's vertex; side i = 0 the same half of
+  // rotate_ccw(c)'s edge. Side i = n runs from the middle of edge(c) to the face centre; side
+  // j = n is prev(c)'s.
+  if (j == 0) return first_half_ + k * side + (i - 1);
+  if (i == 0) return first_half_ + corner_index(mesh_.rotate_ccw(c)) * side + (j - 1);
+  if (i == n) return first_spoke_ + k * side + (j - 1);
+  if (j == n) return first_spoke_ + corner_index(mesh_.prev(c)) * side + (i - 1);
+  return first_interior_ + (k * side + (i - 1)) * side + (j - 1);
+}
+
+std::array<std::int64_t, 4> TessellationLayout::quad(std::int64_t q) const {
+  const std::int64_t cells = static_cast<std::int64_t>(n_) * n_;
+  const auto k = static_cast<int>(q / cells);
+  const auto cell = static_cast<int>(q % cells);
+  const int i = cell / n_, j = cell % n_;
+  if (welded_ && i >= 1 && j >= 1 && i + 1 < n_ && j + 1 < n_) {
+    // All four corners interior: consecutive rows of this corner's interior block.
+    const std::int64_t side = n_ - 1;
+    const std::int64_t at = first_interior_ + (k * side + (i - 1)) * side + (j - 1);
+    return {at, at + side, at + side + 1, at + 1};
+  }
+  return {vertex(k, i, j), vertex(k, i + 1, j), vertex(k, i + 1, j + 1), vertex(k, i, j + 1)};
+}
+
+void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& out) const {
+  out.clear();
+  const int n = n_;
+  if (!welded_) {
+    const std::int64_t per_patch = static_cast<std::int64_t>(n + 1) * (n + 1);
+    const auto s = static_cast<int>(vertex % per_patch);
+    out.push_back({static_cast<int>(vertex / per_patch), s / (n + 1), s % (n + 1)});
+    return;
+  }
+  if (vertex < first_face_) {
+    // Every corner around the mesh vertex, counter-clockwise from halfedge(v).
+    const Corner start = mesh_.halfedge(vertices_[vertex]);
+    Corner c = start;
+    do {
+      out.push_back({corner_index(c), 0, 0});
+      c = mesh_.rotate_ccw(c);
+    } while (c != start);
+  } else if (vertex < first_edge_) {
+    const Corner start = mesh_.halfedge(faces_[vertex - first_face_]);
+    Corner c = start;
+    do {
+      out.push_back({corner_index(c), n, n});
+      c = mesh_.next(c);
+    } while (c != start);
+  } else if (vertex < first_half_) {
+    // The edge's midpoint: side i = n of both half-edges' corners, and side j = n of the corners
+    // that follow them.
+    const Edge e = edges_[vertex - first_edge_];
+    for (int side = 0; side < 2; ++side) {
+      const Corner h = HalfedgeMesh::halfedge(e, side);
+      out.push_back({corner_index(h), n, 0});
+      out.push_back({corner_index(mesh_.next(h)), 0, n});
+    }
+  } else if (vertex < first_spoke_) {
+    const std::int64_t at = vertex - first_half_;
+    const auto k = static_cast<int>(at / (n - 1));
+    const int m = static_cast<int>(at % (n - 1)) + 1;
+    out.push_back({k, m, 0});
+    out.push_back({corner_index(mesh_.rotate_cw(corners_[k])), 0, m});
+  } else if (vertex < first_interior_) {
+    const std::int64_t at = vertex - first_spoke_;
+    const auto k = static_cast<int>(at / (n - 1));
+    const int m = static_cast<int>(at % (n - 1)) + 1;
+    out.push_back({k, n, m});
+    out.push_back({corner_index(mesh_.next(corners_[k])), m, n});
+  } else {
+    const std::int64_t at = vertex - first_interior_;
+    const std::int64_t per_patch = static_cast<std::int64_t>(n - 1) * (n - 1);
+    const auto s = static_cast<int>(at % per_patch);
+    out.push_back({static_cast<int>(at / per_patch), s / (n - 1) + 1, s % (n - 1) + 1});
+  }
+}
+
+void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, std::int64_t end,
+                                  Vec3* positions, Vec3* normals,
+                                  const SampleAttributes& attributes) const {
+  std::vector<GridSample> sharing;
+  PatchSampler sampler(surface, n_);
+  for (std::int64_t vertex = begin; vertex < end; ++vertex) {
+    samples(vertex, sharing);
+    // Samples of one patch come patch by patch (interiors, unwelded grids), so the sampler's
+    // tables pay off; shared ones alternate between patches.
+    const bool single = sharing.size() == 1;
+    Vec3 normal = Vec3::Zero();
+    for (size_t s = 0; s < sharing.size(); ++s) {
+      const GridSample& g = sharing[s];
+      const double u = static_cast<double>(g.i) / n_, v = static_cast<double>(g.j) / n_;
+      const SurfacePoint point = single ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
+                                        : sampler.evaluate(corners_[g.corner], u, v);
+      normal += point.normal;
+      if (s > 0) continue;
+      const std::int64_t at = vertex - begin;
+      positions[at] = point.position;
+      if (attributes.uv) attributes.uv[at] = Eigen::Vector2d(u, v);
+      if (attributes.patch) attributes.patch[at] = corners_[g.corner].idx;
+      if (attributes.level) attributes.level[at] = point.level;
+    }
+    // A sample of one patch keeps that patch's unit normal as evaluated; a shared one takes the
+    // mean direction of its patches' normals.
+    normals[vertex - begin] = single ? normal : normal.normalized();
+  }
+}
+
+}  // namespace stitch

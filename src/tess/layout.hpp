@@ -1,0 +1,77 @@
+// Where every grid sample of every patch goes in a tessellation, from the mesh's topology and the
+// resolution alone: welding by construction. A sample on a patch's side belongs to the mesh
+// element it lies on (vertex, face centre, edge midpoint, the half of an edge at a vertex, the
+// spoke from an edge midpoint to a face centre), so every patch that shares it computes the same
+// output vertex number without hashing, searching or a sequential pass, and any range of output
+// vertices or quads can be produced on its own (in parallel, or streamed to a file). Internal.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "stitch/eval/surface.hpp"
+#include "stitch/tess/tessellate.hpp"
+
+namespace stitch {
+
+/// Sample (i, j) of the k-th corner's (n + 1)^2 grid, u = i / n, v = j / n.
+struct GridSample {
+  int corner = 0;  ///< index into the surface's corner list
+  int i = 0, j = 0;
+};
+
+/// Where TessellationLayout::evaluate puts the attributes of each output vertex (null: skip).
+struct SampleAttributes {
+  Eigen::Vector2d* uv = nullptr;
+  int* patch = nullptr;
+  int* level = nullptr;
+};
+
+/// Output vertices, in order: mesh vertices, face centres, edge midpoints, then per corner the
+/// n - 1 samples of its edge half, the n - 1 of its spoke and its (n - 1)^2 interior samples.
+/// Unwelded: every corner's own grid, corner after corner, row-major (i, then j).
+class TessellationLayout {
+ public:
+  TessellationLayout(const HalfedgeMesh& mesh, const std::vector<Corner>& corners, int resolution,
+                     bool welded);
+
+  [[nodiscard]] int resolution() const { return n_; }
+  [[nodiscard]] bool welded() const { return welded_; }
+  [[nodiscard]] std::int64_t num_vertices() const { return num_vertices_; }
+  [[nodiscard]] std::int64_t num_quads() const {
+    return static_cast<std::int64_t>(corners_.size()) * n_ * n_;
+  }
+
+  /// The output vertex of sample (i, j) of corner k.
+  [[nodiscard]] std::int64_t vertex(int k, int i, int j) const;
+  /// Quad q = (corner k, cell (i, j)), counter-clockwise seen from the normal side.
+  [[nodiscard]] std::array<std::int64_t, 4> quad(std::int64_t q) const;
+  /// The samples that make output vertex `vertex`, the one whose position it takes first.
+  /// At most max(valence, face degree, 4) samples.
+  void samples(std::int64_t vertex, std::vector<GridSample>& out) const;
+
+  /// Positions and unit normals of output vertices [begin, end): the position of the first
+  /// sample, the normalized sum of all sharing samples' normals in a fixed order (the result
+  /// does not depend on threads). With `attributes`, also the first sample's (u, v), corner
+  /// half-edge and level into the SurfaceMesh-like arrays (null to skip).
+  void evaluate(const Surface& surface, std::int64_t begin, std::int64_t end, Vec3* positions,
+                Vec3* normals, const SampleAttributes& attributes = {}) const;
+
+ private:
+  [[nodiscard]] int corner_index(Corner c) const { return corner_index_[c.idx]; }
+
+  const HalfedgeMesh& mesh_;
+  const std::vector<Corner>& corners_;
+  int n_;
+  bool welded_;
+  std::vector<int> corner_index_;                         ///< by half-edge
+  std::vector<int> vertex_slot_, face_slot_, edge_slot_;  ///< by element index (compacted)
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_;
+  std::vector<Edge> edges_;
+  std::int64_t first_face_ = 0, first_edge_ = 0, first_half_ = 0, first_spoke_ = 0,
+               first_interior_ = 0, num_vertices_ = 0;
+};
+
+}  // namespace stitch

@@ -1,0 +1,367 @@
+// The exact surface out: the patch set against exact evaluation, Bézier JSON and STL read back,
+// glTF through the Khronos validator, `stitch eval`, and the refusals of bad output requests.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "cli_run.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "stitch/tess/bezier_json.hpp"
+#include "stitch/tess/export.hpp"
+#include "stitch/tess/patches.hpp"
+#include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
+#include "test_support.hpp"
+
+namespace stitch {
+namespace {
+
+using testing::stitch_cli;
+using testing::TempFolder;
+
+double angle_deg(const Vec3& a, const Vec3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+}
+
+/// Every patch against Surface::evaluate at random interior points of its cell (not the grid
+/// the depth was chosen on). Exact cells are the surface up to the round-off of evaluating the
+/// same polynomial with and without moving it to the origin first (1e-12 of the model size is
+/// a thousand times that round-off); inexact ones are within the tolerances asked for.
+void expect_patches_match_surface(const Surface& surface, const PatchSet& set) {
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> unit(0.01, 0.99);
+  double worst_exact = 0, worst_inexact = 0, worst_angle = 0;
+  for (const BezierPatch& patch : set.patches)
+    for (int k = 0; k < 4; ++k) {
+      const double s = unit(random), t = unit(random);
+      const auto [u, v] = cell_to_root(patch, s, t);
+      const SurfacePoint cell = evaluate_cell(patch, s, t);
+      const SurfacePoint exact = surface.evaluate(patch.corner, u, v);
+      const double d = (cell.position - exact.position).norm();
+      if (patch.exact) {
+        worst_exact = std::max(worst_exact, d);
+      } else {
+        worst_inexact = std::max(worst_inexact, d);
+        worst_angle = std::max(worst_angle, angle_deg(cell.normal, exact.normal));
+      }
+    }
+  EXPECT_LE(worst_exact, 1e-12 * set.model_size);
+  EXPECT_LE(worst_inexact, set.tolerance * set.model_size);
+  EXPECT_LE(worst_angle, set.angle_tolerance_deg);
+}
+
+TEST(BezierPatches, RegularPatchesAreTheNetsAndTheHierarchyIsWithinTolerance) {
+  for (const char* name : {"cube.obj", "cube_hole.obj", "torus.obj"}) {
+    SCOPED_TRACE(name);
+    const HalfedgeMesh mesh = read_mesh(test::example_path(name));
+    const Surface surface(mesh, Method::mdc);
+    const PatchSet set = bezier_patches(mesh, surface);
+    // A root with k extraordinary corners: itself when depth is 0; else its 4 - k regular
+    // children and, per extraordinary child, 3 regular cells per level below it and the
+    // innermost one: 4 + 3 k (depth - 1) patches.
+    size_t expected = 0;
+    int extraordinary_corners = 0;
+    for (Corner c : surface.corners()) {
+      const int k = std::popcount(unsigned(surface.bezier().nets[c.idx].extraordinary));
+      extraordinary_corners += k;
+      expected += (k == 0 || set.depth == 0) ? 1 : 4 + 3 * k * (set.depth - 1);
+    }
+    EXPECT_EQ(set.depth > 0, extraordinary_corners > 0);
+    EXPECT_EQ(set.patches.size(), expected);
+    if (set.depth > 0) {
+      EXPECT_EQ(set.patches.size() - set.num_exact(), size_t(extraordinary_corners));
+    }
+    for (const BezierPatch& p : set.patches) {
+      if (p.level != 0) continue;
+      EXPECT_EQ(p.net.p, surface.bezier().nets[p.corner.idx].p);  // a regular root, as it is
+    }
+    EXPECT_LE(set.max_position_deviation, set.tolerance * set.model_size);
+    EXPECT_LE(set.max_normal_deviation_deg, set.angle_tolerance_deg);
+    expect_patches_match_surface(surface, set);
+  }
+}
+
+TEST(BezierPatches, TighterToleranceGoesDeeperAndAscNeedsNoSplits) {
+  const HalfedgeMesh mesh = read_mesh(test::example_path("cube.obj"));
+  const Surface mdc(mesh, Method::mdc);
+  const PatchSet coarse = bezier_patches(mesh, mdc, {1e-3, 1.0});
+  const PatchSet fine = bezier_patches(mesh, mdc, {1e-8, 0.01});
+  EXPECT_LT(coarse.depth, fine.depth);
+  expect_patches_match_surface(mdc, fine);
+  const Surface asc(mesh, Method::asc);
+  const PatchSet plain = bezier_patches(mesh, asc);
+  EXPECT_EQ(plain.depth, 0);
+  EXPECT_EQ(plain.patches.size(), mdc.corners().size());
+  EXPECT_EQ(plain.num_exact(), static_cast<int>(plain.patches.size()));
+}
+
+TEST(BezierPatches, RefusesCatmullClarkAndToleranceNotAboveZero) {
+  const HalfedgeMesh mesh = test::tetrahedron_mesh();
+  const Surface mdc(mesh, Method::mdc);
+  EXPECT_THROW(bezier_patches(mesh, Surface(mesh, Method::cc)), std::invalid_argument);
+  for (double bad : {0.0, -1e-6, std::nan("")}) {
+    EXPECT_THROW(bezier_patches(mesh, mdc, {bad, 0.1}), std::invalid_argument);
+    EXPECT_THROW(bezier_patches(mesh, mdc, {1e-6, bad}), std::invalid_argument);
+  }
+  // Beyond what double precision reaches, the depth cap refuses instead of looping.
+  EXPECT_THROW(bezier_patches(mesh, mdc, {1e-30, 0.1, 20}), MeshError);
+}
+
+TEST(BezierJson, ReadsBackBitForBit) {
+  TempFolder folder;
+  const HalfedgeMesh mesh = read_mesh(test::example_path("cube_hole.obj"));
+  const Surface surface(mesh, Method::mdc);
+  const PatchSet set = bezier_patches(mesh, surface);
+  const std::string path = folder.file("hole.bez.json");
+  write_bezier_json(path, set, &surface.bezier().kgons);
+  const PatchSet back = read_bezier_json(path);
+  ASSERT_EQ(back.patches.size(), set.patches.size());
+  EXPECT_EQ(back.depth, set.depth);
+  EXPECT_EQ(back.method, set.method);
+  EXPECT_EQ(back.max_position_deviation, set.max_position_deviation);
+  // Numbers are written as the shortest text that reads back as the same double, so the
+  // polynomials are the same and evaluate the same: well within 1e-15 relative.
+  double worst = 0;
+  for (size_t i = 0; i < set.patches.size(); ++i) {
+    const BezierPatch &a = set.patches[i], &b = back.patches[i];
+    EXPECT_EQ(a.net.p, b.net.p);
+    EXPECT_EQ(a.corner, b.corner);
+    EXPECT_EQ(a.face, b.face);
+    EXPECT_EQ(a.vertex, b.vertex);
+    EXPECT_EQ(a.level, b.level);
+    EXPECT_EQ(a.cell_u, b.cell_u);
+    EXPECT_EQ(a.cell_v, b.cell_v);
+    EXPECT_EQ(a.exact, b.exact);
+    for (double s : {0.1, 0.5, 0.9}) {
+      const SurfacePoint pa = evaluate_cell(a, s, 1 - s), pb = evaluate_cell(b, s, 1 - s);
+      worst = std::max(worst, (pa.position - pb.position).norm() / set.model_size);
+    }
+  }
+  EXPECT_LE(worst, 1e-15);
+  const nlohmann::json doc = nlohmann::json::parse(testing::read_file(path));
+  EXPECT_EQ(doc["version"], kBezierJsonVersion);
+  EXPECT_EQ(doc["kgons"]["face"].size(), size_t(mesh.num_faces()));
+}
+
+TEST(BezierJson, RefusesOtherJsonNamingWhatIsWrong) {
+  TempFolder folder;
+  const std::string other = folder.write("other.json", R"({"format": "something else"})");
+  EXPECT_NE(test::error_of([&] { read_bezier_json(other); }).find("stitch-bezier-patches"),
+            std::string::npos);
+  const std::string broken =
+      folder.write("broken.json",
+                   R"({"format": "stitch-bezier-patches", "version": 1, "method": "mdc", "depth": 0,
+          "model_size": 1, "tolerance": {"position": 1e-6, "normal_deg": 0.1},
+          "deviation": {"position": 0, "normal_deg": 0}, "patch_count": 1,
+          "patches": [{"corner": 0, "face": 1, "vertex": 1, "level": 0, "cell": [0, 0],
+                       "exact": true, "points": [[0, 0, 0]]}]})");
+  EXPECT_NE(test::error_of([&] { read_bezier_json(broken); }).find("patch 1"), std::string::npos);
+}
+
+TEST(ReadStl, BinaryAndAsciiWeldBackIntoTheClosedMesh) {
+  TempFolder folder;
+  // The smooth surface of the hole through a cube, as `stitch smooth -o x.stl` writes it.
+  const HalfedgeMesh hole = read_mesh(test::example_path("cube_hole.obj"));
+  const SurfaceMesh surface = tessellate(hole, Surface(hole, Method::mdc), {3, true});
+  const std::string binary = folder.file("hole.stl");
+  write_surface_mesh(binary, surface);
+  const TopologyStats stats = topology_stats(read_mesh(binary));
+  EXPECT_EQ(stats.genus, 1);
+  EXPECT_EQ(stats.vertices, surface.num_vertices());
+  EXPECT_EQ(stats.faces, 2 * static_cast<int>(surface.quads.size()));
+  // The same tetrahedron as ASCII, one corner written with a float round-off difference of
+  // 1e-9 (below the welding tolerance of 1e-6 of the size).
+  const std::string ascii = folder.write("tet.stl", R"(solid tet
+facet normal 0 0 0
+ outer loop
+  vertex 1 1 1
+  vertex 1 -1 -1
+  vertex -1 1 -1
+ endloop
+endfacet
+facet normal 0 0 0
+ outer loop
+  vertex 1 1 1.000000001
+  vertex -1 1 -1
+  vertex -1 -1 1
+ endloop
+endfacet
+facet normal 0 0 0
+ outer loop
+  vertex 1 1 1
+  vertex -1 -1 1
+  vertex 1 -1 -1
+ endloop
+endfacet
+facet normal 0 0 0
+ outer loop
+  vertex 1 -1 -1
+  vertex -1 -1 1
+  vertex -1 1 -1
+ endloop
+endfacet
+endsolid tet
+)");
+  const HalfedgeMesh tet = read_mesh(ascii);
+  EXPECT_EQ(tet.num_vertices(), 4);
+  EXPECT_EQ(tet.num_faces(), 4);
+  EXPECT_NE(test::error_of([&] { read_mesh(folder.write("bad.stl", "hello")); }).find("STL"),
+            std::string::npos);
+}
+
+TEST(CliExact, SmoothWritesStlThatInfoReadsBack) {
+  TempFolder folder;
+  const std::string in = test::example_path("torus.obj");
+  ASSERT_EQ(stitch_cli(folder, "smooth '" + in + "' -o t.stl --resolution 2").status, 0);
+  const auto r = stitch_cli(folder, "info t.stl");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("genus"), std::string::npos) << r.out;
+  EXPECT_EQ(topology_stats(read_mesh(folder.file("t.stl"))).genus, 1);
+}
+
+/// Runs the Khronos validator on the files; empty when node is missing.
+std::string validate_gltf(const std::vector<std::string>& files, int* status) {
+  if (std::system("node --version > /dev/null 2>&1") != 0) return "";
+  const std::string folder = std::string(STITCH_GLTF_VALIDATOR_DIR);
+  const std::string install = "bash '" + std::string(STITCH_SOURCE_DIR) +
+                              "/scripts/install-gltf-validator.sh' '" + folder + "'";
+  EXPECT_EQ(std::system(install.c_str()), 0) << "npm install gltf-validator failed";
+  std::string command =
+      "node '" + std::string(STITCH_SOURCE_DIR) + "/tests/gltf/validate.js' '" + folder + "'";
+  for (const auto& f : files) command += " '" + f + "'";
+  const std::string out = files.front() + ".report";
+  *status = std::system((command + " > '" + out + "' 2>&1").c_str());
+  return testing::read_file(out);
+}
+
+TEST(CliExact, GltfPassesTheKhronosValidator) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube_hole.obj");
+  for (const char* out : {"hole.glb", "hole.gltf"}) {
+    const auto r = stitch_cli(folder, "smooth '" + in + "' -o " + out + " --resolution 3");
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::exists(folder.file("hole.bin")));
+  int status = -1;
+  const std::string report =
+      validate_gltf({folder.file("hole.glb"), folder.file("hole.gltf")}, &status);
+  if (report.empty()) GTEST_SKIP() << "node is not installed";
+  EXPECT_EQ(status, 0) << report;
+  EXPECT_NE(report.find("hole.glb: 0 errors"), std::string::npos) << report;
+  EXPECT_NE(report.find("hole.gltf: 0 errors"), std::string::npos) << report;
+}
+
+TEST(CliExact, PatchesJsonBesideAMeshAndReportOnStderr) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube.obj");
+  const auto r = stitch_cli(folder, "smooth '" + in + "' -o c.obj --patches c.json --kgons");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("depth"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("largest deviation"), std::string::npos) << r.err;
+  const PatchSet set = read_bezier_json(folder.file("c.json"));
+  EXPECT_NE(r.err.find(std::to_string(set.patches.size()) + " Bezier patches"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(std::filesystem::exists(folder.file("c.obj")));
+}
+
+TEST(CliExact, BadOutputRequestsExitTwoAndLeaveNothing) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube.obj");
+  // An unknown extension names every known one.
+  auto r = stitch_cli(folder, "smooth '" + in + "' -o part.xyz");
+  EXPECT_EQ(r.status, 2);
+  for (const char* ext : {".obj", ".glb", ".gltf", ".json", ".step", ".stp", ".igs", ".iges"})
+    EXPECT_NE(r.err.find(ext), std::string::npos) << ext << ": " << r.err;
+  // A tolerance that is not above zero.
+  for (const char* tol : {"0", "-1e-6"}) {
+    r = stitch_cli(folder, "smooth '" + in + "' -o p.json --tolerance " + tol);
+    EXPECT_EQ(r.status, 2) << tol;
+    EXPECT_NE(r.err.find("tolerance"), std::string::npos) << r.err;
+  }
+  r = stitch_cli(folder, "smooth '" + in + "' -o p.json --angle-tolerance 0");
+  EXPECT_EQ(r.status, 2);
+  // A folder that does not exist.
+  r = stitch_cli(folder, "smooth '" + in + "' -o missing/p.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  // A full disk: the output name leads to /dev/full, which takes no byte (ENOSPC).
+  std::filesystem::create_symlink("/dev/full", folder.file("full.json"));
+  std::filesystem::create_symlink("/dev/full", folder.file("full.glb"));
+  for (const char* out : {"full.json", "full.glb"}) {
+    r = stitch_cli(folder, "smooth '" + in + "' -o " + out);
+    EXPECT_EQ(r.status, 2) << out << ": " << r.err;
+    EXPECT_NE(r.err.find("disk full"), std::string::npos) << r.err;
+  }
+  // Nothing was left behind, and /dev/full is still the device.
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"full.glb", "full.json"}));
+  struct stat device {};
+  ASSERT_EQ(::stat("/dev/full", &device), 0);
+  EXPECT_TRUE(S_ISCHR(device.st_mode));
+}
+
+/// The numbers of one CSV row of `stitch eval`.
+std::vector<double> csv_numbers(const std::string& row) {
+  std::vector<double> values;
+  std::stringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) {
+    double x = 0;
+    std::from_chars(cell.data(), cell.data() + cell.size(), x);
+    values.push_back(x);
+  }
+  return values;
+}
+
+TEST(CliEval, PrintsExactEvaluationAtFullPrecision) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube_hole.obj");
+  const HalfedgeMesh mesh = read_mesh(in);
+  const Surface surface(mesh, Method::mdc);
+  // Patch 0 by number, and the corner of vertex 1 on face 2 by name, near and at the vertex.
+  folder.write("at.txt", "# patch u v, or face vertex u v\n0 0.25 0.75\n2 1 1e-9 0.3\n2 1 0 0\n");
+  const auto csv = stitch_cli(folder, "eval '" + in + "' --at at.txt");
+  ASSERT_EQ(csv.status, 0) << csv.err;
+  std::vector<std::string> rows;
+  std::stringstream lines(csv.out);
+  for (std::string row; std::getline(lines, row);) rows.push_back(row);
+  ASSERT_EQ(rows.size(), 4u) << csv.out;
+  const std::array<std::pair<Corner, std::array<double, 2>>, 3> expected{
+      {{Corner(0), {0.25, 0.75}},
+       {parse_corner(mesh, "1@2"), {1e-9, 0.3}},
+       {parse_corner(mesh, "1@2"), {0, 0}}}};
+  for (int i = 0; i < 3; ++i) {
+    const auto [corner, uv] = expected[i];
+    const SurfacePoint p = surface.evaluate(corner, uv[0], uv[1]);
+    const std::vector<double> got = csv_numbers(rows[i + 1]);
+    ASSERT_EQ(got.size(), 19u);
+    EXPECT_EQ(got[1], corner.idx);
+    // Shortest round-trip text: the very doubles of the library, bit for bit.
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(got[6 + k], p.position[k]);
+      EXPECT_EQ(got[9 + k], p.du[k]);
+      EXPECT_EQ(got[12 + k], p.dv[k]);
+      EXPECT_EQ(got[15 + k], p.normal[k]);
+    }
+  }
+  const auto json = stitch_cli(folder, "eval '" + in + "' --at at.txt --format json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  const auto doc = nlohmann::json::parse(json.out);
+  const SurfacePoint p = surface.evaluate(Corner(0), 0.25, 0.75);
+  EXPECT_EQ(doc["points"][0]["position"][2].get<double>(), p.position.z());
+  EXPECT_EQ(doc["points"][0]["normal"][0].get<double>(), p.normal.x());
+
+  folder.write("bad.txt", "0 0.5 1.5\n");
+  const auto bad = stitch_cli(folder, "eval '" + in + "' --at bad.txt");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("line 1"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace stitch

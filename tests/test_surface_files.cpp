@@ -1,0 +1,167 @@
+// Writing the smooth surface: the streamed writer gives the same bytes as tessellating first, the
+// bytes do not depend on the number of threads, and every format reads back.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <string>
+
+#include "cli_run.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/validate.hpp"
+#include "stitch/tess/export.hpp"
+#include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "temp_folder.hpp"
+#include "test_support.hpp"
+
+namespace stitch {
+namespace {
+
+using testing::read_file;
+using testing::TempFolder;
+
+/// A mesh with every kind of element the layout numbers: extraordinary vertices and faces, a
+/// face that runs along one edge twice (a hole made by insert-edge), and deleted elements.
+HalfedgeMesh mixed_mesh() {
+  HalfedgeMesh mesh = make_cube();
+  apply_operation(mesh, "insert-edge 1@1 5@2");
+  apply_operation(mesh, "insert-edge 2@3 5@3");
+  return mesh;
+}
+
+/// The files of every format, written with `threads` threads, by the streamed writer.
+std::vector<std::string> written_with(int threads, const HalfedgeMesh& mesh, const Surface& surface,
+                                      const TempFolder& folder, bool ascii) {
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  std::vector<std::string> files;
+  for (const char* ext : {".obj", ".ply", ".off", ".stl"}) {
+    const std::string path = folder.file("smooth" + std::to_string(threads) + ext);
+    SurfaceFileOptions options;
+    options.ascii_ply = ascii;
+    write_smooth_surface(path, mesh, surface, 5, options);
+    files.push_back(read_file(path));
+  }
+  return files;
+}
+
+TEST(SmoothSurfaceFile, SameBytesWithOneOrTwoThreadsAndAsTessellatingFirst) {
+  const HalfedgeMesh mesh = mixed_mesh();
+  ASSERT_TRUE(mesh.has_garbage()) << "the mesh should have deleted elements";
+  for (const Method method : {Method::mdc, Method::asc, Method::cc}) {
+    const Surface surface(mesh, method);
+    TempFolder folder;
+    for (const bool ascii : {false, true}) {
+      const auto one = written_with(1, mesh, surface, folder, ascii);
+      const auto two = written_with(2, mesh, surface, folder, ascii);
+      EXPECT_EQ(one, two) << to_string(method);
+      // Tessellating first (in memory) and writing that gives the same files.
+      const SurfaceMesh tessellated = tessellate(mesh, surface, {5, true});
+      SurfaceFileOptions options;
+      options.ascii_ply = ascii;
+      size_t i = 0;
+      for (const char* ext : {".obj", ".ply", ".off", ".stl"}) {
+        const std::string path = folder.file(std::string("memory") + ext);
+        write_surface_mesh(path, tessellated, options);
+        EXPECT_EQ(read_file(path), one[i++]) << to_string(method) << ext;
+      }
+    }
+  }
+}
+
+TEST(SmoothSurfaceFile, TessellationDoesNotDependOnThreads) {
+  const HalfedgeMesh mesh = mixed_mesh();
+  const Surface surface(mesh, Method::mdc);
+  const auto run = [&](int threads, bool welded) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return tessellate(mesh, surface, {7, welded});
+  };
+  for (const bool welded : {true, false}) {
+    const SurfaceMesh a = run(1, welded), b = run(2, welded);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+    EXPECT_EQ(a.quads, b.quads);
+    EXPECT_EQ(a.patch, b.patch);
+    EXPECT_EQ(a.level, b.level);
+  }
+}
+
+TEST(SmoothSurfaceFile, EveryFormatReadsBackAsTheSurface) {
+  const HalfedgeMesh mesh = mixed_mesh();
+  const Surface surface(mesh, Method::mdc);
+  const SurfaceMesh expected = tessellate(mesh, surface, {4, true});
+  const TopologyStats input = topology_stats(mesh);
+  TempFolder folder;
+  for (const bool ascii : {false, true})
+    for (const char* ext : {".obj", ".ply", ".off"}) {
+      const std::string path = folder.file(std::string("surface") + ext);
+      SurfaceFileOptions options;
+      options.ascii_ply = ascii;
+      const SurfaceFileCounts counts = write_smooth_surface(path, mesh, surface, 4, options);
+      EXPECT_EQ(counts.vertices, expected.num_vertices());
+      EXPECT_EQ(counts.quads, static_cast<std::int64_t>(expected.quads.size()));
+      // Text and binary keep every double exactly.
+      const PolygonSoup soup = read_polygon_soup(path);
+      EXPECT_EQ(soup.positions, expected.positions) << ext;
+      ASSERT_EQ(soup.faces.size(), expected.quads.size()) << ext;
+      for (size_t q = 0; q < soup.faces.size(); ++q)
+        ASSERT_EQ(soup.faces[q],
+                  std::vector<int>(expected.quads[q].begin(), expected.quads[q].end()))
+            << ext << " quad " << q;
+      // Welded by construction: a closed surface with the input's genus.
+      const TopologyStats stats = topology_stats(read_mesh(path));
+      EXPECT_EQ(stats.genus, input.genus) << ext;
+    }
+  // STL stores floats and repeats vertices; the reader welds them again.
+  const std::string stl = folder.file("surface.stl");
+  write_smooth_surface(stl, mesh, surface, 4);
+  EXPECT_EQ(read_file(stl).size(), 84u + 50u * 2u * expected.quads.size());
+}
+
+TEST(SmoothSurfaceFile, WriteErrorsNameTheFileAndLeaveNothing) {
+  const HalfedgeMesh mesh = make_cube();
+  const Surface surface(mesh, Method::mdc);
+  const std::string message =
+      test::error_of([&] { write_smooth_surface("/dev/full", mesh, surface, 8); });
+  EXPECT_NE(message.find("/dev/full"), std::string::npos) << message;
+  TempFolder folder;
+  const std::string bad = folder.file("surface.dae");
+  const std::string unknown = test::error_of([&] { write_smooth_surface(bad, mesh, surface, 8); });
+  EXPECT_NE(unknown.find(kSurfaceMeshExtensions), std::string::npos) << unknown;
+  EXPECT_TRUE(std::filesystem::is_empty(folder.path()));
+}
+
+TEST(SmoothCommand, BinaryPlyByDefaultAsciiOnRequestAndQuietIsQuiet) {
+  TempFolder folder;
+  ASSERT_EQ(testing::stitch_cli(folder, "primitive cube -o cube.obj").status, 0);
+  const auto binary = testing::stitch_cli(folder, "smooth cube.obj -o b.ply --progress");
+  ASSERT_EQ(binary.status, 0) << binary.err;
+  EXPECT_NE(binary.err.find("writing b.ply"), std::string::npos) << binary.err;
+  EXPECT_NE(read_file(folder.file("b.ply")).find("format binary_little_endian 1.0\n"),
+            std::string::npos);
+  const auto ascii = testing::stitch_cli(folder, "smooth cube.obj -o a.ply --ascii --quiet");
+  ASSERT_EQ(ascii.status, 0) << ascii.err;
+  EXPECT_EQ(ascii.err, "");
+  EXPECT_NE(read_file(folder.file("a.ply")).find("format ascii 1.0\n"), std::string::npos);
+  EXPECT_EQ(read_polygon_soup(folder.file("a.ply")).positions,
+            read_polygon_soup(folder.file("b.ply")).positions);
+}
+
+TEST(SmoothCommand, RefusesUpFrontWhatWouldNotFitInMemory) {
+  TempFolder folder;
+  ASSERT_EQ(testing::stitch_cli(folder, "primitive torus 20 20 -o torus.obj").status, 0);
+  // 1600 corners need about 1.6 MB (1 kB each); an unwelded tessellation at resolution 64 adds
+  // about 500 MB. A limit of 0.1 GB takes the first and refuses the second.
+  const auto fits = testing::stitch_cli(folder, "smooth torus.obj -o s.ply --max-memory 0.1");
+  EXPECT_EQ(fits.status, 0) << fits.err;
+  const auto refused = testing::stitch_cli(
+      folder, "smooth torus.obj -o u.ply --unwelded --resolution 64 --max-memory 0.1");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("needs about 0."), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("more than the 0.10 GB allowed by --max-memory"), std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("u.ply")));
+}
+
+}  // namespace
+}  // namespace stitch
