@@ -82,7 +82,7 @@ TEST(HardeningCli, RefusesCoordinatesWhoseProductsOverflow) {
   folder.write("far.obj", one_far);
   expect_refused(folder, "smooth far.obj -o out.obj", {"far.obj", "vertex 1"});
   folder.write("tiny.obj", scaled_cube(1e-200));
-  expect_refused(folder, "smooth tiny.obj -o out.obj", {"tiny.obj", "too small"});
+  expect_refused(folder, "smooth tiny.obj -o out.obj", {"too small"});
 }
 
 TEST(HardeningCli, CoordinatesAtTheLimitGiveFiniteOutputThatReadsBack) {
@@ -109,7 +109,8 @@ TEST(HardeningCli, RefusesNumericOptionsOutsideTheirRange) {
 
 TEST(HardeningCli, RefusesRenderOptionsOutsideTheirRange) {
   TempFolder folder;
-  if (stitch_cli(folder, "render --help").status != 0)
+  // Listed among the sub-commands only when built (an unknown "render --help" is the tool's help).
+  if (stitch_cli(folder, "--help").out.find("\n  render ") == std::string::npos)
     GTEST_SKIP() << "stitch is built without the renderer (STITCH_BUILD_RENDER=OFF)";
   folder.write("cube.obj", scaled_cube(1));
   expect_refused(folder, "render cube.obj -o out.png --focus-ev --zoom nan", {"--zoom"}, "out.png");

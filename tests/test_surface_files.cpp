@@ -86,6 +86,24 @@ TEST(SmoothSurfaceFile, TessellationDoesNotDependOnThreads) {
   }
 }
 
+TEST(SmoothSurfaceFile, KgonsAndNetsDoNotDependOnThreads) {
+  const HalfedgeMesh mesh = mixed_mesh();
+  KgonOptions options;
+  options.global.scale = 0.8;
+  options.global.rotate_deg = 10;
+  const auto build = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return build_bezier_surface(mesh, options);
+  };
+  const BezierSurface one = build(1), two = build(2);
+  EXPECT_EQ(one.nets, two.nets);
+  EXPECT_EQ(one.kgons.corner_point, two.kgons.corner_point);
+  for (size_t f = 0; f < one.kgons.face.size(); ++f)
+    EXPECT_EQ(one.kgons.face[f].points, two.kgons.face[f].points) << "face " << f;
+  for (size_t v = 0; v < one.kgons.vertex.size(); ++v)
+    EXPECT_EQ(one.kgons.vertex[v].points, two.kgons.vertex[v].points) << "vertex " << v;
+}
+
 TEST(SmoothSurfaceFile, EveryFormatReadsBackAsTheSurface) {
   const HalfedgeMesh mesh = mixed_mesh();
   const Surface surface(mesh, Method::mdc);

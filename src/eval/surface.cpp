@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "stitch/mesh/limits.hpp"
+
 namespace stitch {
 
 std::string to_string(Method m) {
@@ -23,8 +25,17 @@ Method parse_method(const std::string& s) {
   throw std::invalid_argument("unknown method '" + s + "' (expected mdc, asc or cc)");
 }
 
+namespace {
+
+const HalfedgeMesh& with_normals(const HalfedgeMesh& mesh) {
+  limits::check_extent(mesh);
+  return mesh;
+}
+
+}  // namespace
+
 Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
-    : method_(method), bezier_(build_bezier_surface(mesh, kgon_options)) {
+    : method_(method), bezier_(build_bezier_surface(with_normals(mesh), kgon_options)) {
   if (method == Method::cc) cc_ = std::make_shared<const CatmullClarkSurface>(mesh);
 }
 

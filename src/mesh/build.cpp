@@ -60,22 +60,6 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
   }
 }
 
-/// Refuses a mesh so small that squared lengths of its normals underflow (see limits.hpp).
-void check_extent(const PolygonSoup& soup, const std::vector<int>& used) {
-  Vec3 lo = Vec3::Constant(limits::max_coordinate), hi = -lo;
-  for (size_t v = 0; v < used.size(); ++v)
-    if (used[v]) {
-      lo = lo.cwiseMin(soup.positions[v]);
-      hi = hi.cwiseMax(soup.positions[v]);
-    }
-  const double side = (hi - lo).maxCoeff();
-  if (side < limits::min_extent)
-    throw MeshError(fmt::format(
-        "the mesh is too small: the longest side of its bounding box is {:g}, below {:g}, where "
-        "normals can no longer be computed; scale the model up",
-        side, limits::min_extent));
-}
-
 struct DirectedEdge {
   int face;
   int slot;  // position in the face loop; the edge runs from slot to slot+1
@@ -276,7 +260,6 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     remap[v] = mesh.add_vertex(soup.positions[v]).idx;
     rep.vertex_source.push_back(v);
   }
-  check_extent(soup, used);
   if (rep.dropped_vertices > 0)
     rep.warnings.push_back(fmt::format("dropped {} unused vertices (not referenced by any face)",
                                        rep.dropped_vertices));

@@ -1,6 +1,7 @@
 // STL in (ASCII and binary), welded into a polygon soup. STL stores every triangle with its own
 // three corners, so shared vertices are found again by position: corners closer than
 // kWeldTolerance times the bounding box diagonal become one vertex.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -134,7 +135,9 @@ PolygonSoup read_stl(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings) {
   std::vector<int> lines;
   const bool binary = looks_binary(text);
-  if (!binary && text.substr(text.find_first_not_of(" \t\r\n"), 5) != "solid")
+  // Blank text has no first word: npos must not reach substr (found by fuzz/, issue #10).
+  const size_t first_word = std::min(text.find_first_not_of(" \t\r\n"), text.size());
+  if (!binary && text.substr(first_word, 5) != "solid")
     throw MeshError(fmt::format(
         "{}: neither ASCII STL (which starts with 'solid') nor binary STL (84 + 50 n bytes for n "
         "triangles; this file has {} bytes)",

@@ -17,8 +17,8 @@ std::string coordinate_problem(const Vec3& p) {
     return fmt::format("has a non-finite coordinate ({}, {}, {})", p.x(), p.y(), p.z());
   if (p.cwiseAbs().maxCoeff() > max_coordinate)
     return fmt::format(
-        "has a coordinate beyond ±{:g} ({:g}, {:g}, {:g}): products of such coordinates "
-        "overflow; scale the model down",
+        "has a coordinate beyond the limit ±{:g} ({:g}, {:g}, {:g}); past it, products of "
+        "coordinates overflow",
         max_coordinate, p.x(), p.y(), p.z());
   return {};
 }
@@ -32,6 +32,20 @@ void check_range(double value, double lo, double hi, std::string_view what) {
   if (!(value >= lo && value <= hi))
     throw MeshError(
         fmt::format("{} must be a number from {:g} to {:g}, not {:g}", what, lo, hi, value));
+}
+
+void check_extent(const HalfedgeMesh& mesh) {
+  Vec3 lo = Vec3::Constant(max_coordinate), hi = -lo;
+  for (Vertex v : mesh.vertices()) {
+    lo = lo.cwiseMin(mesh.position(v));
+    hi = hi.cwiseMax(mesh.position(v));
+  }
+  const double side = (hi - lo).maxCoeff();
+  if (side < min_extent)
+    throw MeshError(fmt::format(
+        "the mesh is too small: the longest side of its bounding box is {:g}, below {:g}, where "
+        "normals can no longer be computed; scale the model up",
+        side, min_extent));
 }
 
 }  // namespace stitch::limits

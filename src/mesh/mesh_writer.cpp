@@ -65,28 +65,30 @@ using VertexFormat = std::function<void(const VertexBlock&, OutputBuffer&)>;
 /// The text or bytes of face blocks; `sizes` and `indices` as in FaceBlock.
 using FaceFormat = std::function<void(const FaceBlock&, OutputBuffer&)>;
 
-void write_vertices(std::ostream& out, const MeshStream& mesh, const VertexFormat& format,
-                    Progress& progress) {
+/// Blocks of `count` records, filled by fill(begin, end, block) and formatted by `format`.
+template <class Block>
+void write_records(std::ostream& out, std::int64_t count, std::int64_t per_block,
+                   const std::function<void(std::int64_t, std::int64_t, Block&)>& fill,
+                   const std::function<void(const Block&, OutputBuffer&)>& format,
+                   Progress& progress) {
   write_blocks(
-      out, mesh.num_vertices, kVerticesPerBlock,
+      out, count, per_block,
       [&](std::int64_t begin, std::int64_t end, OutputBuffer& text) {
-        VertexBlock block;
-        mesh.vertices(begin, end, block);
+        Block block;
+        fill(begin, end, block);
         format(block, text);
       },
       std::ref(progress));
 }
 
+void write_vertices(std::ostream& out, const MeshStream& mesh, const VertexFormat& format,
+                    Progress& progress) {
+  write_records(out, mesh.num_vertices, kVerticesPerBlock, mesh.vertices, format, progress);
+}
+
 void write_faces(std::ostream& out, const MeshStream& mesh, const FaceFormat& format,
                  Progress& progress) {
-  write_blocks(
-      out, mesh.num_faces, kFacesPerBlock,
-      [&](std::int64_t begin, std::int64_t end, OutputBuffer& text) {
-        FaceBlock block;
-        mesh.faces(begin, end, block);
-        format(block, text);
-      },
-      std::ref(progress));
+  write_records(out, mesh.num_faces, kFacesPerBlock, mesh.faces, format, progress);
 }
 
 /// Calls visit(size, indices of the face) for every face of a block.
