@@ -1,7 +1,7 @@
 // `stitch smooth` end to end, stage by stage, as the command runs it: read the input file, build
 // the surface, then tessellate and write (streamed: evaluated block by block while writing).
 // Meshes: quad tori and tris+quads tori of about 10k and 100k faces, written at resolution 8 as
-// binary PLY, OBJ and STL into a temporary folder.
+// binary PLY (doubles, and floats as --float writes them), OBJ and STL into a temporary folder.
 //
 // Counters (seconds per iteration, wall clock): read, surface, tessellate+write (the streamed
 // stage), and evaluate_only, the same evaluation in the same blocks on all cores with nothing
@@ -34,14 +34,15 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Formats: 0 binary PLY (doubles), 1 OBJ, 2 STL, 3 binary PLY with --float.
 const char* extension(int format) {
   switch (format) {
-    case 0:
-      return ".ply";
     case 1:
       return ".obj";
-    default:
+    case 2:
       return ".stl";
+    default:
+      return ".ply";
   }
 }
 
@@ -66,7 +67,9 @@ void BM_smooth(benchmark::State& state) {
     const stitch::Surface surface(mesh, stitch::Method::mdc);
     surface_time += seconds_since(start);
     start = Clock::now();
-    vertices += stitch::write_smooth_surface(output, mesh, surface, kResolution).vertices;
+    stitch::SurfaceFileOptions file;
+    file.single_precision = state.range(2) == 3;
+    vertices += stitch::write_smooth_surface(output, mesh, surface, kResolution, file).vertices;
     write += seconds_since(start);
 
     state.PauseTiming();
@@ -92,12 +95,13 @@ void BM_smooth(benchmark::State& state) {
   state.counters["evaluate_only"] = evaluate_only / n;
   state.counters["write_share"] = std::max(0.0, write - evaluate_only) / total;
   state.counters["Mvertices/s"] = static_cast<double>(vertices) / total / 1e6;
-  state.SetLabel(mesh_label(kind, generated) + ", " + extension(state.range(2)));
+  state.SetLabel(mesh_label(kind, generated) + ", " + extension(state.range(2)) +
+                 (state.range(2) == 3 ? " --float" : ""));
 }
 
 BENCHMARK(BM_smooth)
     ->ArgNames({"mesh", "faces", "format"})
-    ->ArgsProduct({{quad_torus, mixed_torus}, {10000, 100000}, {0, 1, 2}})
+    ->ArgsProduct({{quad_torus, mixed_torus}, {10000, 100000}, {0, 1, 2, 3}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

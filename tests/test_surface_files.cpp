@@ -161,8 +161,22 @@ TEST(SmoothCommand, BinaryPlyByDefaultAsciiOnRequestAndQuietIsQuiet) {
   ASSERT_EQ(ascii.status, 0) << ascii.err;
   EXPECT_EQ(ascii.err, "");
   EXPECT_NE(read_file(folder.file("a.ply")).find("format ascii 1.0\n"), std::string::npos);
-  EXPECT_EQ(read_polygon_soup(folder.file("a.ply")).positions,
-            read_polygon_soup(folder.file("b.ply")).positions);
+  const auto doubles = read_polygon_soup(folder.file("b.ply")).positions;
+  EXPECT_EQ(read_polygon_soup(folder.file("a.ply")).positions, doubles);
+  // --float: half the vertex bytes, each coordinate the nearest float (binary), or the shortest
+  // text that reads back as that float (ASCII).
+  for (const char* flags : {"", " --ascii"}) {
+    const auto single =
+        testing::stitch_cli(folder, std::string("smooth cube.obj -o f.ply --float") + flags);
+    ASSERT_EQ(single.status, 0) << single.err;
+    EXPECT_NE(read_file(folder.file("f.ply")).find("property float x\n"), std::string::npos);
+    const auto floats = read_polygon_soup(folder.file("f.ply")).positions;
+    ASSERT_EQ(floats.size(), doubles.size());
+    for (size_t i = 0; i < floats.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(static_cast<float>(floats[i][k]), static_cast<float>(doubles[i][k]))
+            << flags << " vertex " << i;
+  }
 }
 
 TEST(SmoothCommand, RefusesUpFrontWhatWouldNotFitInMemory) {

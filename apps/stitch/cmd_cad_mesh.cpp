@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 // after stitch's headers (OCCT defines a macro Handle, see cad.hpp)
 // clang-format off
 #include "stitch/cad/cad.hpp"
@@ -21,7 +22,7 @@ struct CadMeshArgs {
 };
 
 void run_cad_mesh(const CadMeshArgs& a) {
-  if (!(a.deflection > 0)) throw MeshError("--deflection must be > 0");
+  limits::check_range(a.deflection, 1e-12, limits::max_coordinate, "--deflection");
   cad::quiet_opencascade();  // stdout is for the summary below
   const PolygonSoup soup = cad::triangulate(cad::read_cad(a.in), a.deflection);
   write_polygon_soup(a.out, soup);

@@ -22,6 +22,7 @@ struct SmoothArgs {
   int resolution = 8;
   bool unwelded = false;
   bool ascii = false;
+  bool single_precision = false;
   double max_memory_gb = 0;  ///< 0: the memory the machine has available
   ProgressFlags progress;
   KgonCliOptions kgon;
@@ -93,6 +94,7 @@ void run_smooth(const SmoothArgs& a) {
     stage.begin(fmt::format("tessellating at resolution {} and writing {}", a.resolution, a.out));
     SurfaceFileOptions file;
     file.ascii_ply = a.ascii;
+    file.single_precision = a.single_precision;
     file.progress = [&stage](double done) { stage.fraction(done); };
     written = write_smooth_surface(a.out, mesh, surface, a.resolution, file);
   }
@@ -122,6 +124,9 @@ void add_smooth_command(CLI::App& app) {
                 "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
                 "int patch, to check continuity from the file alone");
   cmd->add_flag("--ascii", args->ascii, "write .ply as text instead of binary");
+  cmd->add_flag("--float", args->single_precision,
+                "write .ply positions and normals as 32-bit floats (half the size; the default "
+                "doubles read back exactly)");
   cmd->add_option("--max-memory", args->max_memory_gb,
                   "refuse up front a run estimated to need more memory than this many GB "
                   "(default: the memory available)")

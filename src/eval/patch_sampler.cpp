@@ -27,17 +27,21 @@ SurfacePoint PatchSampler::evaluate_grid(Corner c, int i, int j) {
   if (p.rows.empty()) {
     p.rows.resize(basis_.size());
     p.rows_dv.resize(basis_.size());
-    for (size_t k = 0; k < basis_.size(); ++k)
-      for (int a = 0; a < 4; ++a) {
-        Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();
-        for (int b = 0; b < 4; ++b) {
-          row += basis_[k].b[b] * net.at(a, b);
-          row_dv += basis_[k].d[b] * net.at(a, b);
-        }
-        p.rows[k][a] = row;
-        p.rows_dv[k][a] = row_dv;
-      }
+    p.row_ready.assign(basis_.size(), 0);
     p.tiny = detail::degenerate_threshold(net);
+  }
+  // Rows are summed when first asked for: a neighbour sampled along one side needs one or few.
+  if (!p.row_ready[j]) {
+    for (int a = 0; a < 4; ++a) {
+      Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();
+      for (int b = 0; b < 4; ++b) {
+        row += basis_[j].b[b] * net.at(a, b);
+        row_dv += basis_[j].d[b] * net.at(a, b);
+      }
+      p.rows[j][a] = row;
+      p.rows_dv[j][a] = row_dv;
+    }
+    p.row_ready[j] = 1;
   }
   const detail::CubicBasis& bu = basis_[i];
   SurfacePoint sp;
@@ -74,6 +78,7 @@ PatchSampler::Patch& PatchSampler::patch(Corner c) {
   p.splits.clear();
   p.rows.clear();
   p.rows_dv.clear();
+  p.row_ready.clear();
   return p;
 }
 

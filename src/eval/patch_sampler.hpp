@@ -37,6 +37,7 @@ class PatchSampler {
     ControlNet relative;  ///< the corner's net minus its first point
     std::vector<Split> splits;
     std::vector<std::array<Vec3, 4>> rows, rows_dv;  ///< [j][a]: sum over b, of b(v) and b'(v)
+    std::vector<char> row_ready;                     ///< [j]: rows[j] and rows_dv[j] are summed
     double tiny = 0;                                 ///< detail::degenerate_threshold
   };
   Patch& patch(Corner c);

@@ -183,7 +183,7 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     write_mesh_file(path, false, [&](std::ostream& out) { write_off(out, stream, kComment); });
   else if (ext == ".ply")  // ASCII: edited meshes are small, and people read them
     write_mesh_file(path, false, [&](std::ostream& out) {
-      write_ply(out, stream, PlyEncoding::ascii, kComment);
+      write_ply(out, stream, PlyEncoding::ascii, PlyPrecision::double_precision, kComment);
     });
   else if (ext == ".stl")
     write_mesh_file(path, true,

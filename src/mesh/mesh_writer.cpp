@@ -36,13 +36,22 @@ void put(OutputBuffer& s, std::int64_t x) {
   s.append(digits.data(), result.ptr);
 }
 
-void put_xyz(OutputBuffer& s, const char* prefix, const Vec3& p) {
+void put(OutputBuffer& s, float x) {
+  std::array<char, 24> digits;
+  const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), x);
+  s.append(digits.data(), result.ptr);
+}
+
+/// `prefix` and the three coordinates, as floats when `single` (rounded to the nearest float).
+void put_xyz(OutputBuffer& s, const char* prefix, const Vec3& p, bool single = false) {
   s += std::string_view(prefix);
-  put(s, p.x());
-  s += ' ';
-  put(s, p.y());
-  s += ' ';
-  put(s, p.z());
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) s += ' ';
+    if (single)
+      put(s, static_cast<float>(p[k]));
+    else
+      put(s, p[k]);
+  }
 }
 
 /// Where the writing stands, for the progress callback: items (vertices, then faces) written.
@@ -213,24 +222,36 @@ void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comme
 }
 
 void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
-               std::string_view comment, const WriteProgress& report) {
+               PlyPrecision precision, std::string_view comment, const WriteProgress& report) {
   Progress progress(report, mesh.num_vertices + mesh.num_faces);
   const bool binary = encoding == PlyEncoding::binary_little_endian;
+  const bool single = precision == PlyPrecision::single;
   const bool byte_counts = mesh.max_face_degree <= 255;
+  const char* type = single ? "float" : "double";
   out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment "
-      << comment << "\nelement vertex " << mesh.num_vertices
-      << "\nproperty double x\nproperty double y\nproperty double z\n";
-  if (mesh.has_normals) out << "property double nx\nproperty double ny\nproperty double nz\n";
+      << comment << "\nelement vertex " << mesh.num_vertices;
+  for (const char* name : {"x", "y", "z"}) out << "\nproperty " << type << ' ' << name;
+  if (mesh.has_normals)
+    for (const char* name : {"nx", "ny", "nz"}) out << "\nproperty " << type << ' ' << name;
+  out << '\n';
   out << "element face " << mesh.num_faces << "\nproperty list " << (byte_counts ? "uchar" : "int")
       << " int vertex_indices\nend_header\n";
   if (binary) {
     write_vertices(
         out, mesh,
         [&](const VertexBlock& block, OutputBuffer& bytes) {
-          LittleEndianWriter record(bytes, block.positions.size() * (mesh.has_normals ? 48 : 24));
+          const size_t scalar = single ? 4 : 8;
+          LittleEndianWriter record(bytes,
+                                    block.positions.size() * (mesh.has_normals ? 6 : 3) * scalar);
+          const auto put = [&](const Vec3& p) {
+            if (single)
+              record.put(p.cast<float>().eval());
+            else
+              record.put(p);
+          };
           for (size_t i = 0; i < block.positions.size(); ++i) {
-            record.put(block.positions[i]);
-            if (mesh.has_normals) record.put(block.normals[i]);
+            put(block.positions[i]);
+            if (mesh.has_normals) put(block.normals[i]);
           }
         },
         progress);
@@ -255,8 +276,8 @@ void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
       [&](const VertexBlock& block, OutputBuffer& text) {
         text.reserve(block.positions.size() * (mesh.has_normals ? 150 : 75));
         for (size_t i = 0; i < block.positions.size(); ++i) {
-          put_xyz(text, "", block.positions[i]);
-          if (mesh.has_normals) put_xyz(text, " ", block.normals[i]);
+          put_xyz(text, "", block.positions[i], single);
+          if (mesh.has_normals) put_xyz(text, " ", block.normals[i], single);
           text += '\n';
         }
       },

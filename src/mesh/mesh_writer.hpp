@@ -48,6 +48,9 @@ struct MeshStream {
 using WriteProgress = std::function<void(double)>;
 
 enum class PlyEncoding { ascii, binary_little_endian };
+/// double: exact (a file that reads back as the same numbers); single: float, half the bytes,
+/// about 7 significant digits (enough to render or print).
+enum class PlyPrecision { double_precision, single };
 
 /// OBJ: `v` (and `vn`, referenced as `a//a`) lines block by block, then 1-based faces.
 void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
@@ -55,9 +58,10 @@ void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comme
 /// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals.
 void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
-/// PLY with double x y z (and nx ny nz): an exact round trip in either encoding.
+/// PLY with x y z (and nx ny nz) as double (an exact round trip in either encoding) or float.
 void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
-               std::string_view comment, const WriteProgress& progress = {});
+               PlyPrecision precision, std::string_view comment,
+               const WriteProgress& progress = {});
 /// Binary STL; every polygon is fanned from its first vertex into triangles, whose corners are
 /// looked up in `positions` (STL repeats them per triangle, so they must be at hand).
 void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
@@ -118,7 +122,8 @@ class LittleEndianWriter {
     std::memcpy(at_, raw.data(), sizeof(T));
     at_ += sizeof(T);
   }
-  void put(const Vec3& p) {
+  template <class Scalar>
+  void put(const Eigen::Matrix<Scalar, 3, 1>& p) {
     put(p.x());
     put(p.y());
     put(p.z());

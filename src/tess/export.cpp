@@ -59,6 +59,7 @@ void write_stream(const std::string& path, const io_detail::MeshStream& stream,
     else if (ext == ".ply")
       write_ply(out, stream,
                 options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian,
+                options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision,
                 kComment, options.progress);
     else if (ext == ".off")
       write_off(out, stream, kComment, options.progress);
@@ -149,6 +150,8 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
   std::int64_t bytes = kBytesPerCorner * corners;
   if (!welded)  // positions, normals, uv, patch and level per sample, 4 ints per quad
     bytes += corners * ((n + 1) * (n + 1) * 72 + n * n * 16);
+  else if (is_gltf(path))  // the whole tessellation, then its buffer: positions, normals, quads
+    bytes += corners * n * n * (48 + 16) * 2;
   else if (file_extension(path) == ".stl")  // every position (about n^2 per corner)
     bytes += corners * n * n * 24;
   return bytes;

@@ -39,10 +39,8 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
       }
     first_face_ = static_cast<std::int64_t>(vertices_.size());
     first_edge_ = first_face_ + static_cast<std::int64_t>(faces_.size());
-    first_half_ = first_edge_ + static_cast<std::int64_t>(edges_.size());
-    first_spoke_ = first_half_ + num_corners * per_side;
-    first_interior_ = first_spoke_ + num_corners * per_side;
-    num_vertices_ = first_interior_ + num_corners * per_side * per_side;
+    first_block_ = first_edge_ + static_cast<std::int64_t>(edges_.size());
+    num_vertices_ = first_block_ + num_corners * (per_side * per_side + 2 * per_side);
   }
   // Output files and SurfaceMesh number vertices with 32-bit ints.
   if (num_vertices_ > std::numeric_limits<int>::max())
@@ -64,11 +62,11 @@ std::int64_t TessellationLayout::vertex(int k, int i, int j) const {
   // Side j = 0 is the half of edge(c) at the corner's vertex; side i = 0 the same half of
   // rotate_ccw(c)'s edge. Side i = n runs from the middle of edge(c) to the face centre; side
   // j = n is prev(c)'s.
-  if (j == 0) return first_half_ + k * side + (i - 1);
-  if (i == 0) return first_half_ + corner_index(mesh_.rotate_ccw(c)) * side + (j - 1);
-  if (i == n) return first_spoke_ + k * side + (j - 1);
-  if (j == n) return first_spoke_ + corner_index(mesh_.prev(c)) * side + (i - 1);
-  return first_interior_ + (k * side + (i - 1)) * side + (j - 1);
+  if (j == 0) return block(k) + (i - 1);
+  if (i == 0) return block(corner_index(mesh_.rotate_ccw(c))) + (j - 1);
+  if (i == n) return block(k) + side + (j - 1);
+  if (j == n) return block(corner_index(mesh_.prev(c))) + side + (i - 1);
+  return block(k) + 2 * side + (i - 1) * side + (j - 1);
 }
 
 std::array<std::int64_t, 4> TessellationLayout::quad(std::int64_t q) const {
@@ -79,7 +77,7 @@ std::array<std::int64_t, 4> TessellationLayout::quad(std::int64_t q) const {
   if (welded_ && i >= 1 && j >= 1 && i + 1 < n_ && j + 1 < n_) {
     // All four corners interior: consecutive rows of this corner's interior block.
     const std::int64_t side = n_ - 1;
-    const std::int64_t at = first_interior_ + (k * side + (i - 1)) * side + (j - 1);
+    const std::int64_t at = block(k) + 2 * side + (i - 1) * side + (j - 1);
     return {at, at + side, at + side + 1, at + 1};
   }
   return {vertex(k, i, j), vertex(k, i + 1, j), vertex(k, i + 1, j + 1), vertex(k, i, j + 1)};
@@ -109,7 +107,7 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
       out.push_back({corner_index(c), n, n});
       c = mesh_.next(c);
     } while (c != start);
-  } else if (vertex < first_half_) {
+  } else if (vertex < first_block_) {
     // The edge's midpoint: side i = n of both half-edges' corners, and side j = n of the corners
     // that follow them.
     const Edge e = edges_[vertex - first_edge_];
@@ -118,23 +116,23 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
       out.push_back({corner_index(h), n, 0});
       out.push_back({corner_index(mesh_.next(h)), 0, n});
     }
-  } else if (vertex < first_spoke_) {
-    const std::int64_t at = vertex - first_half_;
-    const auto k = static_cast<int>(at / (n - 1));
-    const int m = static_cast<int>(at % (n - 1)) + 1;
-    out.push_back({k, m, 0});
-    out.push_back({corner_index(mesh_.rotate_cw(corners_[k])), 0, m});
-  } else if (vertex < first_interior_) {
-    const std::int64_t at = vertex - first_spoke_;
-    const auto k = static_cast<int>(at / (n - 1));
-    const int m = static_cast<int>(at % (n - 1)) + 1;
-    out.push_back({k, n, m});
-    out.push_back({corner_index(mesh_.next(corners_[k])), m, n});
   } else {
-    const std::int64_t at = vertex - first_interior_;
-    const std::int64_t per_patch = static_cast<std::int64_t>(n - 1) * (n - 1);
-    const auto s = static_cast<int>(at % per_patch);
-    out.push_back({static_cast<int>(at / per_patch), s / (n - 1) + 1, s % (n - 1) + 1});
+    const std::int64_t at = vertex - first_block_;
+    const std::int64_t per_corner = static_cast<std::int64_t>(n) * n - 1;
+    const auto k = static_cast<int>(at / per_corner);
+    const auto r = static_cast<int>(at % per_corner);
+    const int side = n - 1;
+    if (r < side) {  // the half of edge(c) at the vertex, shared with rotate_cw(c)'s side i = 0
+      out.push_back({k, r + 1, 0});
+      out.push_back({corner_index(mesh_.rotate_cw(corners_[k])), 0, r + 1});
+    } else if (r < 2 * side) {  // the spoke, shared with next(c)'s side j = n
+      const int m = r - side + 1;
+      out.push_back({k, n, m});
+      out.push_back({corner_index(mesh_.next(corners_[k])), m, n});
+    } else {
+      const int interior = r - 2 * side;
+      out.push_back({k, interior / side + 1, interior % side + 1});
+    }
   }
 }
 
@@ -145,15 +143,17 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
   PatchSampler sampler(surface, n_);
   for (std::int64_t vertex = begin; vertex < end; ++vertex) {
     samples(vertex, sharing);
-    // Samples of one patch come patch by patch (interiors, unwelded grids), so the sampler's
-    // tables pay off; shared ones alternate between patches.
+    // Corner blocks (and unwelded grids) come patch by patch and touch only the patch and its
+    // two neighbours across the block's sides, so the sampler's tables pay off there; the mesh
+    // vertices, face centres and edge midpoints are patch corners, evaluated directly.
+    const bool grid = !welded_ || vertex >= first_block_;
     const bool single = sharing.size() == 1;
     Vec3 normal = Vec3::Zero();
     for (size_t s = 0; s < sharing.size(); ++s) {
       const GridSample& g = sharing[s];
       const double u = static_cast<double>(g.i) / n_, v = static_cast<double>(g.j) / n_;
-      const SurfacePoint point = single ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
-                                        : sampler.evaluate(corners_[g.corner], u, v);
+      const SurfacePoint point = grid ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
+                                      : sampler.evaluate(corners_[g.corner], u, v);
       normal += point.normal;
       if (s > 0) continue;
       const std::int64_t at = vertex - begin;

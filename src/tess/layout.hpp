@@ -28,8 +28,9 @@ struct SampleAttributes {
   int* level = nullptr;
 };
 
-/// Output vertices, in order: mesh vertices, face centres, edge midpoints, then per corner the
-/// n - 1 samples of its edge half, the n - 1 of its spoke and its (n - 1)^2 interior samples.
+/// Output vertices, in order: mesh vertices, face centres, edge midpoints, then corner after
+/// corner the n - 1 samples of its edge half, the n - 1 of its spoke and its (n - 1)^2 interior
+/// samples (so a range of them stays on a few patches at a time).
 /// Unwelded: every corner's own grid, corner after corner, row-major (i, then j).
 class TessellationLayout {
  public:
@@ -70,8 +71,12 @@ class TessellationLayout {
   std::vector<Vertex> vertices_;
   std::vector<Face> faces_;
   std::vector<Edge> edges_;
-  std::int64_t first_face_ = 0, first_edge_ = 0, first_half_ = 0, first_spoke_ = 0,
-               first_interior_ = 0, num_vertices_ = 0;
+  /// Where each group of output vertices starts; per corner, a block of n^2 - 1: its edge half
+  /// (n - 1), its spoke (n - 1), its interior ((n - 1)^2).
+  std::int64_t first_face_ = 0, first_edge_ = 0, first_block_ = 0, num_vertices_ = 0;
+  [[nodiscard]] std::int64_t block(int k) const {
+    return first_block_ + static_cast<std::int64_t>(k) * (static_cast<std::int64_t>(n_) * n_ - 1);
+  }
 };
 
 }  // namespace stitch

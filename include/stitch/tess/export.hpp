@@ -14,6 +14,9 @@ namespace stitch {
 struct SurfaceFileOptions {
   /// .ply as text instead of binary little-endian (both hold double x y z nx ny nz: exact).
   bool ascii_ply = false;
+  /// .ply positions and normals as 32-bit floats: half the bytes, about 7 significant digits
+  /// (enough to render or print; the default doubles read back exactly).
+  bool single_precision = false;
   /// Called with the fraction (0..1) done; from one thread at a time.
   std::function<void(double)> progress;
 };
@@ -34,16 +37,17 @@ struct SurfaceFileCounts {
 
 /// The same file as write_surface_mesh(path, tessellate(mesh, surface, {resolution, true})),
 /// byte for byte, made block by block while it is written: memory grows with the input mesh,
-/// not with the resolution (only .stl, which repeats positions per triangle, holds them all),
-/// and evaluation runs on every core. Refuses non-finite samples. Atomic.
+/// not with the resolution (except .stl, which repeats positions per triangle and so holds them
+/// all, and glTF, whose buffer is written whole), and evaluation runs on every core. Refuses
+/// non-finite samples. Atomic.
 SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
                                        const Surface& surface, int resolution,
                                        const SurfaceFileOptions& options = {});
 
 /// Bytes of memory `stitch smooth` needs at its peak for this mesh: the mesh and its surface
 /// (about 1 kB per corner, measured: docs/performance.md) and whatever the output holds whole
-/// (.stl: every position; unwelded: the whole tessellation). The welded streamed writer holds
-/// only a few blocks, so the resolution does not count there.
+/// (.stl: every position; glTF and unwelded: the whole tessellation). The welded streamed writer
+/// holds only a few blocks, so the resolution does not count there.
 std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bool welded,
                                     const std::string& path);
 
