@@ -1,12 +1,15 @@
 // The exact surface out: the patch set against exact evaluation, Bézier JSON and STL read back,
 // glTF through the Khronos validator, `stitch eval`, and the refusals of bad output requests.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -270,6 +273,47 @@ TEST(CliExact, PatchesJsonBesideAMeshAndReportOnStderr) {
   EXPECT_NE(r.err.find(std::to_string(set.patches.size()) + " Bezier patches"), std::string::npos)
       << r.err;
   EXPECT_TRUE(std::filesystem::exists(folder.file("c.obj")));
+}
+
+TEST(CliExact, FailedGltfLeavesAnEarlierBufferAlone) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube.obj");
+  std::filesystem::create_directory(folder.file("s.gltf"));  // the .gltf cannot be written
+  { std::ofstream(folder.file("s.bin")) << "an earlier buffer"; }
+  const auto r = stitch_cli(folder, "smooth '" + in + "' -o s.gltf --resolution 2");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(testing::read_file(folder.file("s.bin")), "an earlier buffer");
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"s.bin", "s.gltf"}));
+  // Where it can be written, the pair replaces the old buffer.
+  std::filesystem::remove(folder.file("s.gltf"));
+  ASSERT_EQ(stitch_cli(folder, "smooth '" + in + "' -o s.gltf --resolution 2").status, 0);
+  EXPECT_NE(testing::read_file(folder.file("s.bin")), "an earlier buffer");
+}
+
+TEST(CliExact, InfoReportsThePatchSetThatWouldBeWritten) {
+  TempFolder folder;
+  const std::string in = test::example_path("cube_hole.obj");
+  const HalfedgeMesh mesh = read_mesh(in);
+  const PatchSet set = bezier_patches(mesh, Surface(mesh, Method::mdc));
+  const auto text = stitch_cli(folder, "info '" + in + "' --patches");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find(fmt::format("{} patches ({} exact", set.patches.size(), set.num_exact())),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find(fmt::format("depth {}", set.depth)), std::string::npos) << text.out;
+  const auto json = stitch_cli(folder, "info '" + in + "' --patches --json --tolerance 1e-4");
+  ASSERT_EQ(json.status, 0) << json.err;
+  const auto report = nlohmann::json::parse(json.out).at("bezier_patch_set");
+  EXPECT_EQ(report.at("tolerance").get<double>(), 1e-4);
+  // A looser tolerance needs no deeper hierarchy, and what is reported is within it.
+  EXPECT_LE(report.at("depth").get<int>(), set.depth);
+  EXPECT_LE(report.at("max_position_deviation").get<double>(),
+            1e-4 * report.at("model_size").get<double>());
+  EXPECT_EQ(stitch_cli(folder, "info '" + in + "' --patches --method cc").status, 2);
 }
 
 TEST(CliExact, BadOutputRequestsExitTwoAndLeaveNothing) {

@@ -97,7 +97,7 @@ struct App {
   Clock::time_point last_autosave = Clock::now();
   bool show_ui = true;  ///< the panels (`ui off` in a script hides them, e.g. for pictures)
   bool show_recover_dialog = false;
-  bool open_popup_requested = false, save_popup_requested = false;
+  bool open_popup_requested = false, save_popup_requested = false, export_popup_requested = false;
   std::string recover_path;
 
   // Mouse state.
@@ -110,6 +110,7 @@ struct App {
   // Text fields.
   char open_path[512] = "";
   char save_path[512] = "";
+  char export_path[512] = "smooth.ply";
   char command_line[512] = "";
   float extrude_distance = 0.5f;
   int connect_twist = 0;
@@ -555,6 +556,7 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
       if (ImGui::MenuItem("Open...")) open_popup = true;
       if (ImGui::MenuItem("Save", nullptr, false, !s.path.empty())) run_line(app, "save", hooks);
       if (ImGui::MenuItem("Save as...")) save_popup = true;
+      if (ImGui::MenuItem("Export smooth surface...")) app.export_popup_requested = true;
       if (ImGui::MenuItem("Quit")) glfwSetWindowShouldClose(app.window, GLFW_TRUE);
       ImGui::EndMenu();
     }
@@ -581,7 +583,8 @@ void dialogs(App& app, const ScriptHooks& hooks) {
   Session& s = app.session;
   if (app.open_popup_requested) ImGui::OpenPopup("Open file");
   if (app.save_popup_requested) ImGui::OpenPopup("Save as");
-  app.open_popup_requested = app.save_popup_requested = false;
+  if (app.export_popup_requested) ImGui::OpenPopup("Export smooth surface");
+  app.open_popup_requested = app.save_popup_requested = app.export_popup_requested = false;
   if (ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::InputText("path (.obj .off .ply .stitch)", app.open_path, sizeof app.open_path);
     if (ImGui::Button("Open")) {
@@ -596,6 +599,17 @@ void dialogs(App& app, const ScriptHooks& hooks) {
     ImGui::InputText("path (.stitch keeps K-gons and view)", app.save_path, sizeof app.save_path);
     if (ImGui::Button("Save")) {
       run_line(app, std::string("save ") + app.save_path, hooks);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  if (ImGui::BeginPopupModal("Export smooth surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::InputText("path (.ply .obj .off .stl .glb .gltf; .json: Bezier patches)",
+                     app.export_path, sizeof app.export_path);
+    if (ImGui::Button("Export")) {
+      run_line(app, std::string("export ") + app.export_path, hooks);
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

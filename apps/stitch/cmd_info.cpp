@@ -3,10 +3,13 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "stitch/eval/surface.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/tess/patches.hpp"
 
 namespace stitch::cli {
 
@@ -15,6 +18,10 @@ namespace {
 struct InfoArgs {
   InputOptions in;
   bool json = false;
+  bool patches = false;
+  std::string method = "mdc";
+  PatchSetOptions patch_set;
+  KgonCliOptions kgon;
 };
 
 std::string histogram(const std::map<int, int>& h) {
@@ -37,6 +44,11 @@ void run_info(const InfoArgs& a) {
   for (Face f : mesh.faces())
     if (mesh.degree(f) != 4) ev_faces.push_back(f.idx + 1);
 
+  std::optional<PatchSet> set;
+  if (a.patches)
+    set = bezier_patches(mesh, Surface(mesh, parse_method(a.method), to_kgon_options(a.kgon)),
+                         a.patch_set);
+
   if (a.json) {
     nlohmann::json j;
     j["file"] = a.in.path;
@@ -52,6 +64,16 @@ void run_info(const InfoArgs& a) {
     j["extraordinary_vertices"] = ev_vertices;
     j["extraordinary_faces"] = ev_faces;
     j["bounding_box"] = {{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}};
+    if (set)
+      j["bezier_patch_set"] = {{"method", a.method},
+                               {"tolerance", set->tolerance},
+                               {"angle_tolerance_deg", set->angle_tolerance_deg},
+                               {"patches", set->patches.size()},
+                               {"exact_patches", set->num_exact()},
+                               {"depth", set->depth},
+                               {"model_size", set->model_size},
+                               {"max_position_deviation", set->max_position_deviation},
+                               {"max_normal_deviation_deg", set->max_normal_deviation_deg}};
     fmt::print("{}\n", j.dump(2));
     return;
   }
@@ -66,6 +88,19 @@ void run_info(const InfoArgs& a) {
              ev_vertices.size(), ev_faces.size());
   fmt::print("  bounding box ({:.6g}, {:.6g}, {:.6g}) - ({:.6g}, {:.6g}, {:.6g})\n", lo.x(), lo.y(),
              lo.z(), hi.x(), hi.y(), hi.z());
+  if (!set) return;
+  // What `stitch smooth -o X.step/.igs/.bez.json` would write, without writing it.
+  fmt::print(
+      "  Bezier patch set ({}, tolerance {:.3g} of the model size, {:.3g} degrees)  {} "
+      "patches ({} exact, {} innermost cells at extraordinary points), depth {}\n",
+      a.method, set->tolerance, set->angle_tolerance_deg, set->patches.size(), set->num_exact(),
+      set->patches.size() - set->num_exact(), set->depth);
+  fmt::print(
+      "  largest deviation from exact evaluation  {:.3g} ({:.3g} of the model size {:.6g}), "
+      "normal {:.3g} degrees\n",
+      set->max_position_deviation,
+      set->model_size > 0 ? set->max_position_deviation / set->model_size : 0.0, set->model_size,
+      set->max_normal_deviation_deg);
 }
 
 }  // namespace
@@ -76,6 +111,18 @@ void add_info_command(CLI::App& app) {
       "info", "Counts, genus, valence and face-degree histograms, extraordinary points");
   add_input_options(cmd, args->in);
   cmd->add_flag("--json", args->json, "print JSON");
+  cmd->add_flag("--patches", args->patches,
+                "also expand the Bezier patch set that .step/.igs/.bez.json outputs hold and "
+                "report its depth, patch count and largest deviation from exact evaluation");
+  add_method_option(cmd, args->method);
+  cmd->add_option("--tolerance", args->patch_set.tolerance,
+                  "with --patches: largest distance of the innermost cells from the exact "
+                  "surface, relative to the model size")
+      ->capture_default_str();
+  cmd->add_option("--angle-tolerance", args->patch_set.angle_tolerance_deg,
+                  "with --patches: largest normal deviation of those cells, degrees")
+      ->capture_default_str();
+  add_kgon_options(cmd, args->kgon);
   cmd->callback([args] { run_info(*args); });
 }
 

@@ -9,6 +9,9 @@
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/tess/bezier_json.hpp"
+#include "stitch/tess/export.hpp"
+#include "stitch/tess/patches.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace stitch::modeler {
@@ -174,6 +177,25 @@ void save_file(Session& session, const std::string& path) {
   }
   session.path = path;
   session.document.mark_saved();
+}
+
+/// Writes the smooth surface as the session shows it (method, resolution, K-gon controls): a
+/// tessellated mesh by extension, or the Bézier patches as JSON (docs/formats.md).
+std::string export_surface(const Session& session, const std::string& path) {
+  const HalfedgeMesh& mesh = session.document.mesh();
+  const Method method = session.display.method;
+  const Surface surface(mesh, method, session.document.kgon_options());
+  const std::string ext = file_extension(path);
+  if (ext == ".json") {
+    const PatchSet set = bezier_patches(mesh, surface);
+    write_bezier_json(path, set);
+    return fmt::format("exported {} ({} Bezier patches, depth {}, method {})", path,
+                       set.patches.size(), set.depth, to_string(method));
+  }
+  const SurfaceFileCounts counts =
+      write_smooth_surface(path, mesh, surface, session.display.resolution);
+  return fmt::format("exported {} ({} vertices, {} quads, method {}, resolution {})", path,
+                     counts.vertices, counts.quads, to_string(method), session.display.resolution);
 }
 
 std::optional<KgonTarget> kgon_target(const Session& s) {
@@ -402,6 +424,17 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     if (path.empty()) throw MeshError("save: the document has no file yet; write save PATH");
     save_file(s, path);
     result.message = "saved " + path;
+  } else if (cmd == "export") {
+    const std::string path = rest_after_first_word(strip_comment(raw));
+    if (path.empty())
+      throw MeshError(fmt::format(
+          "usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
+          kSurfaceMeshExtensions));
+    try {
+      result.message = export_surface(s, path);
+    } catch (const std::invalid_argument& e) {  // cc is not a set of Bézier patches
+      throw MeshError(e.what());
+    }
   } else if (cmd == "open") {
     const std::string path = rest_after_first_word(strip_comment(raw));
     if (path.empty()) throw MeshError("usage: open PATH");
@@ -425,7 +458,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         "collapse-edge, extrude-face, connect-faces, delete-face, doo-sabin, vertex-insertion, "
         "catmull-clark, dual; modeler: primitive, move-vertex, translate-vertex, select, kgon, "
         "undo, redo, method, resolution, mode, overlay, split, view, frame, orbit, zoom, "
-        "screenshot, save, open, info, quit)",
+        "screenshot, save, export, open, info, quit)",
         cmd));
   }
   if (!s.warning.empty()) {

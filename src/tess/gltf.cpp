@@ -125,19 +125,28 @@ void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary) {
     throw MeshError(fmt::format("cannot write {}: glTF serialization failed", path));
   nlohmann::json doc = nlohmann::json::parse(text.str());
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", bin_path.filename().string()}};
+  // The buffer is written under a name of its own first and takes its final name only once the
+  // .gltf is in place: a failure leaves neither file changed (an earlier .bin included).
+  const std::filesystem::path staged =
+      bin_path.parent_path() / ("." + bin_path.filename().string() + ".staged");
   write_file_atomically(
-      bin_path.string(),
+      staged.string(),
       [&](std::ostream& out) {
         out.write(reinterpret_cast<const char*>(bytes.data()),
                   static_cast<std::streamsize>(bytes.size()));
       },
       true);
+  std::error_code ec;
   try {
     write_file_atomically(path, [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
   } catch (...) {
-    std::error_code ec;  // a buffer without its .gltf is of no use to anyone
-    std::filesystem::remove(bin_path, ec);
+    std::filesystem::remove(staged, ec);
     throw;
+  }
+  std::filesystem::rename(staged, bin_path, ec);
+  if (ec) {
+    std::filesystem::remove(staged, ec);
+    throw MeshError(fmt::format("cannot write {}: {}", bin_path.string(), ec.message()));
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/tess/bezier_json.hpp"
+#include "stitch/tess/export.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
@@ -162,6 +164,36 @@ TEST(ModelerSession, ProjectsKeepKgonsViewAndDisplay) {
   EXPECT_EQ(t.view, s.view);
   EXPECT_EQ(t.surface.method(), Method::cc);
   EXPECT_EQ(t.path, dir.file("p.stitch"));
+}
+
+TEST(ModelerSession, ExportWritesTheSurfaceAsShown) {
+  stitch::testing::TempFolder dir;
+  Session s;
+  // K-gon controls, the method and the resolution shown are what is exported.
+  ASSERT_FALSE(run_script(s,
+                          {"open " + test::example_path("cube.obj"), "insert-edge 1@1 5@2",
+                           "kgon global scale 0.8", "method asc", "resolution 3",
+                           "export " + dir.file("shown.ply"), "export " + dir.file("shown.json")},
+                          {}));
+  KgonOptions controls;
+  controls.global.scale = 0.8;
+  const Surface expected_surface(s.document.mesh(), Method::asc, controls);
+  const std::string expected = dir.file("expected.ply");
+  write_smooth_surface(expected, s.document.mesh(), expected_surface, 3);
+  EXPECT_EQ(stitch::testing::read_file(dir.file("shown.ply")),
+            stitch::testing::read_file(expected));
+  const PatchSet patches = read_bezier_json(dir.file("shown.json"));
+  EXPECT_EQ(patches.method, Method::asc);
+  EXPECT_EQ(patches.patches.size(), static_cast<size_t>(s.document.mesh().num_halfedges()));
+  // A mesh export does not change the document or its file.
+  EXPECT_FALSE(s.document.can_redo());
+  EXPECT_TRUE(s.path.find("cube.obj") != std::string::npos) << s.path;
+  const auto error = run_script(s, {"method cc", "export " + dir.file("cc.json")}, {});
+  ASSERT_TRUE(error);
+  EXPECT_NE(error->message.find("not a set of Bezier patches"), std::string::npos)
+      << error->message;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("cc.json")));
+  EXPECT_TRUE(run_script(s, {"export"}, {}));
 }
 
 }  // namespace

@@ -16,6 +16,9 @@
 //   view front|back|left|right|top|bottom|iso        frame all|selection
 //   orbit DYAW DPITCH (degrees)      zoom STEPS
 //   screenshot PATH    save [PATH]    open PATH    info    quit
+//   export PATH                      the smooth surface as shown (method, resolution, K-gon
+//                                    controls): .obj .ply .off .stl .glb .gltf, or .json for the
+//                                    Bézier patches
 // (paths run to the end of the line, so they may contain blanks). The application adds
 // `ui on|off` (show or hide its panels), the one line about the window rather than the session.
 #pragma once
