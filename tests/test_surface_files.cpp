@@ -1,8 +1,11 @@
 // Writing the smooth surface: the streamed writer gives the same bytes as tessellating first, the
 // bytes do not depend on the number of threads, and every format reads back.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
+#include <fstream>
 #include <string>
 
 #include "cli_run.hpp"
@@ -134,6 +137,54 @@ TEST(SmoothSurfaceFile, EveryFormatReadsBackAsTheSurface) {
   const std::string stl = folder.file("surface.stl");
   write_smooth_surface(stl, mesh, surface, 4);
   EXPECT_EQ(read_file(stl).size(), 84u + 50u * 2u * expected.quads.size());
+}
+
+TEST(SmoothSurfaceFile, GltfReadsBackAsTheWeldedSurface) {
+  const HalfedgeMesh mesh = mixed_mesh();
+  const Surface surface(mesh, Method::mdc);
+  const SurfaceMesh expected = tessellate(mesh, surface, {4, true});
+  TempFolder folder;
+  for (const char* ext : {".glb", ".gltf"}) {
+    const std::string path = folder.file(std::string("surface") + ext);
+    write_smooth_surface(path, mesh, surface, 4);
+    // Quads become two triangles each; glTF keeps float positions, welded again on reading.
+    const PolygonSoup soup = read_polygon_soup(path);
+    EXPECT_EQ(soup.positions.size(), expected.positions.size()) << ext;
+    EXPECT_EQ(soup.faces.size(), 2 * expected.quads.size()) << ext;
+    for (size_t i = 0; i < soup.positions.size(); i += 97) {
+      double nearest = INFINITY;
+      for (const Vec3& p : expected.positions)
+        nearest = std::min(nearest, (p - soup.positions[i]).norm());
+      EXPECT_LT(nearest, 1e-6) << ext << " vertex " << i;  // float precision of a unit-size model
+    }
+    EXPECT_EQ(topology_stats(read_mesh(path)).genus, topology_stats(mesh).genus) << ext;
+  }
+  const std::string bad = folder.file("bad.glb");
+  { std::ofstream(bad) << "glTF but not really"; }
+  const std::string message = test::error_of([&] { read_polygon_soup(bad); });
+  EXPECT_NE(message.find("bad.glb: not a glTF 2.0 file"), std::string::npos) << message;
+  // Found by fuzz-gltf: an accessor number past the list escaped as std::out_of_range.
+  const std::string fuzzed = test::error_of([] {
+    read_polygon_soup(std::string(STITCH_TEST_DATA_DIR) +
+                      "/regressions/gltf_accessor_out_of_range.glb");
+  });
+  EXPECT_NE(fuzzed.find("mesh 0 primitive 0: accessor 5 does not exist"), std::string::npos)
+      << fuzzed;
+  // A .gltf whose buffer is a pipe is refused, not read forever (nor opened: that would block).
+  const std::string text = testing::read_file(folder.file("surface.gltf"));
+  const std::string device = folder.file("pipe.gltf");
+  ASSERT_EQ(::mkfifo(folder.file("pipe.bin").c_str(), 0600), 0);
+  {
+    std::string redirected = text;
+    const size_t at = redirected.find("surface.bin");
+    ASSERT_NE(at, std::string::npos);
+    redirected.replace(at, std::string("surface.bin").size(), "pipe.bin");
+    std::ofstream(device) << redirected;
+  }
+  const std::string refused = test::error_of([&] { read_polygon_soup(device); });
+  EXPECT_NE(refused.find("pipe.gltf: not a glTF 2.0 file tinygltf can read: File read error"),
+            std::string::npos)
+      << refused;
 }
 
 TEST(SmoothSurfaceFile, WriteErrorsNameTheFileAndLeaveNothing) {

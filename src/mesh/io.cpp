@@ -102,7 +102,7 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
 namespace {
 
 std::string supported_list() {
-  return ".obj, .off, .ply, .stl";
+  return ".obj, .off, .ply, .stl, .glb, .gltf";
 }
 
 constexpr std::string_view kComment = "written by stitch";
@@ -135,7 +135,8 @@ std::string file_extension(const std::string& path) {
 
 PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings) {
   const std::string ext = file_extension(path);
-  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
+  const bool gltf = ext == ".glb" || ext == ".gltf";
+  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl" && !gltf)
     throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
                                 limits::quoted(ext), supported_list()));
   const std::string text = read_regular_file(path);
@@ -144,6 +145,7 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
   PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings)
                      : ext == ".off" ? io_detail::read_off(text, path, warnings)
                      : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
+                     : gltf          ? io_detail::read_gltf(text, path, warnings)
                                      : io_detail::read_ply(text, path, warnings);
   soup.source = path;
   if (soup.faces.empty()) throw MeshError(fmt::format("{}: the file contains no faces", path));
@@ -189,8 +191,8 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     write_mesh_file(path, true,
                     [&](std::ostream& out) { write_stl(out, stream, soup.positions, kComment); });
   else
-    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                ext, supported_list()));
+    throw MeshError(fmt::format(
+        "cannot write {}: unknown extension '{}' (supported: .obj, .off, .ply, .stl)", path, ext));
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {

@@ -56,6 +56,16 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);
 PolygonSoup read_ply(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);
+/// Triangles given corner by corner, welded: corners within 1e-6 of the bounding box diagonal
+/// become one vertex; triangles that collapse are dropped (one warning). `lines` (empty, or one
+/// per triangle) are the file lines for messages.
+PolygonSoup weld_triangles(const std::vector<std::array<Vec3, 3>>& triangles,
+                           const std::vector<int>& lines, const std::string& path,
+                           std::vector<std::string>* warnings);
+/// glTF 2.0, binary (.glb) or text (.gltf, whose external buffers are read from beside it): the
+/// triangles of every mesh the default scene places, in scene coordinates, welded.
+PolygonSoup read_gltf(std::string_view text, const std::string& path,
+                      std::vector<std::string>* warnings);
 /// ASCII or binary STL (told apart by the binary size 84 + 50 n), coincident corners welded.
 PolygonSoup read_stl(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);

@@ -1,6 +1,7 @@
 // STL in (ASCII and binary), welded into a polygon soup. STL stores every triangle with its own
 // three corners, so shared vertices are found again by position: corners closer than
-// kWeldTolerance times the bounding box diagonal become one vertex.
+// kWeldTolerance times the bounding box diagonal become one vertex (weld_triangles, which the
+// glTF reader shares: glTF splits vertices wherever an attribute differs).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -143,7 +144,12 @@ PolygonSoup read_stl(std::string_view text, const std::string& path,
         "triangles; this file has {} bytes)",
         path, text.size()));
   const auto triangles = binary ? read_binary(text, path) : read_ascii(text, path, &lines);
+  return weld_triangles(triangles, lines, path, warnings);
+}
 
+PolygonSoup weld_triangles(const std::vector<std::array<Vec3, 3>>& triangles,
+                           const std::vector<int>& lines, const std::string& path,
+                           std::vector<std::string>* warnings) {
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   for (const auto& t : triangles)
     for (const Vec3& p : t) {
@@ -163,7 +169,7 @@ PolygonSoup read_stl(std::string_view text, const std::string& path,
       continue;
     }
     soup.faces.push_back(std::move(face));
-    soup.face_lines.push_back(binary ? 0 : lines[t]);
+    soup.face_lines.push_back(lines.empty() ? 0 : lines[t]);
   }
   if (degenerate > 0 && warnings)
     warnings->push_back(fmt::format(

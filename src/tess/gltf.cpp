@@ -12,10 +12,7 @@
 
 // tinygltf is header-only; this file holds its implementation. Images are never written.
 #define TINYGLTF_IMPLEMENTATION
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#include <tiny_gltf.h>
+#include "mesh/tinygltf.hpp"
 
 namespace stitch {
 

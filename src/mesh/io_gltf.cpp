@@ -1,0 +1,238 @@
+// glTF 2.0 in, through tinygltf (its implementation is compiled in src/tess/gltf.cpp). glTF
+// splits a vertex wherever one of its attributes differs (a normal or UV seam), so the triangles
+// are welded by position like STL's; node transforms are applied, images are not loaded.
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <array>
+#include <bit>
+#include <cstring>
+#include <filesystem>
+
+#include "io_detail.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
+#include "tinygltf.hpp"
+
+namespace stitch::io_detail {
+
+namespace {
+
+using Triangles = std::vector<std::array<Vec3, 3>>;
+
+// glTF stores little-endian floats; they are copied as they are.
+static_assert(std::endian::native == std::endian::little,
+              "the glTF reader needs a little-endian host");
+
+/// Node transforms deeper than this are refused: a node hierarchy is a forest, and a file whose
+/// children lead back to an ancestor would recurse forever.
+constexpr int kMostNodeDepth = 256;
+
+class Reader {
+ public:
+  Reader(const tinygltf::Model& model, const std::string& path) : model_(model), path_(path) {}
+
+  Triangles triangles() {
+    if (model_.scenes.empty()) {  // no scene: every mesh as it is
+      for (size_t m = 0; m < model_.meshes.size(); ++m)
+        add_mesh(static_cast<int>(m), Eigen::Affine3d::Identity());
+    } else {
+      const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (scene >= static_cast<int>(model_.scenes.size()))
+        throw error(fmt::format("the default scene {} does not exist", scene));
+      for (int node : model_.scenes[scene].nodes) add_node(node, Eigen::Affine3d::Identity(), 0);
+    }
+    return std::move(triangles_);
+  }
+
+ private:
+  MeshError error(const std::string& what) const {
+    return MeshError(fmt::format("{}: {}", path_, what));
+  }
+
+  void add_node(int index, const Eigen::Affine3d& parent, int depth) {
+    if (index < 0 || index >= static_cast<int>(model_.nodes.size()))
+      throw error(fmt::format("node {} does not exist", index));
+    if (depth > kMostNodeDepth)
+      throw error(fmt::format("nodes nest deeper than {} (a cycle?)", kMostNodeDepth));
+    const tinygltf::Node& node = model_.nodes[index];
+    Eigen::Affine3d local = Eigen::Affine3d::Identity();
+    if (node.matrix.size() == 16) {
+      Eigen::Matrix4d m;
+      for (int i = 0; i < 16; ++i) m(i % 4, i / 4) = node.matrix[i];  // column-major
+      local.matrix() = m;
+    } else {
+      if (node.translation.size() == 3)
+        local.translate(Vec3(node.translation[0], node.translation[1], node.translation[2]));
+      if (node.rotation.size() == 4)  // glTF stores x, y, z, w
+        local.rotate(Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1],
+                                        node.rotation[2])
+                         .normalized());
+      if (node.scale.size() == 3) local.scale(Vec3(node.scale[0], node.scale[1], node.scale[2]));
+    }
+    const Eigen::Affine3d world = parent * local;
+    if (node.mesh >= 0) add_mesh(node.mesh, world);
+    for (int child : node.children) add_node(child, world, depth + 1);
+  }
+
+  void add_mesh(int index, const Eigen::Affine3d& world) {
+    if (index >= static_cast<int>(model_.meshes.size()))
+      throw error(fmt::format("mesh {} does not exist", index));
+    const tinygltf::Mesh& mesh = model_.meshes[index];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = mesh.primitives[p];
+      const std::string where = fmt::format("mesh {} primitive {}", index, p);
+      if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1)
+        throw error(fmt::format("{} draws mode {}; only triangles (mode 4) are read", where,
+                                primitive.mode));
+      const auto position = primitive.attributes.find("POSITION");
+      if (position == primitive.attributes.end())
+        throw error(fmt::format("{} has no POSITION", where));
+      const std::vector<Vec3> points = positions(position->second, where);
+      std::vector<std::int64_t> corners;
+      if (primitive.indices >= 0) {
+        corners = indices(primitive.indices, where);
+      } else {
+        corners.resize(points.size());
+        for (size_t i = 0; i < corners.size(); ++i) corners[i] = static_cast<std::int64_t>(i);
+      }
+      if (corners.size() % 3 != 0)
+        throw error(
+            fmt::format("{}: {} corners do not make whole triangles", where, corners.size()));
+      for (size_t t = 0; t < corners.size(); t += 3) {
+        std::array<Vec3, 3> triangle;
+        for (int k = 0; k < 3; ++k) {
+          const std::int64_t at = corners[t + k];
+          if (at < 0 || at >= static_cast<std::int64_t>(points.size()))
+            throw error(
+                fmt::format("{}: index {} is past its {} positions", where, at, points.size()));
+          triangle[k] = world * points[static_cast<size_t>(at)];
+          limits::check_coordinates(triangle[k], fmt::format("{}: {}", path_, where));
+        }
+        triangles_.push_back(triangle);
+      }
+    }
+  }
+
+  /// The bytes of element i of an accessor, checked against its buffer.
+  const unsigned char* element(const tinygltf::Accessor& accessor, size_t i, size_t size,
+                               const std::string& where) const {
+    if (accessor.sparse.isSparse) throw error(where + ": sparse accessors are not read");
+    if (accessor.bufferView < 0 ||
+        accessor.bufferView >= static_cast<int>(model_.bufferViews.size()))
+      throw error(where + ": an accessor without a buffer view");
+    const tinygltf::BufferView& view = model_.bufferViews[accessor.bufferView];
+    if (view.buffer < 0 || view.buffer >= static_cast<int>(model_.buffers.size()))
+      throw error(where + ": a buffer view without a buffer");
+    const std::vector<unsigned char>& data = model_.buffers[view.buffer].data;
+    const size_t stride = view.byteStride > 0 ? view.byteStride : size;
+    const size_t start = view.byteOffset + accessor.byteOffset + i * stride;
+    if (start + size > view.byteOffset + view.byteLength || start + size > data.size())
+      throw error(where + ": an accessor reaches past its buffer");
+    return data.data() + start;
+  }
+
+  /// The accessor `index`, checked to exist and to fit its buffer with elements of `size` bytes
+  /// (before anything is allocated for its `count`, which the file may set to anything).
+  const tinygltf::Accessor& accessor(int index, size_t size, const std::string& where) const {
+    if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
+      throw error(fmt::format("{}: accessor {} does not exist", where, index));
+    const tinygltf::Accessor& a = model_.accessors[static_cast<size_t>(index)];
+    if (a.count > 0) {
+      if (a.bufferView >= 0 && a.bufferView < static_cast<int>(model_.bufferViews.size()) &&
+          a.count > model_.bufferViews[a.bufferView].byteLength)
+        throw error(fmt::format("{}: accessor {} has more elements than bytes", where, index));
+      element(a, a.count - 1, size, where);  // the last one fits, so all do
+    }
+    return a;
+  }
+
+  std::vector<Vec3> positions(int index, const std::string& where) const {
+    const tinygltf::Accessor& a = accessor(index, sizeof(float[3]), where);
+    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+      throw error(where + ": POSITION is not float VEC3");
+    std::vector<Vec3> out(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+      std::array<float, 3> xyz;
+      std::memcpy(xyz.data(), element(a, i, sizeof xyz, where), sizeof xyz);
+      out[i] = Vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    return out;
+  }
+
+  std::vector<std::int64_t> indices(int index, const std::string& where) const {
+    if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
+      throw error(fmt::format("{}: its indices accessor {} does not exist", where, index));
+    const int type = model_.accessors[static_cast<size_t>(index)].componentType;
+    const size_t size = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                        : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                        : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                         : 0;
+    if (size == 0) throw error(where + ": indices are not unsigned byte, short or int");
+    const tinygltf::Accessor& a = accessor(index, size, where);
+    if (a.type != TINYGLTF_TYPE_SCALAR) throw error(where + ": indices are not scalars");
+    std::vector<std::int64_t> out(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+      const unsigned char* bytes = element(a, i, size, where);
+      std::uint32_t value = 0;  // little-endian, as glTF stores it
+      for (size_t b = size; b-- > 0;) value = (value << 8) | bytes[b];
+      out[i] = value;
+    }
+    return out;
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& path_;
+  Triangles triangles_;
+};
+
+/// tinygltf's file access for external buffers, without opening anything to test existence (a
+/// pipe would block) and reading through read_regular_file: a .gltf whose buffer names a pipe or
+/// a device is refused like any other input, not read forever.
+bool buffer_file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                      void*) {
+  try {
+    const std::string bytes = read_regular_file(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const MeshError& e) {
+    *err = e.what();
+    return false;
+  }
+}
+
+}  // namespace
+
+PolygonSoup read_gltf(std::string_view text, const std::string& path,
+                      std::vector<std::string>* warnings) {
+  tinygltf::TinyGLTF loader;
+  // Textures have nothing to do with the surface: images are neither decoded nor refused.
+  loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                           const unsigned char*, int, void*) { return true; },
+                        nullptr);
+  loader.SetFsCallbacks({&buffer_file_exists, &tinygltf::ExpandFilePath, &read_buffer_file,
+                         &tinygltf::WriteWholeFile, nullptr});
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  const bool binary = text.size() >= 4 && text.substr(0, 4) == "glTF";
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(text.data()),
+                                           static_cast<unsigned int>(text.size()), folder)
+             : loader.LoadASCIIFromString(&model, &err, &warn, text.data(),
+                                          static_cast<unsigned int>(text.size()), folder);
+  if (!ok)
+    throw MeshError(fmt::format("{}: not a glTF 2.0 file tinygltf can read: {}", path,
+                                limits::quoted(err.empty() ? warn : err)));
+  if (!warn.empty() && warnings)
+    warnings->push_back(fmt::format("{}: {}", path, limits::quoted(warn)));
+  return weld_triangles(Reader(model, path).triangles(), {}, path, warnings);
+}
+
+}  // namespace stitch::io_detail
