@@ -578,6 +578,21 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
   }
 }
 
+/// A modal asking for a path, which runs the script line `command PATH` on `button`.
+template <size_t N>
+void path_dialog(App& app, const ScriptHooks& hooks, const char* title, const char* label,
+                 char (&path)[N], const char* button, const char* command) {
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::InputText(label, path, N);
+  if (ImGui::Button(button)) {
+    run_line(app, std::string(command) + " " + path, hooks);
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
 /// Modal dialogs, begun after every other window (ImGui wants modals above what appears).
 void dialogs(App& app, const ScriptHooks& hooks) {
   Session& s = app.session;
@@ -585,37 +600,13 @@ void dialogs(App& app, const ScriptHooks& hooks) {
   if (app.save_popup_requested) ImGui::OpenPopup("Save as");
   if (app.export_popup_requested) ImGui::OpenPopup("Export smooth surface");
   app.open_popup_requested = app.save_popup_requested = app.export_popup_requested = false;
-  if (ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::InputText("path (.obj .off .ply .stitch)", app.open_path, sizeof app.open_path);
-    if (ImGui::Button("Open")) {
-      run_line(app, std::string("open ") + app.open_path, hooks);
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
-  if (ImGui::BeginPopupModal("Save as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::InputText("path (.stitch keeps K-gons and view)", app.save_path, sizeof app.save_path);
-    if (ImGui::Button("Save")) {
-      run_line(app, std::string("save ") + app.save_path, hooks);
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
-  if (ImGui::BeginPopupModal("Export smooth surface", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::InputText("path (.ply .obj .off .stl .glb .gltf; .json: Bezier patches)",
-                     app.export_path, sizeof app.export_path);
-    if (ImGui::Button("Export")) {
-      run_line(app, std::string("export ") + app.export_path, hooks);
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
+  path_dialog(app, hooks, "Open file", "path (.obj .off .ply .stl .glb .gltf .stitch)",
+              app.open_path, "Open", "open");
+  path_dialog(app, hooks, "Save as", "path (.stitch keeps K-gons and view)", app.save_path, "Save",
+              "save");
+  path_dialog(app, hooks, "Export smooth surface",
+              "path (.ply .obj .off .stl .glb .gltf; .json: Bezier patches)", app.export_path,
+              "Export", "export");
   if (app.show_recover_dialog && ImGui::GetFrameCount() > 2) {
     ImGui::OpenPopup("Recover autosave?");
     app.show_recover_dialog = false;
