@@ -100,7 +100,7 @@ std::vector<std::string> edit(MeshHandle& self, const std::vector<std::string>& 
 }
 
 int euler(const HalfedgeMesh& mesh) {
-  return mesh.num_vertices() - mesh.num_edges() + mesh.num_faces();
+  return topology_stats(mesh).euler;
 }
 
 // Takes the snapshot by value, before the GIL is released: another thread may edit the Mesh
@@ -116,6 +116,9 @@ py::dict topology(std::shared_ptr<const HalfedgeMesh> mesh) {
   d["vertices"] = s.vertices;
   d["edges"] = s.edges;
   d["faces"] = s.faces;
+  d["boundary_loops"] = s.boundary_loops;
+  d["crease_edges"] = s.crease_edges;
+  d["corner_vertices"] = s.corner_vertices;
   d["components"] = s.components;
   d["euler"] = s.euler;
   d["genus"] = s.genus;
@@ -141,9 +144,11 @@ void bind_mesh(py::module_& m) {
       .def_property_readonly("num_vertices",
                              [](const MeshHandle& h) { return h.mesh->num_vertices(); })
       .def_property_readonly("num_edges", [](const MeshHandle& h) { return h.mesh->num_edges(); })
-      .def_property_readonly("num_faces", [](const MeshHandle& h) { return h.mesh->num_faces(); })
+      .def_property_readonly("num_faces",
+                             [](const MeshHandle& h) { return topology_stats(*h.mesh).faces; })
       .def_property_readonly(
-          "num_patches", [](const MeshHandle& h) { return h.mesh->num_halfedges(); },
+          "num_patches",
+          [](const MeshHandle& h) { return static_cast<int>(h.mesh->patch_corners().size()); },
           "one patch per corner (half-edge)")
       .def_property_readonly("euler", [](const MeshHandle& h) { return euler(*h.mesh); })
       .def_property_readonly(
@@ -193,7 +198,7 @@ void bind_mesh(py::module_& m) {
           py::arg("path"), "Writes the mesh by extension (.obj, .off, .ply, .stl), atomically.")
       .def("__repr__", [](const MeshHandle& h) {
         return fmt::format("<stitch.Mesh V {} E {} F {}, Euler {}>", h.mesh->num_vertices(),
-                           h.mesh->num_edges(), h.mesh->num_faces(), euler(*h.mesh));
+                           h.mesh->num_edges(), topology_stats(*h.mesh).faces, euler(*h.mesh));
       });
 
   m.def("read", &read, py::arg("path"), py::kw_only(), py::arg("fill_holes") = false,

@@ -108,7 +108,8 @@ py::object evaluate(const SurfaceHandle& s, py::handle patches, py::handle u, py
     const HalfedgeMesh& mesh = *s.mesh;
     for (py::ssize_t i = 0; i < n; ++i) {
       if (patch[i] < 0 || patch[i] >= mesh.halfedge_capacity() ||
-          mesh.is_deleted(Halfedge(static_cast<int>(patch[i]))))
+          mesh.is_deleted(Halfedge(static_cast<int>(patch[i]))) ||
+          mesh.is_hole(Halfedge(static_cast<int>(patch[i]))))
         throw py::value_error(
             fmt::format("patches[{}] = {} is not a patch of the surface (0 to {})", i, patch[i],
                         mesh.halfedge_capacity() - 1));

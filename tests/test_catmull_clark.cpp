@@ -33,14 +33,7 @@ HalfedgeMesh load(const std::string& name) {
   return read_mesh(shape(name));
 }
 
-double mesh_size(const HalfedgeMesh& mesh) {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (Vertex v : mesh.vertices()) {
-    lo = lo.cwiseMin(mesh.position(v));
-    hi = hi.cwiseMax(mesh.position(v));
-  }
-  return (hi - lo).norm();
-}
+using test::mesh_size;
 
 Vec3 centroid(const HalfedgeMesh& mesh) {
   Vec3 sum = Vec3::Zero();
@@ -376,22 +369,7 @@ TEST(CatmullClark, AFaceThatRunsAlongAnEdgeTwiceGetsItsLimitSurface) {
 // A 2-sided face doubling one edge of a cube (what the topology operators create).
 HalfedgeMesh cube_with_two_gon() {
   HalfedgeMesh mesh = load("catmark_cube");
-  // Edge (h, t) keeps h in its face and lends t to the 2-gon; a new edge (h2, t2) gives t2 to
-  // t's old face and h2 to the 2-gon.
-  const Halfedge h = mesh.halfedge(Face(0));
-  const Halfedge t = HalfedgeMesh::twin(h);
-  const Face other = mesh.face(t);
-  const Halfedge before = mesh.prev(t), after = mesh.next(t);
-  const Halfedge h2 = mesh.add_edge(mesh.origin(h), mesh.target(h));
-  const Halfedge t2 = HalfedgeMesh::twin(h2);
-  mesh.link(before, t2);
-  mesh.link(t2, after);
-  mesh.set_face(t2, other);
-  mesh.set_halfedge(other, t2);
-  const Face two_gon = mesh.add_face();
-  mesh.link(t, h2);
-  mesh.link(h2, t);
-  mesh.assign_loop(t, two_gon);
+  test::double_with_two_gon(mesh, mesh.halfedge(Face(0)));
   return mesh;
 }
 

@@ -54,7 +54,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadFile{"empty.obj", ""}, BadFile{"garbage.obj", "%%% not a mesh\n"},
                       BadFile{"nan.obj", "v nan 0 0\n" + kCube},
                       BadFile{"out_of_range.obj", kCube + "f 1 2 99\n"},
-                      BadFile{"boundary.obj", kCube.substr(0, kCube.rfind("f "))},
+                      BadFile{"bowtie.obj",  // two boundary loops touching at a vertex
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n"},
                       BadFile{"extra_face.obj", kCube + "f 1 2 4 3\n"},
                       BadFile{"truncated.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n"},
                       BadFile{"lying_header.ply",

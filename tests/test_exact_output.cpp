@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "cli_run.hpp"
+#include "gltf_validator.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/tess/bezier_json.hpp"
@@ -230,20 +231,7 @@ TEST(CliExact, SmoothWritesStlThatInfoReadsBack) {
   EXPECT_EQ(topology_stats(read_mesh(folder.file("t.stl"))).genus, 1);
 }
 
-/// Runs the Khronos validator on the files; empty when node is missing.
-std::string validate_gltf(const std::vector<std::string>& files, int* status) {
-  if (std::system("node --version > /dev/null 2>&1") != 0) return "";
-  const std::string folder = std::string(STITCH_GLTF_VALIDATOR_DIR);
-  const std::string install = "bash '" + std::string(STITCH_SOURCE_DIR) +
-                              "/scripts/install-gltf-validator.sh' '" + folder + "'";
-  EXPECT_EQ(std::system(install.c_str()), 0) << "npm install gltf-validator failed";
-  std::string command =
-      "node '" + std::string(STITCH_SOURCE_DIR) + "/tests/gltf/validate.js' '" + folder + "'";
-  for (const auto& f : files) command += " '" + f + "'";
-  const std::string out = files.front() + ".report";
-  *status = std::system((command + " > '" + out + "' 2>&1").c_str());
-  return testing::read_file(out);
-}
+using test::validate_gltf;
 
 TEST(CliExact, GltfPassesTheKhronosValidator) {
   TempFolder folder;

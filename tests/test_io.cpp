@@ -137,11 +137,19 @@ TEST(ReadObj, AcceptsWhatRealFilesContain) {
   EXPECT_EQ(soup.vertex_lines, (std::vector<int>{4, 5, 6, 7, 8, 9, 10, 11}));
   EXPECT_EQ(soup.face_lines, (std::vector<int>{21, 22, 23, 24, 25, 27}));
   EXPECT_EQ(soup.source, path);
-  // One warning per kind of unsupported statement, none for the silently ignored ones.
+  // OpenSubdiv's tags are read (vertices counted from 0); tests/test_tags_io.cpp has the rest.
+  ASSERT_EQ(soup.corners.size(), 1u);
+  EXPECT_EQ(soup.corners[0].vertex, 0);
+  EXPECT_EQ(soup.corners[0].line, 28);
+  ASSERT_EQ(soup.creases.size(), 1u);
+  EXPECT_EQ(soup.creases[0].b, 1);
+  EXPECT_EQ(soup.creases[0].sharpness, 10.0);
+  // One warning per kind of unsupported statement, none for the silently ignored ones, and one
+  // saying that the texture coordinates, which only some faces have, are not used.
   ASSERT_EQ(warnings.size(), 2u);
-  EXPECT_NE(warnings[0].find("'t'"), std::string::npos);
-  EXPECT_NE(warnings[0].find("line 28"), std::string::npos);
-  EXPECT_NE(warnings[1].find("'unknown_statement'"), std::string::npos);
+  EXPECT_NE(warnings[0].find("'unknown_statement'"), std::string::npos);
+  EXPECT_NE(warnings[1].find("texture coordinates are not used"), std::string::npos);
+  EXPECT_TRUE(soup.uvs.empty());
   EXPECT_NO_THROW((void)stitch::build_mesh(soup));
 }
 
@@ -324,7 +332,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "line 14) has 2 vertices"},
         Malformed{"flipped.obj", kCubeVertices + "f 2 4 3 1\n" + kCubeFaces.substr(10),
                   "inconsistent orientation"},
-        Malformed{"boundary.obj", kCubeVertices + kCubeFaces.substr(10), "has a boundary"},
+        Malformed{"bowtie.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
+                  "line 1) is non-manifold: 2 boundary loops touch there"},
         Malformed{"truncated.off", kTetraOff.substr(0, 32),
                   "line 5: the file ends after 3 of the 4 vertices declared"},
         Malformed{"no_faces.off", kTetraOff, "line 6: the file ends after 0 of the 4 faces"},

@@ -1,6 +1,7 @@
 // Shared helpers of the test suite: where the test meshes are, and small meshes built in code.
 #pragma once
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -55,6 +56,36 @@ inline HalfedgeMesh tetrahedron_mesh() {
   s.positions = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
   s.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
   return build_mesh(s);
+}
+
+/// Doubles edge(h) with a 2-sided face, as the topology operators make them: h stays in its
+/// face and lends its twin t to the 2-gon; a new edge gives t's old face a half-edge in t's place
+/// and the 2-gon its other half-edge. Returns the 2-gon.
+inline Face double_with_two_gon(HalfedgeMesh& mesh, Halfedge h) {
+  const Halfedge t = HalfedgeMesh::twin(h);
+  const Face other = mesh.face(t);
+  const Halfedge before = mesh.prev(t), after = mesh.next(t);
+  const Halfedge h2 = mesh.add_edge(mesh.origin(h), mesh.target(h));
+  const Halfedge t2 = HalfedgeMesh::twin(h2);
+  mesh.link(before, t2);
+  mesh.link(t2, after);
+  mesh.set_face(t2, other);
+  mesh.set_halfedge(other, t2);
+  const Face two_gon = mesh.add_face();
+  mesh.link(t, h2);
+  mesh.link(h2, t);
+  mesh.assign_loop(t, two_gon);
+  return two_gon;
+}
+
+/// The diagonal of the bounding box of the live vertices: the model size tolerances scale with.
+inline double mesh_size(const HalfedgeMesh& mesh) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (Vertex v : mesh.vertices()) {
+    lo = lo.cwiseMin(mesh.position(v));
+    hi = hi.cwiseMax(mesh.position(v));
+  }
+  return (hi - lo).norm();
 }
 
 }  // namespace stitch::test

@@ -401,6 +401,19 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
     op_button("Subdivide", "subdivide-edge " + e, edge);
     ImGui::SameLine();
     op_button("Collapse", "collapse-edge " + e, edge);
+    // Sharp features: an infinitely sharp crease (OpenSubdiv's 10) or none; a vertex corner.
+    const bool sharp_edge =
+        edge && m.sharpness(HalfedgeMesh::edge(Halfedge(s.selection->index))) > 0;
+    op_button(sharp_edge ? "Smooth edge" : "Crease edge",
+              fmt::format("crease {} {}", e, sharp_edge ? 0.0 : infinitely_sharp), edge);
+    const bool vertex = s.selection && s.selection->kind == PickKind::vertex;
+    const bool corner_vertex = vertex && m.sharpness(Vertex(s.selection->index)) > 0;
+    ImGui::SameLine();
+    op_button(corner_vertex ? "Smooth vertex" : "Corner vertex",
+              vertex ? fmt::format("corner {} {}", s.selection->index + 1,
+                                   corner_vertex ? 0.0 : infinitely_sharp)
+                     : "",
+              vertex);
     const bool face = s.selection && s.selection->kind == PickKind::face;
     const std::string f = face ? std::to_string(s.selection->index + 1) : "";
     ImGui::SetNextItemWidth(80);
@@ -409,6 +422,9 @@ void panel_tools(App& app, const ScriptHooks& hooks) {
     op_button("Extrude face", fmt::format("extrude-face {} {}", f, app.extrude_distance), face);
     ImGui::SameLine();
     op_button("Delete face", "delete-face " + f, face);
+    const bool hole = face && m.is_hole(Face(s.selection->index));
+    ImGui::SameLine();
+    op_button(hole ? "Fill hole" : "Open face", (hole ? "fill-hole " : "open-face ") + f, face);
     const bool two_faces = face && app.previous_pick && app.previous_pick->kind == PickKind::face;
     ImGui::SetNextItemWidth(80);
     ImGui::InputInt("twist", &app.connect_twist);

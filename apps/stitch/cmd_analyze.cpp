@@ -34,6 +34,16 @@ nlohmann::json to_json(const ContinuityReport& r) {
                    {"g1_normal_spread_at_extraordinary_points_deg", r.ev_normal_spread_deg}};
   for (const auto& [d, jump] : r.jump_by_distance)
     j["max_jump_by_distance"].push_back({{"distance", d}, {"max_deg", jump}});
+  if (r.has_sharp_features) {
+    const FeatureReport& f = r.features;
+    j["sharp_features"] = {{"boundary_sides", f.boundary_sides},
+                           {"crease_sides", f.crease_sides},
+                           {"crease_max_position_gap_relative", f.crease_gap},
+                           {"sector_vertices", f.sector_vertices},
+                           {"sectors_compared", f.sectors_compared},
+                           {"cone_points", f.cone_points},
+                           {"g1_normal_spread_in_sectors_deg", f.sector_normal_spread_deg}};
+  }
   return j;
 }
 
@@ -80,6 +90,15 @@ void run_analyze(const AnalyzeArgs& a) {
     fmt::print("{:<6} {:>11.3e} / {:<10.3e} {:>11.3e} / {:<10.3e} {:>13.3e} {:>18.3e}\n",
                to_string(m), r.touching_ev.max_deg, r.touching_ev.mean_deg, r.away_from_ev.max_deg,
                r.away_from_ev.mean_deg, r.max_gap, r.ev_normal_spread_deg);
+    if (r.has_sharp_features) {
+      // The sides above are the smooth ones; across these the surface is C0 by design.
+      const FeatureReport& f = r.features;
+      fmt::print(
+          "{:<6} sharp: {} boundary, {} crease sides; crease gap (rel.) {:.3e}; G1 in {} "
+          "sectors of 2+ patches at {} vertices: spread {:.3e}; {} cone points\n",
+          "", f.boundary_sides, f.crease_sides, f.crease_gap, f.sectors_compared, f.sector_vertices,
+          f.sector_normal_spread_deg, f.cone_points);
+    }
   }
   if (a.json) fmt::print("{}\n", out.dump(2));
 }
@@ -91,7 +110,8 @@ void add_analyze_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "analyze",
       "Measure continuity: the largest and mean normal jump across patch boundaries, near "
-      "extraordinary points and elsewhere, and the tangent plane at extraordinary points");
+      "extraordinary points and elsewhere, and the tangent plane at extraordinary points; on "
+      "meshes with boundaries or creases also the crease gap and G1 within each sector");
   add_input_options(cmd, args->in);
   add_method_option(cmd, args->method, true);
   cmd->add_flag("--json", args->json,

@@ -57,6 +57,9 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   BuildReport report;
   HalfedgeMesh mesh = read_mesh(a.in, build, &report, &warnings);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  // Texture coordinates live beside the mesh, not in it, and the operators do not carry them.
+  if (!report.corner_uvs.empty())
+    warnings.push_back("its texture coordinates are not kept by edits and not written");
   for (const std::string& w : warnings) fmt::print(stderr, "stitch: warning: {}: {}\n", a.in, w);
 
   std::vector<std::string> lines;
@@ -75,6 +78,12 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
     lines.push_back(r.summary(text));
   }
   validate(mesh);
+  const TopologyStats stats = topology_stats(mesh);
+  if (file_extension(a.out) != ".obj" && stats.crease_edges + stats.corner_vertices > 0)
+    fmt::print(stderr,
+               "stitch: warning: {}: crease and corner tags are only written to .obj files; "
+               "this file will not have them\n",
+               a.out);
   write_mesh(a.out, mesh);
   if (!a.quiet)
     for (const std::string& line : lines) fmt::print("{}\n", line);
@@ -88,7 +97,8 @@ void add_edit_command(CLI::App& app) {
       "edit",
       "apply topology operations (insert-edge V@F V@F, delete-edge V W[@F], subdivide-edge V W, "
       "collapse-edge V W, extrude-face F DIST [SCALE], connect-faces F G [TWIST], delete-face F, "
-      "doo-sabin, vertex-insertion, catmull-clark, dual); vertices and faces are numbered from 1 "
+      "open-face F, fill-hole F, crease V W SHARPNESS, corner V SHARPNESS, doo-sabin, "
+      "vertex-insertion, catmull-clark, dual); vertices and faces are numbered from 1 "
       "in file order; see docs/editing.md");
   cmd->add_option("IN", args->in, "input mesh (.obj, .off, .ply)")->required();
   cmd->add_option("-o,--output", args->out, "output mesh, compacted (renumbered without gaps)")

@@ -41,8 +41,18 @@ void run_info(const InfoArgs& a) {
   std::vector<int> ev_vertices, ev_faces;
   for (Vertex v : mesh.vertices())
     if (mesh.valence(v) != 4) ev_vertices.push_back(v.idx + 1);
-  for (Face f : mesh.faces())
+  // Holes make no patches, so they are no extraordinary points.
+  for (Face f : mesh.surface_faces())
     if (mesh.degree(f) != 4) ev_faces.push_back(f.idx + 1);
+  // Semi-sharp tags are counted apart: only --method cc honours them (build_mesh warns).
+  int sharp_edges = 0, semi_sharp_edges = 0, sharp_corners = 0, semi_sharp_corners = 0;
+  for (Edge e : mesh.edges())
+    if (!mesh.is_boundary(e) && mesh.sharpness(e) > 0)
+      ++(mesh.sharpness(e) >= infinitely_sharp ? sharp_edges : semi_sharp_edges);
+  for (Vertex v : mesh.vertices())
+    if (mesh.sharpness(v) > 0)
+      ++(mesh.sharpness(v) >= infinitely_sharp ? sharp_corners : semi_sharp_corners);
+  const size_t patches = mesh.patch_corners().size();
 
   std::optional<PatchSet> set;
   if (a.patches)
@@ -55,10 +65,14 @@ void run_info(const InfoArgs& a) {
     j["vertices"] = t.vertices;
     j["edges"] = t.edges;
     j["faces"] = t.faces;
+    j["boundary_loops"] = t.boundary_loops;
+    j["crease_edges"] = {{"infinitely_sharp", sharp_edges}, {"semi_sharp", semi_sharp_edges}};
+    j["corner_vertices"] = {{"infinitely_sharp", sharp_corners},
+                            {"semi_sharp", semi_sharp_corners}};
     j["components"] = t.components;
     j["euler_characteristic"] = t.euler;
     j["genus"] = t.genus;
-    j["patches"] = mesh.num_halfedges();
+    j["patches"] = patches;
     for (const auto& [k, n] : t.valence_histogram) j["valence_histogram"][std::to_string(k)] = n;
     for (const auto& [k, n] : t.degree_histogram) j["degree_histogram"][std::to_string(k)] = n;
     j["extraordinary_vertices"] = ev_vertices;
@@ -81,7 +95,13 @@ void run_info(const InfoArgs& a) {
   fmt::print("  vertices {}, edges {}, faces {}\n", t.vertices, t.edges, t.faces);
   fmt::print("  components {}, Euler characteristic {}, genus {}\n", t.components, t.euler,
              t.genus);
-  fmt::print("  bicubic patches (one per corner) {}\n", mesh.num_halfedges());
+  fmt::print("  boundary loops {}\n", t.boundary_loops);
+  fmt::print(
+      "  crease edges {} ({} infinitely sharp, {} semi-sharp), corner vertices {} ({} "
+      "infinitely sharp, {} semi-sharp)\n",
+      sharp_edges + semi_sharp_edges, sharp_edges, semi_sharp_edges,
+      sharp_corners + semi_sharp_corners, sharp_corners, semi_sharp_corners);
+  fmt::print("  bicubic patches (one per corner, holes excepted) {}\n", patches);
   fmt::print("  valence histogram  {}\n", histogram(t.valence_histogram));
   fmt::print("  face degree histogram  {}\n", histogram(t.degree_histogram));
   fmt::print("  extraordinary points: {} vertices (valence != 4), {} faces (degree != 4)\n",

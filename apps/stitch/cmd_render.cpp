@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/render/gl_context.hpp"
@@ -31,6 +32,8 @@ struct RenderArgs {
   double zoom = 0.6;
   int resolution = 8;
   int stripes = 24;
+  int checks = 8;
+  std::string uv;  ///< with --mode checker: smooth (when empty) or linear
   std::string draw = "smooth";
   ProgressFlags progress;
   KgonCliOptions kgon;
@@ -45,6 +48,10 @@ void run_render(const RenderArgs& a) {
   RenderStyle style;
   style.mode = parse_shading_mode(a.mode);
   style.stripes = a.stripes;
+  style.checks = a.checks;
+  const bool checker = style.mode == ShadingMode::checker;
+  if (!a.uv.empty() && !checker) throw std::invalid_argument("--uv needs --mode checker");
+  const UvMode uv_mode = parse_uv_mode(a.uv.empty() ? "smooth" : a.uv);
   parse_overlays(a.show, style);
   style.draw_surface = a.draw != "none";
   const int camera_choices =
@@ -65,12 +72,25 @@ void run_render(const RenderArgs& a) {
 
   StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
-  const HalfedgeMesh mesh = load_input(a.in);
+  BuildReport report;
+  const HalfedgeMesh mesh = load_input(a.in, &report);
   stage.end();
+  if (checker && report.corner_uvs.empty()) {
+    throw std::invalid_argument(
+        fmt::format("--mode checker needs texture coordinates: {} has none", a.in.path));
+  }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
   const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
-  const SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
+  SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
   stage.end();
+  if (checker) {
+    stage.begin("evaluating the texture coordinates");
+    const UvSurface uvs(mesh, report.corner_uvs, uv_mode, to_kgon_options(a.kgon));
+    add_texcoords(scene, mesh, report.corner_uvs, uvs);
+    stage.end();
+    for (const std::string& w : uvs.warnings())
+      fmt::print(stderr, "stitch: warning: {}: {}\n", a.in.path, w);
+  }
 
   const double aspect = static_cast<double>(size.width) / size.height;
   Camera camera;
@@ -103,14 +123,16 @@ void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render",
       "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
-      "isophotes, levels, patches, with the mesh, K-gons, nets and extraordinary points");
+      "isophotes, levels, patches, a checker through the texture coordinates, with the mesh, "
+      "K-gons, nets and extraordinary points");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")->required();
   add_method_option(cmd, args->method);
   cmd->add_option("--mode", args->mode,
                   "shaded, zebra (reflection lines), isophote, levels (hierarchy level of the "
-                  "sub-patch) or patches")
-      ->check(CLI::IsMember({"shaded", "zebra", "isophote", "levels", "patches"}))
+                  "sub-patch), patches or checker (shaded, on a checkerboard through the input's "
+                  "texture coordinates)")
+      ->check(CLI::IsMember({"shaded", "zebra", "isophote", "levels", "patches", "checker"}))
       ->capture_default_str();
   cmd->add_option("--show", args->show,
                   "overlays, comma-separated: mesh (input wireframe), kgons, nets (4x4 control "
@@ -136,6 +158,14 @@ void add_render_command(CLI::App& app) {
                   "bands from 0 to 180 degrees")
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
+  cmd->add_option("--checks", args->checks,
+                  "with --mode checker: squares along each side of the texture's unit square")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  cmd->add_option("--uv", args->uv,
+                  "with --mode checker: smooth (default: the UV layout smoothed like the mesh, "
+                  "seams kept) or linear (bilinear per patch)")
+      ->check(CLI::IsMember({"smooth", "linear"}));
   cmd->add_option("--draw", args->draw,
                   "what is shaded: smooth (the surface), input (the input polygons, flat) or "
                   "none (overlays only)")

@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "exact_output.hpp"
 #include "options.hpp"
+#include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
@@ -23,6 +24,7 @@ struct SmoothArgs {
   bool unwelded = false;
   bool ascii = false;
   bool single_precision = false;
+  std::string uv;            ///< smooth, linear or none; empty: smooth when the input has UVs
   double max_memory_gb = 0;  ///< 0: the memory the machine has available
   ProgressFlags progress;
   KgonCliOptions kgon;
@@ -49,11 +51,47 @@ void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh) {
     throw MeshError(fmt::format(
         "smoothing {} ({} corners) at resolution {}{} needs about {:.2f} GB of memory, more than "
         "the {:.2f} GB {}; {}",
-        a.in.path, mesh.num_halfedges(), a.resolution, a.unwelded ? " unwelded" : "", need / 1e9,
-        limit / 1e9, a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
+        a.in.path, static_cast<int>(mesh.patch_corners().size()), a.resolution,
+        a.unwelded ? " unwelded" : "", need / 1e9, limit / 1e9,
+        a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
         a.unwelded || file_extension(a.out) == ".stl"
             ? "write a welded .ply (streamed) or lower --resolution"
             : "the mesh itself is too large for this machine"));
+}
+
+void warn(const std::string& path, const std::string& what) {
+  fmt::print(stderr, "stitch: warning: {}: {}\n", path, what);
+}
+
+/// The UVs to write, or null with a warning saying why the input's are not written.
+std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& mesh,
+                                      const BuildReport& report, StageReporter& stage) {
+  if (a.uv == "none") return nullptr;
+  if (report.corner_uvs.empty()) {
+    if (!a.uv.empty())
+      warn(a.in.path, fmt::format("--uv {}: the input has no texture coordinates", a.uv));
+    return nullptr;
+  }
+  const char* lost = nullptr;
+  if (is_exact_output(a.out))
+    lost = "the exact outputs have no place for texture coordinates";
+  else if (!a.unwelded && !surface_file_takes_uvs(a.out))
+    lost =
+        "a welded .ply, .off or .stl has no place for UVs that differ across a seam (write .obj, "
+        ".glb or .gltf, or --unwelded .ply)";
+  else if (a.in.fill_holes && report.filled_holes > 0)
+    lost = "the faces --fill-holes added have none";
+  if (lost) {
+    warn(a.out, fmt::format("the input's texture coordinates are not written: {}", lost));
+    return nullptr;
+  }
+  stage.begin("building the UV surface");
+  auto uvs = std::make_unique<UvSurface>(mesh, report.corner_uvs,
+                                         parse_uv_mode(a.uv.empty() ? "smooth" : a.uv),
+                                         to_kgon_options(a.kgon));
+  stage.end();
+  for (const std::string& w : uvs->warnings()) warn(a.in.path, w);
+  return uvs;
 }
 
 void run_smooth(const SmoothArgs& a) {
@@ -70,12 +108,15 @@ void run_smooth(const SmoothArgs& a) {
 
   StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
-  const HalfedgeMesh mesh = load_input(a.in);
+  BuildReport report;
+  const HalfedgeMesh mesh = load_input(a.in, &report);
   stage.end();
   check_memory(a, mesh);
-  stage.begin(fmt::format("building the {} surface ({} patches)", a.method, mesh.num_halfedges()));
+  stage.begin(fmt::format("building the {} surface ({} patches)", a.method,
+                          static_cast<int>(mesh.patch_corners().size())));
   const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
   stage.end();
+  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, report, stage);
   if (const std::string exact = write_exact_outputs(a.out, mesh, surface, a.exact, stage);
       !exact.empty()) {
     fmt::print("wrote {} ({}, method {})\n", a.out, exact, a.method);
@@ -87,8 +128,9 @@ void run_smooth(const SmoothArgs& a) {
     const SurfaceMesh samples = tessellate(mesh, surface, {a.resolution, false});
     stage.end();
     stage.begin("writing " + a.out);
-    write_surface_samples_ply(a.out, samples);
-    written = {samples.num_vertices(), static_cast<std::int64_t>(samples.quads.size())};
+    write_surface_samples_ply(a.out, samples, uvs.get());
+    written = {samples.num_vertices(), static_cast<std::int64_t>(samples.quads.size()),
+               uvs ? samples.num_vertices() : 0};
   } else {
     // Evaluated block by block as it is written: the tessellation is never held whole.
     stage.begin(fmt::format("tessellating at resolution {} and writing {}", a.resolution, a.out));
@@ -96,12 +138,16 @@ void run_smooth(const SmoothArgs& a) {
     file.ascii_ply = a.ascii;
     file.single_precision = a.single_precision;
     file.progress = [&stage](double done) { stage.fraction(done); };
+    file.uvs = uvs.get();
     written = write_smooth_surface(a.out, mesh, surface, a.resolution, file);
   }
   stage.end();
-  fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {})\n", a.out,
-             written.vertices, written.quads, mesh.num_halfedges(),
-             a.method == "cc" ? "sub-patches" : "bicubic patches", a.method, a.resolution);
+  fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {}{})\n", a.out,
+             written.vertices, written.quads, static_cast<int>(mesh.patch_corners().size()),
+             a.method == "cc" ? "sub-patches" : "bicubic patches", a.method, a.resolution,
+             written.texcoords > 0 ? fmt::format(", {} texture coordinates ({} UVs)",
+                                                 written.texcoords, to_string(uvs->mode()))
+                                   : std::string());
 }
 
 }  // namespace
@@ -123,6 +169,11 @@ void add_smooth_command(CLI::App& app) {
   cmd->add_flag("--unwelded", args->unwelded,
                 "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
                 "int patch, to check continuity from the file alone");
+  cmd->add_option("--uv", args->uv,
+                  "the input's texture coordinates on the surface: smooth (the default when the "
+                  "input has them: the UV layout smoothed like the mesh, seams kept), linear "
+                  "(bilinear per patch) or none. Written to .obj, .glb/.gltf and --unwelded .ply")
+      ->check(CLI::IsMember({"smooth", "linear", "none"}));
   cmd->add_flag("--ascii", args->ascii, "write .ply as text instead of binary");
   cmd->add_flag("--float", args->single_precision,
                 "write .ply positions and normals as 32-bit floats (half the size; the default "

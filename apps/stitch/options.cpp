@@ -13,29 +13,32 @@
 namespace stitch::cli {
 
 void add_input_options(CLI::App* cmd, InputOptions& in) {
-  cmd->add_option("IN", in.path, "input mesh (.obj, .off, .ply): closed, orientable, manifold")
+  cmd->add_option("IN", in.path,
+                  "input mesh (.obj, .off, .ply, .stl, .gltf, .glb): orientable and manifold, "
+                  "closed or with boundaries")
       ->required();
   cmd->add_flag("--fill-holes", in.fill_holes,
-                "close every boundary loop with one face instead of refusing the mesh");
+                "close every boundary loop with one face instead of keeping it as a boundary");
 }
 
-HalfedgeMesh load_input(const InputOptions& in) {
+HalfedgeMesh load_input(const InputOptions& in, BuildReport* report_out) {
   BuildOptions opt;
   opt.fill_holes = in.fill_holes;
   // The topology operators make 2-sided faces, and edited meshes must read back; they are
   // smoothed with a warning (see docs/method.md).
   opt.allow_two_gons = true;
-  BuildReport report;
+  BuildReport local;
+  BuildReport& report = report_out ? *report_out : local;
   std::vector<std::string> warnings;
   HalfedgeMesh mesh = read_mesh(in.path, opt, &report, &warnings);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
   for (Vertex v : mesh.vertices())
-    if (mesh.valence(v) == 2)
+    if (mesh.valence(v) == 2 && vertex_kind(mesh, v, KgonOptions{}) == VertexKind::smooth)
       warnings.push_back(fmt::format(
           "vertex {} has valence 2: its K-gon is a 2-gon with no plane; the surface there is "
           "finite but its normal is taken from the faces around it",
           v.idx + 1));
-  for (Face f : mesh.faces())
+  for (Face f : mesh.surface_faces())
     if (mesh.degree(f) == 2)
       warnings.push_back(fmt::format(
           "face {} has 2 sides: its K-gon has no plane; the normal there comes from the faces "
@@ -79,6 +82,18 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
                   "section 2 of the method as it stands for every face")
       ->check(CLI::IsMember({"openings", "doo-sabin"}))
       ->capture_default_str();
+  cmd->add_option("--boundary", k.boundary,
+                  "edge-and-corner: boundary vertices with one face are corners the surface "
+                  "passes through (OpenSubdiv's default); edge-only: they lie on the smooth "
+                  "boundary curve")
+      ->check(CLI::IsMember({"edge-and-corner", "edge-only"}))
+      ->capture_default_str();
+  cmd->add_option("--sharp-from", k.sharp_from,
+                  "crease and corner tags of at least this sharpness are infinitely sharp for mdc "
+                  "and asc, smaller ones smooth (the K-gon construction has no levels to round a "
+                  "crease over); cc honours every value")
+      ->check(finite_range(0, 10))
+      ->capture_default_str();
 }
 
 KgonOptions to_kgon_options(const KgonCliOptions& k) {
@@ -88,6 +103,9 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
   o.global.regularize = k.regularize;
   o.construction =
       k.construction == "doo-sabin" ? KgonConstruction::doo_sabin : KgonConstruction::openings;
+  o.sharp_from = k.sharp_from;
+  o.boundary = k.boundary == "edge-only" ? BoundaryInterpolation::edge_only
+                                         : BoundaryInterpolation::edge_and_corner;
   return o;
 }
 

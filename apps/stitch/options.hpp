@@ -8,6 +8,7 @@
 
 #include "stitch/eval/surface.hpp"
 #include "stitch/kgon/kgon.hpp"
+#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch::cli {
@@ -19,16 +20,20 @@ struct InputOptions {
 /// Adds the positional IN and --fill-holes.
 void add_input_options(CLI::App* cmd, InputOptions& in);
 /// Reads and checks the mesh, printing warnings (dropped vertices, filled holes, 2-gons,
-/// valence-2 vertices) to stderr. Throws MeshError on bad input.
-HalfedgeMesh load_input(const InputOptions& in);
+/// valence-2 vertices) to stderr. Throws MeshError on bad input. `report` (optional) receives
+/// the build report, e.g. the texture coordinates of the corners.
+HalfedgeMesh load_input(const InputOptions& in, BuildReport* report = nullptr);
 
 struct KgonCliOptions {
   double scale = 1.0;
   double rotate_deg = 0.0;
   bool regularize = false;
   std::string construction = "openings";
+  std::string boundary = "edge-and-corner";
+  double sharp_from = KgonOptions{}.sharp_from;
 };
-/// Adds --kgon-scale, --kgon-rotate, --regularize and --kgon-construction.
+/// Adds --kgon-scale, --kgon-rotate, --regularize, --kgon-construction, --boundary and
+/// --sharp-from.
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
 

@@ -71,6 +71,17 @@ run render $C -o $F/kgon_rotate_45.png --size 400x400 --mode isophote --show kgo
 # 8. stitch compare on the cube (zebra of asc, mdc, cc; jump plot; index.html).
 run compare $C -o $F/compare_cube --size 320x320
 
+# 10. Boundaries, creases and corners: OpenSubdiv's pawn and car (open, with sharpness 6
+#     creases) by stitch and by Catmull-Clark, a cube with a creased edge loop, an open box.
+S=tests/data/opensubdiv-shapes
+for m in mdc cc; do
+  run render $S/catmark_pawn.obj -o $F/pawn_$m.png --size 300x400 --eye 1.75,-2.5,0.75 --target 1.75,-1.27,0.27 --method $m
+  run render $S/catmark_car.obj -o $F/car_$m.png --size 300x500 --eye 6.5,-0.9,4.0 --target 0.62,-1.88,0.3 --method $m
+done
+run render examples/cube_creased.obj -o $F/cube_creased.png --size 400x400 --eye 3,-4,4 --show mesh
+run render examples/cube_creased.obj -o $F/cube_creased_zebra.png --size 400x400 --eye 3,-4,4 --mode zebra --resolution 16
+run render examples/open_box.obj -o $F/open_box.png --size 400x400 --eye 3,-4,5 --show mesh
+
 if ((${#failed[@]})); then
   echo "make_figures.sh: these commands failed:" >&2
   printf '  %s\n' "${failed[@]}" >&2

@@ -25,7 +25,7 @@ BezierSurface build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& 
   BezierSurface s;
   s.kgons = build_kgons(mesh, options);
   s.nets = build_control_nets(mesh, s.kgons);
-  s.corners = mesh.halfedges();
+  s.corners = mesh.patch_corners();
   return s;
 }
 

@@ -16,6 +16,7 @@
 #include <mutex>
 #include <shared_mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/opensubdiv_topology.hpp"
@@ -28,25 +29,39 @@ namespace Osd = OpenSubdiv;
 
 // Messages number vertices, edges and faces from 1, as the command line and files do.
 //
-// The live elements of a half-edge mesh numbered densely, as OpenSubdiv wants them. Face f's
-// vertices are given in the order of face_loop(f), so corner c is face vertex index_in_face(c).
+// The live elements of a half-edge mesh's surface (outside holes) numbered densely, as
+// OpenSubdiv wants them. Face f's vertices are given in the order of face_loop(f), so corner c is
+// face vertex index_in_face(c). Hole faces are left out, so their edges have one face: that is
+// how OpenSubdiv represents a boundary. (Its hole tag would not do: it only stops a face being
+// drawn, and the surface around it stays the one of the mesh with the face.) Edges between two
+// holes and vertices with only holes around them are not part of the surface.
 struct OsdTopology {
   const HalfedgeMesh* mesh = nullptr;
   std::vector<Vertex> vertices;
+  std::vector<SurfaceRing> rings;  // per dense vertex
   std::vector<Edge> edges;
   std::vector<Face> faces;
-  std::vector<int> vertex_id, edge_id, face_id;  // mesh index -> dense index (-1 if deleted)
+  std::vector<int> vertex_id, edge_id, face_id;  // mesh index -> dense index (-1: not on surface)
   mutable std::vector<std::string> problems;     // filled by OpenSubdiv's topology validation
 
   explicit OsdTopology(const HalfedgeMesh& m) : mesh(&m) {
-    vertices = m.vertices();
-    edges = m.edges();
-    faces = m.faces();
     vertex_id.assign(static_cast<size_t>(m.vertex_capacity()), -1);
     edge_id.assign(static_cast<size_t>(m.edge_capacity()), -1);
     face_id.assign(static_cast<size_t>(m.face_capacity()), -1);
-    for (size_t i = 0; i < vertices.size(); ++i) vertex_id[vertices[i].idx] = static_cast<int>(i);
-    for (size_t i = 0; i < edges.size(); ++i) edge_id[edges[i].idx] = static_cast<int>(i);
+    for (Vertex v : m.vertices()) {
+      SurfaceRing ring = surface_ring(m, v);
+      if (ring.faces.empty()) continue;
+      vertex_id[v.idx] = static_cast<int>(vertices.size());
+      vertices.push_back(v);
+      rings.push_back(std::move(ring));
+    }
+    for (Edge e : m.edges()) {
+      if (m.is_hole(HalfedgeMesh::halfedge(e, 0)) && m.is_hole(HalfedgeMesh::halfedge(e, 1)))
+        continue;
+      edge_id[e.idx] = static_cast<int>(edges.size());
+      edges.push_back(e);
+    }
+    faces = m.surface_faces();
     for (size_t i = 0; i < faces.size(); ++i) face_id[faces[i].idx] = static_cast<int>(i);
   }
   [[nodiscard]] int id(Vertex v) const { return vertex_id[v.idx]; }
@@ -72,18 +87,21 @@ bool TopologyRefinerFactory<OsdTopology>::resizeComponentTopology(TopologyRefine
   const stitch::HalfedgeMesh& mesh = *topo.mesh;
   setNumBaseVertices(refiner, static_cast<int>(topo.vertices.size()));
   for (size_t i = 0; i < topo.vertices.size(); ++i) {
-    // Closed mesh: as many incident edges as incident faces.
-    const int valence = mesh.valence(topo.vertices[i]);
-    setNumBaseVertexFaces(refiner, static_cast<Index>(i), valence);
-    setNumBaseVertexEdges(refiner, static_cast<Index>(i), valence);
+    setNumBaseVertexFaces(refiner, static_cast<Index>(i),
+                          static_cast<int>(topo.rings[i].faces.size()));
+    setNumBaseVertexEdges(refiner, static_cast<Index>(i),
+                          static_cast<int>(topo.rings[i].edges.size()));
   }
   setNumBaseFaces(refiner, static_cast<int>(topo.faces.size()));
   for (size_t i = 0; i < topo.faces.size(); ++i) {
     setNumBaseFaceVertices(refiner, static_cast<Index>(i), mesh.degree(topo.faces[i]));
   }
   setNumBaseEdges(refiner, static_cast<int>(topo.edges.size()));
-  for (size_t i = 0; i < topo.edges.size(); ++i)
-    setNumBaseEdgeFaces(refiner, static_cast<Index>(i), 2);
+  for (size_t i = 0; i < topo.edges.size(); ++i) {
+    const stitch::Edge e = topo.edges[i];
+    const bool boundary = mesh.is_boundary(e);
+    setNumBaseEdgeFaces(refiner, static_cast<Index>(i), boundary ? 1 : 2);
+  }
   return true;
 }
 
@@ -105,30 +123,57 @@ bool TopologyRefinerFactory<OsdTopology>::assignComponentTopology(TopologyRefine
     IndexArray edge_vertices = getBaseEdgeVertices(refiner, static_cast<Index>(i));
     IndexArray edge_faces = getBaseEdgeFaces(refiner, static_cast<Index>(i));
     LocalIndexArray edge_in_face = getBaseEdgeFaceLocalIndices(refiner, static_cast<Index>(i));
+    int num_faces = 0;
     for (int side = 0; side < 2; ++side) {
       const stitch::Halfedge h = HalfedgeMesh::halfedge(topo.edges[i], side);
       edge_vertices[side] = topo.id(mesh.origin(h));
-      edge_faces[side] = topo.id(mesh.face(h));
-      edge_in_face[side] = static_cast<LocalIndex>(mesh.index_in_face(h));
+      if (mesh.is_hole(h)) continue;
+      edge_faces[num_faces] = topo.id(mesh.face(h));
+      edge_in_face[num_faces++] = static_cast<LocalIndex>(mesh.index_in_face(h));
     }
   }
-  // OpenSubdiv orders the faces around a vertex counter-clockwise with edge i leading out of
-  // face i (the edge from the vertex to the next vertex of the face) and face i+1 across the
-  // trailing edge of face i: that is vertex_fan's order, corner i+1 = rotate_ccw(corner i).
+  // surface_ring gives OpenSubdiv's order around a vertex: counter-clockwise, edge k leading out
+  // of face k, face k+1 across the trailing edge of face k, and on the boundary the first edge
+  // and the last one the two boundary edges.
   for (size_t i = 0; i < topo.vertices.size(); ++i) {
     const auto v = static_cast<Index>(i);
     IndexArray vertex_faces = getBaseVertexFaces(refiner, v);
     IndexArray vertex_edges = getBaseVertexEdges(refiner, v);
     LocalIndexArray in_face = getBaseVertexFaceLocalIndices(refiner, v);
     LocalIndexArray in_edge = getBaseVertexEdgeLocalIndices(refiner, v);
-    const auto fan = mesh.vertex_fan(topo.vertices[i]);
-    for (size_t k = 0; k < fan.size(); ++k) {
+    const stitch::SurfaceRing& ring = topo.rings[i];
+    for (size_t k = 0; k < ring.faces.size(); ++k) {
       const auto kk = static_cast<int>(k);
-      vertex_faces[kk] = topo.id(mesh.face(fan[k]));
-      in_face[kk] = static_cast<LocalIndex>(mesh.index_in_face(fan[k]));
-      vertex_edges[kk] = topo.id(HalfedgeMesh::edge(fan[k]));
-      in_edge[kk] = static_cast<LocalIndex>(fan[k].idx & 1);  // side 1 of an edge starts at its v1
+      vertex_faces[kk] = topo.id(mesh.face(ring.faces[k]));
+      in_face[kk] = static_cast<LocalIndex>(mesh.index_in_face(ring.faces[k]));
     }
+    for (size_t k = 0; k < ring.edges.size(); ++k) {
+      const auto kk = static_cast<int>(k);
+      vertex_edges[kk] = topo.id(HalfedgeMesh::edge(ring.edges[k]));
+      // Side 1 of an edge starts at its v1.
+      in_edge[kk] = static_cast<LocalIndex>(ring.edges[k].idx & 1);
+    }
+  }
+  return true;
+}
+
+// Boundary edges (one face) and corners of the boundary are sharpened by OpenSubdiv itself,
+// from the topology and the boundary interpolation option; only the user's tags are given.
+template <>
+bool TopologyRefinerFactory<OsdTopology>::assignComponentTags(TopologyRefiner& refiner,
+                                                              const OsdTopology& topo) {
+  const stitch::HalfedgeMesh& mesh = *topo.mesh;
+  for (size_t i = 0; i < topo.edges.size(); ++i) {
+    const double s = mesh.sharpness(topo.edges[i]);
+    if (s > 0.0 && !mesh.is_boundary(topo.edges[i]))
+      setBaseEdgeSharpness(refiner, static_cast<Index>(i),
+                           static_cast<float>(std::min(s, stitch::infinitely_sharp)));
+  }
+  for (size_t i = 0; i < topo.vertices.size(); ++i) {
+    const double s = mesh.sharpness(topo.vertices[i]);
+    if (s > 0.0)
+      setBaseVertexSharpness(refiner, static_cast<Index>(i),
+                             static_cast<float>(std::min(s, stitch::infinitely_sharp)));
   }
   return true;
 }
@@ -162,9 +207,9 @@ constexpr std::array<std::array<double, 2>, 4> kQuadVertexCoord{
 // valgrind), or on which Bfr's surfaces come apart without an error (a face visiting a vertex
 // twice, several edges between two vertices: gaps of a fifth of a cube's size were measured).
 // One Catmull-Clark step removes all of these (see CatmullClarkSurface), so the first one found
-// is only the reason to take it.
+// is only the reason to take it. Only the surface counts: holes are not given to OpenSubdiv.
 std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
-  for (Face f : mesh.faces()) {
+  for (Face f : mesh.surface_faces()) {
     if (mesh.degree(f) == 2) return fmt::format("face {} has 2 sides", f.idx + 1);
     std::vector<Vertex> seen;
     for (Halfedge h : mesh.face_loop(f)) {
@@ -178,7 +223,7 @@ std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
   }
   for (Vertex v : mesh.vertices()) {
     std::vector<Vertex> seen;
-    for (Halfedge h : mesh.vertex_fan(v)) {
+    for (Halfedge h : surface_ring(mesh, v).edges) {
       if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end())
         return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
                            mesh.target(h).idx + 1);
@@ -201,13 +246,13 @@ struct CatmullClarkSurface::Impl {
   std::vector<Osd::Bfr::Surface<double>> surfaces;  // per dense face
   std::vector<double> patch_points;                 // xyz, all faces one after the other
   std::vector<size_t> patch_offset;                 // per dense face, into patch_points
-  std::vector<int> corner_face;                     // per half-edge: dense face, -1 if deleted
+  std::vector<int> corner_face;                     // per half-edge: dense face, -1 if none
   std::vector<int> corner_index;                    // per half-edge: index in its face's loop
 
   // When the mesh needed a Catmull-Clark step first: the refined mesh's surface, and per
   // half-edge of this mesh the four corners of its quad there (from its vertex point on).
   std::unique_ptr<CatmullClarkSurface> refined;
-  std::vector<std::array<Corner, 4>> quad_corners;  // invalid corners for deleted half-edges
+  std::vector<std::array<Corner, 4>> quad_corners;  // invalid for deleted half-edges and holes
 
   [[nodiscard]] bool live(Corner c) const {
     if (c.idx < 0) return false;
@@ -217,19 +262,32 @@ struct CatmullClarkSurface::Impl {
   }
 };
 
-CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh) : CatmullClarkSurface(mesh, 0) {}
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, BoundaryInterpolation boundary)
+    : CatmullClarkSurface(mesh, 0, boundary) {}
 
-CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken)
+CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken,
+                                         BoundaryInterpolation boundary)
     : impl_(std::make_unique<Impl>()) {
-  if (mesh.num_faces() == 0) throw MeshError("cc: the mesh has no faces");
+  if (mesh.surface_faces().empty()) throw MeshError("cc: the mesh has no faces outside holes");
+  // A vertex where boundary loops meet stays so under refinement: refused here, where the
+  // vertex still has the number the user knows.
+  for (Vertex v : mesh.vertices()) {
+    try {
+      (void)surface_ring(mesh, v);
+    } catch (const MeshError& e) {
+      throw MeshError(fmt::format(
+          "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}; use mdc or asc",
+          e.what()));
+    }
+  }
   if (!topology_needing_a_step(mesh).empty()) {
-    init_from_refinement(mesh, steps_taken);
+    init_from_refinement(mesh, steps_taken, boundary);
     return;
   }
 
   const OsdTopology topo(mesh);
   using RefinerFactory = Osd::Far::TopologyRefinerFactory<OsdTopology>;
-  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, catmark_options());
+  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, catmark_options(boundary));
   options.validateFullTopology = true;
   const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
   if (!refiner || !topo.problems.empty()) {
@@ -239,7 +297,7 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
         topo.problems.empty() ? "" : ": ", topo.problems.empty() ? "" : topo.problems.front()));
   }
   // OpenSubdiv accepts some topology only by tagging it non-manifold (then sharpened) or as a
-  // hole: the result would not be the Catmull-Clark limit surface of the whole mesh.
+  // hole: the result would not be the Catmull-Clark limit surface of the mesh's surface.
   const Osd::Far::TopologyLevel& level = refiner->GetLevel(0);
   for (int v = 0; v < level.GetNumVertices(); ++v) {
     if (level.IsVertexNonManifold(v)) {
@@ -259,12 +317,16 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   }
 
   // Bfr represents the surface exactly except in the smallest regions around extraordinary
-  // points, where it fits Gregory patches after a number of refinement levels (2 by default).
-  // Counting the steps already taken keeps those regions the same whatever the route, so the
-  // surface of a refined mesh is that of the mesh, not only close to it.
-  constexpr int kApproxLevel = 2;
+  // points, where it fits Gregory patches after a number of refinement levels (2 by default),
+  // and around irregular sharp features (6 levels by default; semi-sharp creases and corners
+  // of up to that sharpness are resolved exactly). Counting the steps already taken keeps those
+  // regions the same whatever the route, so the surface of a refined mesh is that of the mesh,
+  // not only close to it.
+  constexpr int kApproxLevelSmooth = 2;
+  constexpr int kApproxLevelSharp = 6;
   SurfaceFactory::Options factory_options;
-  factory_options.SetApproxLevelSmooth(std::max(0, kApproxLevel - steps_taken));
+  factory_options.SetApproxLevelSmooth(std::max(0, kApproxLevelSmooth - steps_taken));
+  factory_options.SetApproxLevelSharp(std::max(0, kApproxLevelSharp - steps_taken));
   const SurfaceFactory factory(*refiner, factory_options);
   const int num_faces = static_cast<int>(topo.faces.size());
   Impl& impl = *impl_;
@@ -311,16 +373,19 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
 // face, in OpenSubdiv's parameterization too). The refined mesh is all quads with one edge per
 // pair of vertices, except where a face ran along an edge twice: its two spokes to that edge's
 // point join the same two vertices, so there a second step follows (by recursion), after which
-// none of this topology is left.
-void CatmullClarkSurface::init_from_refinement(const HalfedgeMesh& mesh, int steps_taken) {
-  const CatmullClarkRefinement step = catmull_clark_refinement(mesh);
+// none of this topology is left. The step places creases, corners and the boundary with
+// OpenSubdiv's rules and hands the subdivided tags and the holes on, so the refined surface is
+// the one OpenSubdiv would give the mesh with its features.
+void CatmullClarkSurface::init_from_refinement(const HalfedgeMesh& mesh, int steps_taken,
+                                               BoundaryInterpolation boundary) {
+  const CatmullClarkRefinement step = catmark_refinement_with_features(mesh, boundary);
   Impl& impl = *impl_;
   impl.quad_corners.assign(static_cast<size_t>(mesh.halfedge_capacity()), {});
-  for (Corner c : mesh.halfedges()) {
+  for (Corner c : mesh.patch_corners()) {
     const auto loop = step.mesh.face_loop(step.corner_quad[c.idx]);
     std::copy(loop.begin(), loop.end(), impl.quad_corners[c.idx].begin());
   }
-  impl.refined = std::make_unique<CatmullClarkSurface>(step.mesh, steps_taken + 1);
+  impl.refined = std::make_unique<CatmullClarkSurface>(step.mesh, steps_taken + 1, boundary);
 }
 
 CatmullClarkSurface::~CatmullClarkSurface() = default;
@@ -330,8 +395,8 @@ CatmullClarkSurface& CatmullClarkSurface::operator=(CatmullClarkSurface&&) noexc
 SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   const Impl& impl = *impl_;
   if (!impl.live(c)) {
-    throw MeshError(
-        fmt::format("cc: half-edge {} (0-based) is not a live corner of the mesh", c.idx));
+    throw MeshError(fmt::format(
+        "cc: half-edge {} (0-based) is not a live corner of the mesh outside holes", c.idx));
   }
   if (impl.refined) return evaluate_refined_quad(impl.quad_corners[c.idx], u, v);
   const int f = impl.corner_face[c.idx];

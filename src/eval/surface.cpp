@@ -36,7 +36,8 @@ const HalfedgeMesh& with_normals(const HalfedgeMesh& mesh) {
 
 Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
     : method_(method), bezier_(build_bezier_surface(with_normals(mesh), kgon_options)) {
-  if (method == Method::cc) cc_ = std::make_shared<const CatmullClarkSurface>(mesh);
+  if (method == Method::cc)
+    cc_ = std::make_shared<const CatmullClarkSurface>(mesh, kgon_options.boundary);
 }
 
 SurfacePoint Surface::evaluate(Corner c, double u, double v) const {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "openings.hpp"
+#include "sharp.hpp"
 #include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
@@ -99,6 +100,7 @@ namespace {
 /// The per-element steps of build_kgons, shared with update_kgons so both give identical K-gons.
 /// `normal_of(f)` is face f's Newell normal.
 void set_corner_points(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f) {
+  if (m.is_hole(f)) return;
   if (options.construction == KgonConstruction::openings)
     if (const auto openings = detail::find_two_openings(m, f)) {
       detail::set_opening_corner_points(m, *openings, set.corner_point);
@@ -128,6 +130,10 @@ KgonControl control_for(const KgonOptions& options,
 template <class NormalOf>
 void build_face_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f,
                      NormalOf& normal_of) {
+  if (m.is_hole(f)) {
+    set.face[f.idx] = Kgon{};
+    return;
+  }
   auto loop = m.face_loop(f);
   for (size_t i = 0; i < loop.size(); ++i) set.in_face[loop[i].idx] = static_cast<int>(i);
   std::optional<Kgon> placed;
@@ -143,12 +149,32 @@ void build_face_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet&
 template <class NormalOf>
 void build_vertex_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Vertex v,
                        NormalOf& normal_of) {
+  const VertexKind kind = vertex_kind(m, v, options);
   auto fan = m.vertex_fan(v);
-  for (size_t i = 0; i < fan.size(); ++i) set.in_vertex[fan[i].idx] = static_cast<int>(i);
+  int sharp_spokes = 0;
+  for (Halfedge h : fan) sharp_spokes += is_sharp(m, HalfedgeMesh::edge(h), options);
+  if (kind == VertexKind::crease || (kind == VertexKind::corner && sharp_spokes >= 2)) {
+    // The K-gons of sectors are tied to the sharp curves through the vertex; the user's
+    // controls would tear them off, so they do not apply here.
+    detail::build_sector_kgons(m, options, kind, v, set);
+    return;
+  }
+  for (size_t i = 0; i < fan.size(); ++i) {
+    set.in_vertex[fan[i].idx] = static_cast<int>(i);
+    set.vertex_k[fan[i].idx] = static_cast<int>(fan.size());
+  }
   const Vec3 fallback = normal_around(m, fan, normal_of);
   Kgon g = make_kgon(set, std::move(fan), fallback);
   apply_control(g, control_for(options, options.vertex, v.idx, g.size()));
+  if (kind == VertexKind::corner) {
+    // A corner with fewer than two sharp edges has no sectors: the surface passes through the
+    // vertex with the whole fan's tangent plane.
+    const Vec3 shift = m.position(v) - g.centroid;
+    for (Vec3& p : g.points) p += shift;
+    g.centroid = m.position(v);
+  }
   set.vertex[v.idx] = std::move(g);
+  if (sharp_spokes > 0) detail::set_dart_curve(m, options, v, set);
 }
 
 template <class NormalOf>
@@ -162,6 +188,12 @@ void build_edge_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet&
   set.in_prev_edge[m.next(t).idx] = 1;
   set.in_next_edge[t.idx] = 2;
   set.in_prev_edge[m.next(h).idx] = 3;
+  const bool sharp = is_sharp(m, e, options);
+  if (!set.sharp_edge.empty()) set.sharp_edge[e.idx] = sharp ? 1 : 0;
+  if (sharp) {
+    set.edge[e.idx] = detail::sharp_edge_kgon(m, e, set);
+    return;
+  }
   Kgon g = make_kgon(set, corners, normal_around(m, {h}, normal_of));
   if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
   set.edge[e.idx] = std::move(g);
@@ -177,6 +209,12 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   set.in_vertex.assign(nh, -1);
   set.in_next_edge.assign(nh, -1);
   set.in_prev_edge.assign(nh, -1);
+  set.vertex_k.assign(nh, 4);
+  if (m.has_features()) {
+    set.sharp_curve.assign(nh, {Vec3::Zero(), Vec3::Zero()});
+    set.cone.assign(nh, 0);
+    set.sharp_edge.assign(m.edge_capacity(), 0);
+  }
   set.face.resize(m.face_capacity());
   set.vertex.resize(m.vertex_capacity());
   set.edge.resize(m.edge_capacity());
@@ -210,6 +248,12 @@ void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
     if (fresh) it->second = newell_normal(face_points(m, f));
     return it->second;
   };
+  // Sharp curves appear with the first tag an edit makes; arrays grow with the mesh.
+  const auto nh = static_cast<size_t>(m.halfedge_capacity());
+  if (set.sharp_curve.size() < nh) set.sharp_curve.resize(nh, {Vec3::Zero(), Vec3::Zero()});
+  if (set.vertex_k.size() < nh) set.vertex_k.resize(nh, 4);
+  if (set.cone.size() < nh) set.cone.resize(nh, 0);
+  if (set.sharp_edge.size() < nh / 2) set.sharp_edge.resize(nh / 2, 0);
   for (Face f : faces) set_corner_points(m, options, set, f);
   for (Face f : faces) build_face_kgon(m, options, set, f, normal_of);
   for (Vertex v : vertices) build_vertex_kgon(m, options, set, v, normal_of);

@@ -240,6 +240,102 @@ class PairingSearch {
 
 }  // namespace
 
+namespace {
+
+std::string where_tag(const PolygonSoup& soup, int line, const char* what) {
+  if (line > 0) return fmt::format("the {} tag on line {} of {}", what, line, soup.source);
+  return fmt::format("a {} tag", what);
+}
+
+/// Messages number vertices from 1, as everywhere in stitch, but a file's tags (OpenSubdiv's)
+/// count from 0: a tag from a file is also quoted with its own numbers, so it can be found.
+std::string tag_numbers(int line, int a, int b = -1) {
+  if (line <= 0) return "";
+  return fmt::format(" (numbered from 1; the tag counts from 0: {}{})", a,
+                     b < 0 ? "" : fmt::format(" {}", b));
+}
+
+/// One warning for each kind of element whose sharpness is finite but not zero: stitch's own
+/// methods have no rule for semi-sharp features and round them (KgonOptions::sharp_from), so the
+/// user should know where that happens.
+void warn_semi_sharp(const HalfedgeMesh& mesh, const std::vector<int>& vertex_source,
+                     std::vector<std::string>& warnings) {
+  constexpr size_t kNamed = 5;  // enough to find them in the file; the count says the rest
+  auto semi = [](double s) { return s > 0 && s < infinitely_sharp; };
+  std::vector<std::string> edges, vertices;
+  for (Edge e : mesh.edges())
+    if (!mesh.is_boundary(e) && semi(mesh.sharpness(e))) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+      edges.push_back(fmt::format("({}, {})", vertex_source[mesh.origin(h).idx] + 1,
+                                  vertex_source[mesh.target(h).idx] + 1));
+    }
+  for (Vertex v : mesh.vertices())
+    if (semi(mesh.sharpness(v))) vertices.push_back(std::to_string(vertex_source[v.idx] + 1));
+  auto listed = [&](const std::vector<std::string>& names) {
+    std::string s;
+    for (size_t k = 0; k < names.size() && k < kNamed; ++k) s += (k ? ", " : "") + names[k];
+    if (names.size() > kNamed) s += fmt::format(", ... ({} more)", names.size() - kNamed);
+    return s;
+  };
+  if (!edges.empty())
+    warnings.push_back(fmt::format(
+        "{} {} finite sharpness (semi-sharp): mdc and asc make those of sharpness >= "
+        "--sharp-from (default 4) infinitely sharp and the others smooth; --method cc honours "
+        "the values (vertices numbered from 1): {}",
+        edges.size(), edges.size() == 1 ? "edge has" : "edges have", listed(edges)));
+  if (!vertices.empty())
+    warnings.push_back(fmt::format(
+        "{} {} finite corner sharpness (semi-sharp): mdc and asc make those of sharpness >= "
+        "--sharp-from (default 4) corners and ignore the others; --method cc honours the values "
+        "(numbered from 1): {}",
+        vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", listed(vertices)));
+}
+
+/// Puts the soup's crease and corner tags on the mesh's edges and vertices. A crease names two
+/// vertices; every edge joining them takes it (a file cannot tell such edges apart).
+void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildReport& report,
+                HalfedgeMesh& mesh) {
+  const std::vector<int>& vertex_source = report.vertex_source;
+  auto check = [&](double s, int line, const char* what) {
+    if (!std::isfinite(s) || s < 0)
+      throw MeshError(fmt::format("{} has sharpness {}: it must be a finite number >= 0",
+                                  where_tag(soup, line, what), s));
+  };
+  const int nv = static_cast<int>(soup.positions.size());
+  auto vertex = [&](int i, int line, const char* what) {
+    if (i < 0 || i >= nv)
+      throw MeshError(fmt::format("{} names vertex {}{}, but there are {} vertices",
+                                  where_tag(soup, line, what), i + 1, tag_numbers(line, i), nv));
+    if (remap[i] < 0)
+      throw MeshError(fmt::format("{} names vertex {}{}, which no face uses",
+                                  where_tag(soup, line, what), i + 1, tag_numbers(line, i)));
+    return Vertex(remap[i]);
+  };
+  for (const SoupCorner& c : soup.corners) {
+    check(c.sharpness, c.line, "corner");
+    const Vertex v = vertex(c.vertex, c.line, "corner");
+    mesh.set_sharpness(v, std::max(mesh.sharpness(v), c.sharpness));
+  }
+  for (const SoupCrease& c : soup.creases) {
+    check(c.sharpness, c.line, "crease");
+    const Vertex a = vertex(c.a, c.line, "crease"), b = vertex(c.b, c.line, "crease");
+    bool found = false;
+    for (Halfedge h : mesh.vertex_fan(a))
+      if (mesh.target(h) == b) {
+        const Edge e = HalfedgeMesh::edge(h);
+        mesh.set_sharpness(e, std::max(mesh.sharpness(e), c.sharpness));
+        found = true;
+      }
+    if (!found)
+      throw MeshError(fmt::format("{} names edge ({}, {}){}, but no face has that edge",
+                                  where_tag(soup, c.line, "crease"), vertex_source[a.idx] + 1,
+                                  vertex_source[b.idx] + 1, tag_numbers(c.line, c.a, c.b)));
+  }
+  warn_semi_sharp(mesh, vertex_source, report.warnings);
+}
+
+}  // namespace
+
 HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, BuildReport* report) {
   check_soup(soup, options);
   BuildReport local;
@@ -280,7 +376,6 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
   // vertices the file cannot say which directed edge is the twin of which, so the pairings of
   // those groups are searched for one under which every vertex has a single fan.
   std::vector<Group> pairs;
-  std::string boundary_error;  // the first boundary edge, when holes are not to be filled
   for (auto& [key, g] : groups) {
     auto& [fwd, bwd] = g;
     Group grp{remap[key.first], remap[key.second], fwd, bwd, {}, {}};
@@ -288,14 +383,6 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     if (fwd.size() != bwd.size()) {
       if (total == 1) {
         const DirectedEdge d = fwd.empty() ? bwd[0] : fwd[0];
-        // Without fill_holes the boundary is refused, but only after the non-manifold checks
-        // below (which close the holes to look at every fan): a non-manifold mesh must be
-        // reported as such, not sent to --fill-holes first.
-        if (!options.fill_holes && boundary_error.empty())
-          boundary_error = fmt::format(
-              "the mesh has a boundary: edge ({}, {}) of {} has no face on its other side "
-              "(use --fill-holes to close every hole with one face)",
-              key.first + 1, key.second + 1, where_face(soup, d.face));
         grp.boundary.push_back(d);
         grp.fwd.clear();  // the unpaired edge lives in `boundary` only (perm stays empty)
         grp.bwd.clear();
@@ -356,13 +443,16 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
       for (const auto& [v, hs] : leaving)
         if (hs.size() > 1)
           throw MeshError(fmt::format(
-              "{} is non-manifold: {} holes meet there, so --fill-holes cannot close them",
+              "{} is non-manifold: {} boundary loops touch there (a surface may meet itself "
+              "only along edges)",
               where_vertex(soup, rep.vertex_source[v]), hs.size()));
       for (Halfedge h : boundary) out.link(h, leaving.at(out.target(h).idx)[0]);
       rep.filled_holes = 0;
       for (Halfedge h : boundary) {
         if (out.face(h).valid()) continue;
-        out.assign_loop(h, out.add_face());
+        const Face hole = out.add_face();
+        out.assign_loop(h, hole);
+        if (!options.fill_holes) out.set_hole(hole, true);
         ++rep.filled_holes;
       }
     }
@@ -394,10 +484,41 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
         "connected around it)",
         where_vertex(soup, rep.vertex_source[v.idx]), fan, outgoing));
   }
-  if (!boundary_error.empty()) throw MeshError(boundary_error);
-  if (rep.filled_holes > 0)
+  if (rep.filled_holes > 0 && options.fill_holes)
     rep.warnings.push_back(fmt::format("filled {} hole(s), each with one face", rep.filled_holes));
+  apply_tags(soup, remap, rep, mesh);
   validate(mesh);
+  // Soup face f is Face(f), its loop starting at slot 0 (assemble), so texture coordinates go to
+  // the corners by position. Faces edited after reading (code that does not know about UVs) no
+  // longer match them: they are dropped, with a warning. Bad values are the data's fault.
+  if (!soup.face_uvs.empty() || !soup.uvs.empty()) {
+    bool match = soup.face_uvs.size() == soup.faces.size();
+    for (size_t f = 0; match && f < soup.faces.size(); ++f)
+      match = soup.face_uvs[f].size() == soup.faces[f].size();
+    if (!match) {
+      rep.warnings.push_back(
+          "texture coordinates dropped: their face lists do not match the faces (the faces were "
+          "changed after reading)");
+    } else {
+      const int nuv = static_cast<int>(soup.uvs.size());
+      for (int u = 0; u < nuv; ++u)
+        if (!soup.uvs[u].allFinite())
+          throw MeshError(fmt::format("texture coordinate {} is not finite", u + 1));
+      CornerUvs& out = rep.corner_uvs;
+      out.uv = soup.uvs;
+      out.index.assign(mesh.halfedge_capacity(), -1);
+      for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
+        Halfedge h = mesh.halfedge(Face(f));
+        for (int i : soup.face_uvs[f]) {
+          if (i < 0 || i >= nuv)
+            throw MeshError(fmt::format("{} refers to texture coordinate {}, but there are {}",
+                                        where_face(soup, f), i + 1, nuv));
+          out.index[h.idx] = i;
+          h = mesh.next(h);
+        }
+      }
+    }
+  }
   return mesh;
 }
 
@@ -408,11 +529,19 @@ PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh) {
     index[v.idx] = static_cast<int>(soup.positions.size());
     soup.positions.push_back(mesh.position(v));
   }
-  for (Face f : mesh.faces()) {
+  for (Face f : mesh.surface_faces()) {
     std::vector<int> loop;
     for (Halfedge h : mesh.face_loop(f)) loop.push_back(index[mesh.origin(h).idx]);
     soup.faces.push_back(std::move(loop));
   }
+  for (Edge e : mesh.edges())
+    if (mesh.sharpness(e) > 0) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+      soup.creases.push_back(
+          {index[mesh.origin(h).idx], index[mesh.target(h).idx], mesh.sharpness(e), 0});
+    }
+  for (Vertex v : mesh.vertices())
+    if (mesh.sharpness(v) > 0) soup.corners.push_back({index[v.idx], mesh.sharpness(v), 0});
   return soup;
 }
 

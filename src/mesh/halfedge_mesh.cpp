@@ -46,6 +46,32 @@ std::vector<Halfedge> HalfedgeMesh::halfedges() const {
   return out;
 }
 
+bool HalfedgeMesh::has_features() const {
+  for (int f = 0; f < face_capacity(); ++f)
+    if (!face_deleted_[f] && face_hole_[f]) return true;
+  for (int e = 0; e < edge_capacity(); ++e)
+    if (!edge_deleted_[e] && edge_sharpness_[e] != 0) return true;
+  for (int v = 0; v < vertex_capacity(); ++v)
+    if (!vertex_deleted_[v] && vertex_sharpness_[v] != 0) return true;
+  return false;
+}
+
+std::vector<Corner> HalfedgeMesh::patch_corners() const {
+  std::vector<Corner> out;
+  out.reserve(halfedge_capacity());
+  for (int h = 0; h < halfedge_capacity(); ++h)
+    if (!edge_deleted_[h >> 1] && !face_hole_[he_face_[h]]) out.emplace_back(h);
+  return out;
+}
+
+std::vector<Face> HalfedgeMesh::surface_faces() const {
+  std::vector<Face> out;
+  out.reserve(face_capacity());
+  for (int f = 0; f < face_capacity(); ++f)
+    if (!face_deleted_[f] && !face_hole_[f]) out.emplace_back(f);
+  return out;
+}
+
 std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
   std::vector<Halfedge> out;
   Halfedge h = start;
@@ -94,6 +120,7 @@ Vertex HalfedgeMesh::add_vertex(const Vec3& p) {
   positions_.push_back(p);
   vertex_he_.push_back(-1);
   vertex_deleted_.push_back(0);
+  vertex_sharpness_.push_back(0);
   return Vertex(vertex_capacity() - 1);
 }
 
@@ -101,6 +128,7 @@ Face HalfedgeMesh::add_face() {
   check_room(face_capacity(), 1, "faces");
   face_he_.push_back(-1);
   face_deleted_.push_back(0);
+  face_hole_.push_back(0);
   return Face(face_capacity() - 1);
 }
 
@@ -115,6 +143,7 @@ Halfedge HalfedgeMesh::add_edge(Vertex a, Vertex b) {
   he_origin_.push_back(a.idx);
   he_origin_.push_back(b.idx);
   edge_deleted_.push_back(0);
+  edge_sharpness_.push_back(0);
   return Halfedge(h);
 }
 
@@ -166,9 +195,11 @@ HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
   out.positions_.resize(nv);
   out.vertex_he_.resize(nv);
   out.vertex_deleted_.assign(nv, 0);
+  out.vertex_sharpness_.resize(nv);
   for (size_t v = 0; v < positions_.size(); ++v) {
     if (map.vertex[v] < 0) continue;
     out.positions_[map.vertex[v]] = positions_[v];
+    out.vertex_sharpness_[map.vertex[v]] = vertex_sharpness_[v];
     out.vertex_he_[map.vertex[v]] = he_map(vertex_he_[v]);
   }
   out.he_next_.resize(2 * ne);
@@ -176,6 +207,9 @@ HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
   out.he_origin_.resize(2 * ne);
   out.he_face_.resize(2 * ne);
   out.edge_deleted_.assign(ne, 0);
+  out.edge_sharpness_.resize(ne);
+  for (size_t e = 0; e < edge_sharpness_.size(); ++e)
+    if (map.edge[e] >= 0) out.edge_sharpness_[map.edge[e]] = edge_sharpness_[e];
   for (int h = 0; h < halfedge_capacity(); ++h) {
     const int nh = he_map(h);
     if (map.edge[h >> 1] < 0) continue;
@@ -186,8 +220,12 @@ HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
   }
   out.face_he_.resize(nf);
   out.face_deleted_.assign(nf, 0);
+  out.face_hole_.resize(nf);
   for (size_t f = 0; f < face_he_.size(); ++f)
-    if (map.face[f] >= 0) out.face_he_[map.face[f]] = he_map(face_he_[f]);
+    if (map.face[f] >= 0) {
+      out.face_he_[map.face[f]] = he_map(face_he_[f]);
+      out.face_hole_[map.face[f]] = face_hole_[f];
+    }
   *this = std::move(out);
   return map;
 }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <sstream>
 
@@ -37,7 +38,7 @@ std::string_view without_plus(std::string_view token) {
 
 }  // namespace
 
-double parse_double(std::string_view token, const std::string& where) {
+double parse_number(std::string_view token, const std::string& where) {
   const std::string_view t = without_plus(token);
   double value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
@@ -45,6 +46,11 @@ double parse_double(std::string_view token, const std::string& where) {
     throw MeshError(fmt::format("{}: number '{}' is out of range", where, limits::quoted(token)));
   if (ec != std::errc() || end != t.data() + t.size())
     throw MeshError(fmt::format("{}: '{}' is not a number", where, limits::quoted(token)));
+  return value;
+}
+
+double parse_double(std::string_view token, const std::string& where) {
+  const double value = parse_number(token, where);
   if (!std::isfinite(value))
     throw MeshError(fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
   return value;
@@ -106,6 +112,31 @@ std::string supported_list() {
 }
 
 constexpr std::string_view kComment = "written by stitch";
+
+/// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
+/// line per element so a diff shows which changed); the OBJ reader reads them back.
+void write_obj_tags(std::ostream& out, const PolygonSoup& soup) {
+  for (const SoupCrease& c : soup.creases)
+    out << fmt::format("t crease 2/1/0 {} {} {}\n", c.a, c.b, c.sharpness);
+  for (const SoupCorner& c : soup.corners)
+    out << fmt::format("t corner 1/1/0 {} {}\n", c.vertex, c.sharpness);
+}
+
+/// Refuses tags that would not read back (what is written must read again).
+void check_tags(const std::string& path, const PolygonSoup& soup) {
+  const int nv = static_cast<int>(soup.positions.size());
+  auto check = [&](double sharpness, std::initializer_list<int> vertices, const char* what) {
+    if (!std::isfinite(sharpness) || sharpness < 0)
+      throw MeshError(
+          fmt::format("cannot write {}: a {} tag has sharpness {}", path, what, sharpness));
+    for (int v : vertices)
+      if (v < 0 || v >= nv)
+        throw MeshError(fmt::format("cannot write {}: a {} tag refers to vertex {} of {}", path,
+                                    what, v + 1, nv));
+  };
+  for (const SoupCrease& c : soup.creases) check(c.sharpness, {c.a, c.b}, "crease");
+  for (const SoupCorner& c : soup.corners) check(c.sharpness, {c.vertex}, "corner");
+}
 
 }  // namespace
 
@@ -177,10 +208,16 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
   for (int v = 0; v < nv; ++v)
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
       throw MeshError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
+  check_tags(path, soup);
   using namespace io_detail;
   const MeshStream stream = stream_arrays(soup.positions, nullptr, soup.faces);
+  // Only OBJ has a place for the crease and corner tags (OpenSubdiv's `t` lines); the other
+  // formats have no standard one, so they are written without them (docs/formats.md).
   if (ext == ".obj")
-    write_mesh_file(path, false, [&](std::ostream& out) { write_obj(out, stream, kComment); });
+    write_mesh_file(path, false, [&](std::ostream& out) {
+      write_obj(out, stream, kComment);
+      write_obj_tags(out, soup);
+    });
   else if (ext == ".off")
     write_mesh_file(path, false, [&](std::ostream& out) { write_off(out, stream, kComment); });
   else if (ext == ".ply")  // ASCII: edited meshes are small, and people read them

@@ -23,6 +23,10 @@ namespace stitch::io_detail {
 /// Where a problem is, for messages: "file.obj, line 12".
 std::string at_line(const std::string& path, int line);
 
+/// A number as from_chars reads it (a leading '+' allowed), NaN and infinity included; throws
+/// MeshError naming `where` otherwise.
+double parse_number(std::string_view token, const std::string& where);
+
 /// Parses a whole token as a finite double; throws MeshError naming `where` otherwise.
 double parse_double(std::string_view token, const std::string& where);
 /// Parses a whole token as an integer; throws MeshError naming `where` otherwise.

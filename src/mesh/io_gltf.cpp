@@ -1,13 +1,17 @@
 // glTF 2.0 in, through tinygltf (its implementation is compiled in src/tess/gltf.cpp). glTF
 // splits a vertex wherever one of its attributes differs (a normal or UV seam), so the triangles
-// are welded by position like STL's; node transforms are applied, images are not loaded.
+// are welded by position like STL's, and TEXCOORD_0 stays per corner; node transforms are
+// applied, images are not loaded.
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <utility>
 
 #include "io_detail.hpp"
 #include "stitch/mesh/io.hpp"
@@ -19,6 +23,7 @@ namespace stitch::io_detail {
 namespace {
 
 using Triangles = std::vector<std::array<Vec3, 3>>;
+using TriangleUvs = std::vector<std::array<Eigen::Vector2d, 3>>;
 
 // glTF stores little-endian floats; they are copied as they are.
 static_assert(std::endian::native == std::endian::little,
@@ -43,6 +48,19 @@ class Reader {
       for (int node : model_.scenes[scene].nodes) add_node(node, Eigen::Affine3d::Identity(), 0);
     }
     return std::move(triangles_);
+  }
+
+  /// TEXCOORD_0 of every triangle corner (call after triangles()); empty unless every primitive
+  /// has it.
+  TriangleUvs uvs(std::vector<std::string>* warnings) {
+    if (primitives_with_uv_ > 0 && primitives_without_uv_ > 0) {
+      if (warnings)
+        warnings->push_back(
+            fmt::format("{}: ignoring TEXCOORD_0: {} primitive(s) have it but {} do not", path_,
+                        primitives_with_uv_, primitives_without_uv_));
+      return {};
+    }
+    return std::move(uvs_);
   }
 
  private:
@@ -99,6 +117,16 @@ class Reader {
       if (corners.size() % 3 != 0)
         throw error(
             fmt::format("{}: {} corners do not make whole triangles", where, corners.size()));
+      std::vector<Eigen::Vector2d> texcoords;
+      if (const auto t = primitive.attributes.find("TEXCOORD_0"); t != primitive.attributes.end()) {
+        texcoords = texcoords_of(t->second, where);
+        if (texcoords.size() != points.size())
+          throw error(fmt::format("{}: {} TEXCOORD_0 values for {} positions", where,
+                                  texcoords.size(), points.size()));
+        ++primitives_with_uv_;
+      } else {
+        ++primitives_without_uv_;
+      }
       for (size_t t = 0; t < corners.size(); t += 3) {
         std::array<Vec3, 3> triangle;
         for (int k = 0; k < 3; ++k) {
@@ -110,6 +138,10 @@ class Reader {
           limits::check_coordinates(triangle[k], fmt::format("{}: {}", path_, where));
         }
         triangles_.push_back(triangle);
+        if (!texcoords.empty())
+          uvs_.push_back({texcoords[static_cast<size_t>(corners[t])],
+                          texcoords[static_cast<size_t>(corners[t + 1])],
+                          texcoords[static_cast<size_t>(corners[t + 2])]});
       }
     }
   }
@@ -160,6 +192,42 @@ class Reader {
     return out;
   }
 
+  /// TEXCOORD_0 with v flipped (glTF's origin is the top left corner, OBJ's and stitch's the
+  /// bottom left): float, or unsigned byte or short normalized, as the specification allows.
+  std::vector<Eigen::Vector2d> texcoords_of(int index, const std::string& where) const {
+    if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
+      throw error(fmt::format("{}: its TEXCOORD_0 accessor {} does not exist", where, index));
+    const tinygltf::Accessor& head = model_.accessors[static_cast<size_t>(index)];
+    const int type = head.componentType;
+    const size_t size = type == TINYGLTF_COMPONENT_TYPE_FLOAT            ? 4
+                        : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                        : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE  ? 1
+                                                                         : 0;
+    if (size == 0 || head.type != TINYGLTF_TYPE_VEC2 || (size < 4 && !head.normalized))
+      throw error(where + ": TEXCOORD_0 is not float or normalized unsigned byte or short VEC2");
+    const tinygltf::Accessor& a = accessor(index, 2 * size, where);
+    std::vector<Eigen::Vector2d> out(a.count);
+    for (size_t i = 0; i < a.count; ++i) {
+      const unsigned char* bytes = element(a, i, 2 * size, where);
+      std::array<double, 2> st{};
+      for (int k = 0; k < 2; ++k) {
+        if (size == 4) {
+          float f = 0;
+          std::memcpy(&f, bytes + 4 * k, 4);
+          st[k] = f;
+        } else {
+          std::uint32_t raw = 0;
+          for (size_t b = size; b-- > 0;) raw = (raw << 8) | bytes[size * k + b];
+          st[k] = static_cast<double>(raw) / (size == 1 ? 255.0 : 65535.0);
+        }
+      }
+      if (!std::isfinite(st[0]) || !std::isfinite(st[1]))
+        throw error(fmt::format("{}: TEXCOORD_0 {} is not finite", where, i));
+      out[i] = Eigen::Vector2d(st[0], 1.0 - st[1]);
+    }
+    return out;
+  }
+
   std::vector<std::int64_t> indices(int index, const std::string& where) const {
     if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
       throw error(fmt::format("{}: its indices accessor {} does not exist", where, index));
@@ -184,6 +252,8 @@ class Reader {
   const tinygltf::Model& model_;
   const std::string& path_;
   Triangles triangles_;
+  TriangleUvs uvs_;  ///< per triangle of triangles_, while every primitive so far had TEXCOORD_0
+  int primitives_with_uv_ = 0, primitives_without_uv_ = 0;
 };
 
 /// tinygltf's file access for external buffers, without opening anything to test existence (a
@@ -232,7 +302,29 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
                                 limits::quoted(err.empty() ? warn : err)));
   if (!warn.empty() && warnings)
     warnings->push_back(fmt::format("{}: {}", path, limits::quoted(warn)));
-  return weld_triangles(Reader(model, path).triangles(), {}, path, warnings);
+  Reader reader(model, path);
+  const Triangles triangles = reader.triangles();
+  const TriangleUvs uvs = reader.uvs(warnings);
+  if (uvs.empty()) return weld_triangles(triangles, {}, path, warnings);
+  // Welding drops collapsed triangles; numbering them as "lines" tells which ones are left.
+  std::vector<int> numbers(triangles.size());
+  for (size_t t = 0; t < numbers.size(); ++t) numbers[t] = static_cast<int>(t) + 1;
+  PolygonSoup soup = weld_triangles(triangles, numbers, path, warnings);
+  // glTF also splits vertices for normals: corners of one welded vertex with equal
+  // coordinates share one index, so that only real UV seams part the texture.
+  std::map<std::pair<int, std::pair<double, double>>, int> shared;
+  soup.face_uvs.resize(soup.faces.size());
+  for (size_t f = 0; f < soup.faces.size(); ++f) {
+    const auto& corners = uvs[static_cast<size_t>(soup.face_lines[f] - 1)];
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, fresh] = shared.try_emplace(
+          {soup.faces[f][k], {corners[k].x(), corners[k].y()}}, static_cast<int>(soup.uvs.size()));
+      if (fresh) soup.uvs.push_back(corners[k]);
+      soup.face_uvs[f].push_back(it->second);
+    }
+    soup.face_lines[f] = 0;  // glTF has no lines
+  }
+  return soup;
 }
 
 }  // namespace stitch::io_detail

@@ -1,5 +1,6 @@
-// Stanford PLY, ASCII and binary (either byte order): vertex x y z and a face list of vertex
-// indices; every other element and property is read past and ignored.
+// Stanford PLY, ASCII and binary (either byte order): vertex x y z, per-vertex texture
+// coordinates and a face list of vertex indices; every other element and property is read past
+// and ignored.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -136,8 +137,35 @@ Header read_header(std::string_view text, const std::string& path) {
 struct Roles {
   int vertex_element = -1, face_element = -1;
   std::array<int, 3> xyz{-1, -1, -1};
+  std::array<int, 2> uv{-1, -1};  ///< texture coordinates; -1 when the file has none
   int indices = -1;
 };
+
+/// Texture coordinate property pairs in the order they are preferred: writers name them
+/// differently (s t: stitch, Blender; texture_u texture_v: Meshlab; u v: others), and a file
+/// with several pairs keeps the first.
+constexpr std::array<std::array<std::string_view, 2>, 4> kUvNames = {
+    {{"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}, {"u", "v"}}};
+
+/// The vertex element's texture coordinate properties, or {-1, -1}.
+std::array<int, 2> find_uv(const Element& element, const std::string& where) {
+  // stitch's `--unwelded` samples have `u v`, the position in the patch, beside `int patch`.
+  const bool samples = std::any_of(element.properties.begin(), element.properties.end(),
+                                   [](const Property& p) { return p.name == "patch"; });
+  for (const auto& names : kUvNames) {
+    if (samples && names[0] == "u") continue;
+    std::array<int, 2> found{-1, -1};
+    for (int p = 0; p < static_cast<int>(element.properties.size()); ++p)
+      for (int k = 0; k < 2; ++k)
+        if (element.properties[p].name == names[k]) found[k] = p;
+    if (found[0] < 0 || found[1] < 0) continue;
+    for (int k = 0; k < 2; ++k)
+      if (element.properties[found[k]].list_count)
+        throw MeshError(fmt::format("{}: vertex property {} is a list", where, names[k]));
+    return found;
+  }
+  return {-1, -1};
+}
 
 Roles find_roles(const Header& header, const std::string& path) {
   Roles roles;
@@ -160,6 +188,7 @@ Roles find_roles(const Header& header, const std::string& path) {
         if (roles.xyz[k] < 0)
           throw MeshError(
               fmt::format("{}: the vertex element has no '{}' property", where, "xyz"[k]));
+      roles.uv = find_uv(element, where);
     } else if (element.name == "face") {
       roles.face_element = e;
       for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
@@ -353,16 +382,19 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
     for (long long i = 0; i < element.count; ++i) {
       if (e == roles.vertex_element) {
         Vec3 p = Vec3::Zero();
+        Eigen::Vector2d uv = Eigen::Vector2d::Zero();
         const int line = body.read(element, i, [&](int property, int, double value) {
           for (int k = 0; k < 3; ++k)
             if (property == roles.xyz[k]) p[k] = value;
+          for (int k = 0; k < 2; ++k)
+            if (property == roles.uv[k]) uv[k] = value;
         });
-        if (!p.allFinite())
-          throw MeshError(
-              fmt::format("{}, vertex element {} (counting from 0): coordinate is not "
-                          "finite",
-                          path, i));
+        if (!p.allFinite() || !uv.allFinite())
+          throw MeshError(fmt::format("{}, vertex element {} (counting from 0): {} is not finite",
+                                      path, i,
+                                      p.allFinite() ? "a texture coordinate" : "coordinate"));
         soup.positions.push_back(p);
+        if (roles.uv[0] >= 0) soup.uvs.push_back(uv);
         // For binary files there is no line (0); build_mesh then names the vertex number only.
         soup.vertex_lines.push_back(line);
       } else if (e == roles.face_element) {
@@ -393,6 +425,8 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
       }
     }
   }
+  // Per-vertex coordinates: each corner takes its vertex's.
+  if (roles.uv[0] >= 0) soup.face_uvs = soup.faces;
   if (!body.at_end() && warnings)
     warnings->push_back(fmt::format("{}: ignoring data after the last declared element", path));
   return soup;

@@ -25,7 +25,7 @@ HalfedgeMesh::JournalSlot& HalfedgeMesh::JournalSlot::operator=(JournalSlot&& ot
 HalfedgeMesh::JournalSlot::~JournalSlot() = default;
 
 HalfedgeMesh::VertexState HalfedgeMesh::state_of(Vertex v) const {
-  return {positions_[v.idx], vertex_he_[v.idx], vertex_deleted_[v.idx]};
+  return {positions_[v.idx], vertex_he_[v.idx], vertex_deleted_[v.idx], vertex_sharpness_[v.idx]};
 }
 
 HalfedgeMesh::EdgeState HalfedgeMesh::state_of(Edge e) const {
@@ -38,11 +38,12 @@ HalfedgeMesh::EdgeState HalfedgeMesh::state_of(Edge e) const {
     s.face[side] = he_face_[h];
   }
   s.deleted = edge_deleted_[e.idx];
+  s.sharpness = edge_sharpness_[e.idx];
   return s;
 }
 
 HalfedgeMesh::FaceState HalfedgeMesh::state_of(Face f) const {
-  return {face_he_[f.idx], face_deleted_[f.idx]};
+  return {face_he_[f.idx], face_deleted_[f.idx], face_hole_[f.idx]};
 }
 
 HalfedgeMesh::DeltaEnd HalfedgeMesh::end_state() const {
@@ -133,18 +134,22 @@ void HalfedgeMesh::apply(const Delta& delta, bool forward) {
   positions_.resize(nv, Vec3::Zero());
   vertex_he_.resize(nv, -1);
   vertex_deleted_.resize(nv, 0);
+  vertex_sharpness_.resize(nv, 0);
   const auto nh = 2 * static_cast<size_t>(to.edge_capacity);
   he_next_.resize(nh, -1);
   he_prev_.resize(nh, -1);
   he_origin_.resize(nh, -1);
   he_face_.resize(nh, -1);
   edge_deleted_.resize(static_cast<size_t>(to.edge_capacity), 0);
+  edge_sharpness_.resize(static_cast<size_t>(to.edge_capacity), 0);
   face_he_.resize(static_cast<size_t>(to.face_capacity), -1);
   face_deleted_.resize(static_cast<size_t>(to.face_capacity), 0);
+  face_hole_.resize(static_cast<size_t>(to.face_capacity), 0);
   for (const auto& [i, s] : to.vertices) {
     positions_[i] = s.position;
     vertex_he_[i] = s.halfedge;
     vertex_deleted_[i] = s.deleted;
+    vertex_sharpness_[i] = s.sharpness;
   }
   for (const auto& [i, s] : to.edges) {
     for (int side = 0; side < 2; ++side) {
@@ -155,10 +160,12 @@ void HalfedgeMesh::apply(const Delta& delta, bool forward) {
       he_face_[h] = s.face[side];
     }
     edge_deleted_[i] = s.deleted;
+    edge_sharpness_[i] = s.sharpness;
   }
   for (const auto& [i, s] : to.faces) {
     face_he_[i] = s.halfedge;
     face_deleted_[i] = s.deleted;
+    face_hole_[i] = s.hole;
   }
   deleted_vertices_ = to.deleted_vertices;
   deleted_edges_ = to.deleted_edges;

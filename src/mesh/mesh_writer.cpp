@@ -110,6 +110,30 @@ void for_each_face(const FaceBlock& block, Visit&& visit) {
   }
 }
 
+/// OBJ faces with texture coordinates: `f a/t/a ...` (or `a/t` without normals), 1-based. Apart
+/// from text_faces so that files without them take no branch per corner.
+FaceFormat obj_textured_faces(bool normals) {
+  return [=](const FaceBlock& block, OutputBuffer& text) {
+    text.reserve(block.indices.size() * 24 + block.sizes.size() * 4);
+    const int* uv = block.texcoords.data();
+    for_each_face(block, [&](int size, const int* loop) {
+      text += 'f';
+      for (int k = 0; k < size; ++k) {
+        text += ' ';
+        const std::int64_t index = std::int64_t{loop[k]} + 1;
+        put(text, index);
+        text += '/';
+        put(text, std::int64_t{*uv++} + 1);
+        if (normals) {
+          text += '/';
+          put(text, index);
+        }
+      }
+      text += '\n';
+    });
+  };
+}
+
 /// Faces as text lines `prefix[count] i0 i1 ...` with indices shifted by `base` (1 for OBJ).
 FaceFormat text_faces(const char* prefix, bool with_count, int base, bool obj_normals) {
   return [=](const FaceBlock& block, OutputBuffer& text) {
@@ -184,7 +208,7 @@ void OutputBuffer::reserve(size_t capacity) {
 
 void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& report) {
-  Progress progress(report, mesh.num_vertices + mesh.num_faces);
+  Progress progress(report, mesh.num_vertices + mesh.num_texcoords + mesh.num_faces);
   out << "# " << comment << '\n';
   write_vertices(
       out, mesh,
@@ -201,7 +225,24 @@ void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comme
         }
       },
       progress);
-  write_faces(out, mesh, text_faces("f", false, 1, mesh.has_normals), progress);
+  if (mesh.num_texcoords == 0) {
+    write_faces(out, mesh, text_faces("f", false, 1, mesh.has_normals), progress);
+    return;
+  }
+  write_records<std::vector<Eigen::Vector2d>>(
+      out, mesh.num_texcoords, kVerticesPerBlock, mesh.texcoords,
+      [](const std::vector<Eigen::Vector2d>& block, OutputBuffer& text) {
+        text.reserve(block.size() * 52);
+        for (const Eigen::Vector2d& t : block) {
+          text += std::string_view("vt ");
+          put(text, t.x());
+          text += ' ';
+          put(text, t.y());
+          text += '\n';
+        }
+      },
+      progress);
+  write_faces(out, mesh, obj_textured_faces(mesh.has_normals), progress);
 }
 
 void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comment,

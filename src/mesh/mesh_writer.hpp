@@ -30,6 +30,8 @@ struct VertexBlock {
 struct FaceBlock {
   std::vector<int> sizes;
   std::vector<int> indices;
+  /// With texture coordinates: per corner like `indices`, an index into them (0-based).
+  std::vector<int> texcoords;
 };
 
 /// A mesh as a writer reads it. The callbacks may run for several blocks at once on different
@@ -42,6 +44,11 @@ struct MeshStream {
   std::int64_t triangles = 0;  ///< sum over faces of (size - 2): STL's triangle count
   std::function<void(std::int64_t begin, std::int64_t end, VertexBlock&)> vertices;
   std::function<void(std::int64_t begin, std::int64_t end, FaceBlock&)> faces;
+  /// Texture coordinates, numbered on their own (OBJ `vt`: a seam needs two at one vertex);
+  /// written by write_obj only. 0: none, and FaceBlock::texcoords stays empty.
+  std::int64_t num_texcoords = 0;
+  std::function<void(std::int64_t begin, std::int64_t end, std::vector<Eigen::Vector2d>&)>
+      texcoords;
 };
 
 /// Called with the fraction (0..1) of the file written so far.
@@ -52,7 +59,8 @@ enum class PlyEncoding { ascii, binary_little_endian };
 /// about 7 significant digits (enough to render or print).
 enum class PlyPrecision { double_precision, single };
 
-/// OBJ: `v` (and `vn`, referenced as `a//a`) lines block by block, then 1-based faces.
+/// OBJ: `v` (and `vn`) lines block by block, the `vt` lines, then 1-based faces (`a//a` with
+/// normals, `a/t/a` with texture coordinates too, `a/t` with texture coordinates only).
 void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
 /// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals.

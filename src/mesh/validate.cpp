@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numeric>
 #include <utility>
 
@@ -52,6 +53,13 @@ std::vector<std::string> find_problems(const HalfedgeMesh& m) {
     }
     if (degree < 2) bad(fmt::format("face {} has degree {}", f.idx + 1, degree));
   }
+  for (Edge e : m.edges()) {
+    if (m.is_hole(HalfedgeMesh::halfedge(e, 0)) && m.is_hole(HalfedgeMesh::halfedge(e, 1)))
+      bad(fmt::format("edge {} has a hole on both sides (no surface touches it)", e.idx + 1));
+    const double s = m.sharpness(e);
+    if (!(s >= 0) || !std::isfinite(s))
+      bad(fmt::format("edge {} has sharpness {} (it must be finite and >= 0)", e.idx + 1, s));
+  }
   for (Halfedge h : m.halfedges())
     if (seen[h.idx] != 1)
       bad(fmt::format("half-edge {} lies on {} face loops", h.idx, seen[h.idx]));
@@ -69,6 +77,15 @@ std::vector<std::string> find_problems(const HalfedgeMesh& m) {
       bad(fmt::format("vertex {} is non-manifold: one fan holds {} of its {} corners", v.idx + 1,
                       fan, outgoing[v.idx]));
     if (fan < 2) bad(fmt::format("vertex {} has valence {}", v.idx + 1, fan));
+    int holes = 0;
+    for (Halfedge c : m.vertex_fan(v)) holes += m.is_hole(c);
+    if (holes > 1)
+      bad(fmt::format("vertex {} is non-manifold: {} boundary loops touch there", v.idx + 1,
+                      holes));
+    if (holes == fan) bad(fmt::format("vertex {} lies in holes only", v.idx + 1));
+    const double s = m.sharpness(v);
+    if (!(s >= 0) || !std::isfinite(s))
+      bad(fmt::format("vertex {} has sharpness {} (it must be finite and >= 0)", v.idx + 1, s));
   }
   return problems;
 }
@@ -115,17 +132,23 @@ TopologyStats topology_stats(const HalfedgeMesh& mesh) {
   TopologyStats s;
   s.vertices = mesh.num_vertices();
   s.edges = mesh.num_edges();
-  s.faces = mesh.num_faces();
+  for (Face f : mesh.faces()) (mesh.is_hole(f) ? s.boundary_loops : s.faces) += 1;
+  for (Edge e : mesh.edges())
+    if (!mesh.is_boundary(e) && mesh.sharpness(e) > 0) ++s.crease_edges;
+  for (Vertex v : mesh.vertices())
+    if (mesh.sharpness(v) > 0) ++s.corner_vertices;
   connected_components(mesh, &s.components);
+  // Euler characteristic of the surface with its boundary; each boundary loop is a disc short of
+  // the closed surface of the same genus.
   s.euler = s.vertices - s.edges + s.faces;
-  s.genus = (2 * s.components - s.euler) / 2;
+  s.genus = (2 * s.components - s.euler - s.boundary_loops) / 2;
   // On a valid mesh a vertex's valence is its number of outgoing half-edges and a face's degree
   // its number of half-edges; counting them avoids walking every fan and loop.
   std::vector<int> valence(mesh.vertex_capacity(), 0), degree(mesh.face_capacity(), 0);
   for (int h = 0; h < mesh.halfedge_capacity(); ++h) {
     if (mesh.is_deleted(Halfedge(h))) continue;
     ++valence[mesh.origin(Halfedge(h)).idx];
-    ++degree[mesh.face(Halfedge(h)).idx];
+    if (!mesh.is_hole(Halfedge(h))) ++degree[mesh.face(Halfedge(h)).idx];
   }
   // Histograms are counted in arrays first: a map insertion per element costs more than the
   // rest of this function together.
@@ -146,7 +169,8 @@ TopologyStats topology_stats(const HalfedgeMesh& mesh) {
   s.extraordinary_vertices = histogram(
       valence, [&](int v) { return !mesh.is_deleted(Vertex(v)); }, s.valence_histogram);
   s.extraordinary_faces = histogram(
-      degree, [&](int f) { return !mesh.is_deleted(Face(f)); }, s.degree_histogram);
+      degree, [&](int f) { return !mesh.is_deleted(Face(f)) && !mesh.is_hole(Face(f)); },
+      s.degree_histogram);
   return s;
 }
 

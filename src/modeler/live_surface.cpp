@@ -60,6 +60,7 @@ AffectedSet expand(const HalfedgeMesh& m, std::vector<Face> moved_faces, Affecte
       a.corners.push_back(h);
       a.corners.push_back(m.next(h));
     }
+  std::erase_if(a.corners, [&](Halfedge h) { return m.is_hole(h); });  // no patch there
   sort_unique(a.corners);
   return a;
 }
@@ -155,8 +156,9 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   nets_ = build_control_nets(mesh, kgons_);
   const int slots = mesh.halfedge_capacity();
   live_.assign(static_cast<size_t>(slots), 0);
-  for (Corner c : mesh.halfedges()) live_[c.idx] = 1;
-  num_patches_ = mesh.num_halfedges();
+  const std::vector<Corner> patch_corners = mesh.patch_corners();
+  for (Corner c : patch_corners) live_[c.idx] = 1;
+  num_patches_ = static_cast<int>(patch_corners.size());
   std::vector<int> all(static_cast<size_t>(slots));
   std::iota(all.begin(), all.end(), 0);
   tess_ = SurfaceMesh{};
@@ -183,6 +185,10 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   resize_to(kgons_.in_vertex, nh);
   resize_to(kgons_.in_next_edge, nh);
   resize_to(kgons_.in_prev_edge, nh);
+  kgons_.vertex_k.resize(static_cast<size_t>(nh), 4);
+  if (!kgons_.sharp_curve.empty()) kgons_.sharp_curve.resize(static_cast<size_t>(nh));
+  if (!kgons_.cone.empty()) kgons_.cone.resize(static_cast<size_t>(nh));
+  if (!kgons_.sharp_edge.empty()) kgons_.sharp_edge.resize(static_cast<size_t>(m.edge_capacity()));
   resize_to(kgons_.face, m.face_capacity());
   resize_to(kgons_.vertex, m.vertex_capacity());
   resize_to(kgons_.edge, m.edge_capacity());
@@ -199,18 +205,24 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   AffectedSet seeds;
   std::vector<Corner> fresh;  // live corners that had no live patch before
   std::vector<int> relaid;    // slots whose liveness changed
+  // A corner has a patch while its edge lives and its face is not a hole; a face that became
+  // or stopped being a hole changes its corners' liveness without touching their edges.
+  auto refresh = [&](Halfedge h) {
+    const bool now = !m.is_deleted(h) && !m.is_hole(h);
+    if (now != (live_[h.idx] != 0)) {
+      relaid.push_back(h.idx);
+      num_patches_ += now ? 1 : -1;
+      live_[h.idx] = now ? 1 : 0;
+      if (now) fresh.push_back(h);
+    }
+    if (!m.is_deleted(h) && !now) nets_[h.idx].p.fill(Vec3::Zero());
+  };
   for (Edge e : change.edges) {
     if (e.idx >= m.edge_capacity()) continue;  // removed again by an undo: truncated above
     for (int side = 0; side < 2; ++side) {
       const Halfedge h = HalfedgeMesh::halfedge(e, side);
-      const bool now = !m.is_deleted(h);
-      if (now != (live_[h.idx] != 0)) {
-        relaid.push_back(h.idx);
-        num_patches_ += now ? 1 : -1;
-        live_[h.idx] = now ? 1 : 0;
-        if (now) fresh.push_back(h);
-      }
-      if (!now) {
+      refresh(h);
+      if (m.is_deleted(h)) {
         nets_[h.idx].p.fill(Vec3::Zero());  // what's left of a removed corner: never read
         kgons_.corner_point[h.idx] = Vec3::Zero();
         kgons_.in_face[h.idx] = kgons_.in_vertex[h.idx] = kgons_.in_next_edge[h.idx] =
@@ -223,6 +235,13 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
       seeds.edges.push_back(e);
     }
   }
+  for (Face f : change.faces)
+    if (f.idx < m.face_capacity() && !m.is_deleted(f))
+      for (Halfedge h : m.face_loop(f)) {
+        refresh(h);
+        seeds.vertices.push_back(m.origin(h));
+        seeds.edges.push_back(HalfedgeMesh::edge(h));
+      }
   for (Vertex v : change.vertices) {
     if (v.idx >= m.vertex_capacity()) continue;
     if (m.is_deleted(v)) {

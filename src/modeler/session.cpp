@@ -455,10 +455,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   } else {
     throw MeshError(fmt::format(
         "unknown command '{}' (operations: insert-edge, delete-edge, subdivide-edge, "
-        "collapse-edge, extrude-face, connect-faces, delete-face, doo-sabin, vertex-insertion, "
-        "catmull-clark, dual; modeler: primitive, move-vertex, translate-vertex, select, kgon, "
-        "undo, redo, method, resolution, mode, overlay, split, view, frame, orbit, zoom, "
-        "screenshot, save, export, open, info, quit)",
+        "collapse-edge, extrude-face, connect-faces, delete-face, open-face, fill-hole, crease, "
+        "corner, doo-sabin, vertex-insertion, catmull-clark, dual; modeler: primitive, "
+        "move-vertex, translate-vertex, select, kgon, undo, redo, method, resolution, mode, "
+        "overlay, split, view, frame, orbit, zoom, screenshot, save, export, open, info, quit)",
         cmd));
   }
   if (!s.warning.empty()) {

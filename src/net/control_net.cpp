@@ -36,8 +36,20 @@ ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c)
   net.at(2, 3) = 0.5 * (net.at(2, 2) + kg.face_point(m, n2));
   net.at(0, 1) = 0.5 * (net.at(1, 1) + kg.vertex_point(m, n3));
   net.at(0, 2) = 0.5 * (net.at(1, 2) + kg.next_edge_point(n3));
+  // Along a sharp edge the side is the sharp curve, which only the vertices along the edge
+  // shape; the patch across (if any) has the same curve, so the surface stays watertight there.
+  if (kg.sharp(HalfedgeMesh::edge(c))) {
+    const auto& curve = kg.sharp_curve[c.idx];
+    net.at(1, 0) = curve[0];
+    net.at(2, 0) = curve[1];
+  }
+  if (kg.sharp(HalfedgeMesh::edge(n2))) {
+    const auto& curve = kg.sharp_curve[n3.idx];  // the half-edge leaving the vertex along it
+    net.at(0, 1) = curve[0];
+    net.at(0, 2) = curve[1];
+  }
 
-  net.corner_k = {vk.size(), ek_next.size(), fk.size(), ek_prev.size()};
+  net.corner_k = {kg.vertex_k[c.idx], ek_next.size(), fk.size(), ek_prev.size()};
   const std::uint8_t bits[4] = {corner00, corner30, corner33, corner03};
   for (int i = 0; i < 4; ++i)
     if (net.corner_k[i] != 4) net.extraordinary |= bits[i];
@@ -46,7 +58,7 @@ ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c)
 
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& m, const KgonSet& kgons) {
   std::vector<ControlNet> nets(m.halfedge_capacity());
-  const std::vector<Halfedge> corners = m.halfedges();
+  const std::vector<Corner> corners = m.patch_corners();
   tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
     nets[corners[i].idx] = build_control_net(m, kgons, corners[i]);
   });

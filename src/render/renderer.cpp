@@ -17,7 +17,8 @@ namespace stitch {
 
 namespace {
 
-constexpr std::array<const char*, 5> kModeNames{"shaded", "zebra", "isophote", "levels", "patches"};
+constexpr std::array<const char*, 6> kModeNames{"shaded", "zebra",   "isophote",
+                                                "levels", "patches", "checker"};
 
 struct SurfaceVertex {
   float position[3];
@@ -30,6 +31,7 @@ static_assert(sizeof(SurfaceVertex) == 32);
 struct LineVertex {
   float position[3];
   float colour[3];
+  float width;  ///< factor of the line width (lines only; markers ignore it)
 };
 
 GLuint compile(GLenum type, const char* source, const char* name) {
@@ -111,14 +113,17 @@ struct Buffer {
 };
 
 void upload_lines(Buffer& buffer, const std::vector<Vec3>& points,
-                  const std::vector<Colour>& colours, bool per_segment_colour) {
+                  const std::vector<Colour>& colours, bool per_segment_colour,
+                  const std::vector<float>& widths = {}) {
   std::vector<LineVertex> data(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    const Colour& c = colours[per_segment_colour ? i / 2 : i];
+    const size_t item = per_segment_colour ? i / 2 : i;
+    const Colour& c = colours[item];
     for (int k = 0; k < 3; ++k) {
       data[i].position[k] = static_cast<float>(points[i][k]);
       data[i].colour[k] = c[k];
     }
+    data[i].width = item < widths.size() ? widths[item] : 1.0f;
   }
   glBindVertexArray(buffer.vao);
   glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
@@ -130,6 +135,9 @@ void upload_lines(Buffer& buffer, const std::vector<Vec3>& points,
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
                         reinterpret_cast<void*>(offsetof(LineVertex, colour)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
+                        reinterpret_cast<void*>(offsetof(LineVertex, width)));
   glBindVertexArray(0);
   buffer.count = static_cast<GLsizei>(data.size());
 }
@@ -148,7 +156,7 @@ ShadingMode parse_shading_mode(const std::string& name) {
     if (name == kModeNames[i]) return static_cast<ShadingMode>(i);
   }
   throw std::invalid_argument("unknown mode '" + name +
-                              "' (expected shaded, zebra, isophote, levels or patches)");
+                              "' (expected shaded, zebra, isophote, levels, patches or checker)");
 }
 
 std::string to_string(ShadingMode mode) {
@@ -169,12 +177,15 @@ std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface) {
 struct Renderer::Impl {
   GLuint surface_program = 0, line_program = 0, marker_program = 0;
   Buffer surface;
+  // Texture coordinates beside the surface's vertex buffer (set_surface_texcoords), attribute 4
+  // of its vertex array; while that attribute is disabled every vertex reads (0, 0).
+  GLuint texcoord_vbo = 0;
   int surface_vertices = 0;
   // A block surface (set_block_surface): block sizes and the blocks the buffers have room for;
   // zero for a plain surface.
   int block_vertices = 0, block_quads = 0, block_capacity = 0;
   std::array<Buffer, num_overlays> overlays;
-  Buffer markers;
+  Buffer markers, marker_curves;
 
   Impl() {
     if (epoxy_gl_version() < 33) {
@@ -185,19 +196,29 @@ struct Renderer::Impl {
         link("line", shaders::line_vertex, shaders::line_fragment, shaders::line_geometry);
     marker_program = link("marker", shaders::marker_vertex, shaders::marker_fragment);
     surface.create(true);
+    glGenBuffers(1, &texcoord_vbo);
     for (Buffer& b : overlays) b.create(false);
     markers.create(false);
+    marker_curves.create(false);
   }
   ~Impl() {
     surface.destroy();
+    glDeleteBuffers(1, &texcoord_vbo);
     for (Buffer& b : overlays) b.destroy();
     markers.destroy();
+    marker_curves.destroy();
     glDeleteProgram(surface_program);
     glDeleteProgram(line_program);
     glDeleteProgram(marker_program);
   }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
+
+  void drop_texcoords() {
+    glBindVertexArray(surface.vao);
+    glDisableVertexAttribArray(4);
+    glBindVertexArray(0);
+  }
 };
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
@@ -283,6 +304,7 @@ void Renderer::set_surface(const SurfaceMesh& s) {
   b.count = static_cast<GLsizei>(indices.size());
   impl_->surface_vertices = s.num_vertices();
   impl_->block_vertices = impl_->block_quads = impl_->block_capacity = 0;
+  impl_->drop_texcoords();
 }
 
 void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
@@ -318,6 +340,7 @@ void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
   impl_->block_vertices = vertices_per_block;
   impl_->block_quads = quads_per_block;
   impl_->block_capacity = capacity;
+  impl_->drop_texcoords();
 }
 
 void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> blocks) {
@@ -363,6 +386,27 @@ void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> bloc
   glBindVertexArray(0);
   r.surface.count = static_cast<GLsizei>(static_cast<size_t>(count) * per_q * 6);
   r.surface_vertices = s.num_vertices();
+  r.drop_texcoords();
+}
+
+void Renderer::set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoords) {
+  Impl& r = *impl_;
+  if (texcoords.size() != static_cast<size_t>(r.surface_vertices))
+    throw std::invalid_argument(
+        fmt::format("{} texture coordinates for a surface of {} vertices", texcoords.size(),
+                    r.surface_vertices));
+  std::vector<float> data(texcoords.size() * 2);
+  for (size_t i = 0; i < texcoords.size(); ++i) {
+    data[2 * i] = static_cast<float>(texcoords[i].x());
+    data[2 * i + 1] = static_cast<float>(texcoords[i].y());
+  }
+  glBindVertexArray(r.surface.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, r.texcoord_vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STATIC_DRAW);
+  glEnableVertexAttribArray(4);
+  glVertexAttribPointer(4, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glBindVertexArray(0);
 }
 
 void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
@@ -381,11 +425,14 @@ void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int coun
 }
 
 void Renderer::set_overlay(Overlay overlay, const LineSet& lines) {
-  upload_lines(impl_->overlays[static_cast<int>(overlay)], lines.points, lines.colours, true);
+  upload_lines(impl_->overlays[static_cast<int>(overlay)], lines.points, lines.colours, true,
+               lines.widths);
 }
 
 void Renderer::set_markers(const MarkerSet& markers) {
   upload_lines(impl_->markers, markers.positions, markers.colours, false);
+  upload_lines(impl_->marker_curves, markers.curves.points, markers.curves.colours, true,
+               markers.curves.widths);
 }
 
 void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, int height,
@@ -430,6 +477,8 @@ void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, i
     set_uniform(r.surface_program, "u_stripe_y", axis.cross(sx));
     set_uniform(r.surface_program, "u_stripes", static_cast<float>(style.stripes));
     set_uniform(r.surface_program, "u_base", style.surface_colour);
+    set_uniform(r.surface_program, "u_checks", static_cast<float>(style.checks));
+    set_uniform(r.surface_program, "u_checker", style.checker_colour);
     glBindVertexArray(r.surface.vao);
     glDrawElements(GL_TRIANGLES, r.surface.count, GL_UNSIGNED_INT, nullptr);
   }
@@ -460,6 +509,11 @@ void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, i
       set_uniform(r.line_program, "u_width", width_px);
       glBindVertexArray(r.overlays[o].vao);
       glDrawArrays(GL_LINES, 0, r.overlays[o].count);
+    }
+    if (style.markers && r.marker_curves.count > 0) {
+      set_uniform(r.line_program, "u_width", style.line_width_px * pixel_scale);
+      glBindVertexArray(r.marker_curves.vao);
+      glDrawArrays(GL_LINES, 0, r.marker_curves.count);
     }
     if (style.markers && r.markers.count > 0) {
       glUseProgram(r.marker_program);

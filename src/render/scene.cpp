@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "stitch/tess/tessellate.hpp"
 
@@ -20,7 +21,8 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
   const auto wanted = [&](Overlay o) { return overlays[static_cast<int>(o)]; };
   auto& lines = scene.overlays;
   if (wanted(Overlay::mesh)) lines[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
-  if (wanted(Overlay::kgons)) lines[static_cast<int>(Overlay::kgons)] = kgon_lines(bezier.kgons);
+  if (wanted(Overlay::kgons))
+    lines[static_cast<int>(Overlay::kgons)] = kgon_lines(mesh, bezier.kgons);
   if (wanted(Overlay::nets)) {
     lines[static_cast<int>(Overlay::nets)] = control_net_lines(bezier.nets, bezier.corners);
   }
@@ -28,17 +30,38 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
     lines[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
   }
   scene.extraordinary = extraordinary_points(mesh, bezier.kgons);
+  scene.sharp_curves = sharp_curve_lines(mesh, surface, resolution);
   for (const Vec3& p : scene.surface.positions) scene.bounds.extend(p);
   for (const Vertex v : mesh.vertices()) scene.bounds.extend(mesh.position(v));
   return scene;
 }
 
+std::vector<Eigen::Vector2d> surface_texcoords(const SurfaceMesh& surface, const UvSurface& uvs) {
+  if (surface.uv.size() != surface.positions.size() ||
+      surface.patch.size() != surface.positions.size())
+    throw std::invalid_argument("texture coordinates need every sample's patch and (u, v)");
+  std::vector<Eigen::Vector2d> out(surface.positions.size());
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = uvs.evaluate(Corner(surface.patch[i]), surface.uv[i].x(), surface.uv[i].y());
+  return out;
+}
+
+void add_texcoords(SceneGeometry& scene, const HalfedgeMesh& mesh, const CornerUvs& corner_uvs,
+                   const UvSurface& uvs) {
+  scene.surface_texcoords = surface_texcoords(scene.surface, uvs);
+  scene.input_texcoords = input_face_texcoords(mesh, corner_uvs);
+}
+
 void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_polygons) {
   renderer.set_surface(input_polygons ? scene.input : scene.surface);
+  const auto& texcoords = input_polygons ? scene.input_texcoords : scene.surface_texcoords;
+  if (!texcoords.empty()) renderer.set_surface_texcoords(texcoords);
   for (int o = 0; o < num_overlays; ++o) {
     renderer.set_overlay(static_cast<Overlay>(o), scene.overlays[o]);
   }
-  renderer.set_markers(extraordinary_markers(scene.extraordinary));
+  MarkerSet markers = extraordinary_markers(scene.extraordinary);
+  markers.curves = scene.sharp_curves;
+  renderer.set_markers(markers);
 }
 
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,

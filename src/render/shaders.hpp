@@ -8,24 +8,29 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in int a_patch;
 layout(location = 3) in int a_level;
+layout(location = 4) in vec2 a_texcoord;
 uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
+out vec2 v_texcoord;
 flat out int v_patch;
 flat out int v_level;
 void main() {
   v_position = a_position;
   v_normal = a_normal;
+  v_texcoord = a_texcoord;
   v_patch = a_patch;
   v_level = a_level;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
 )";
 
-// Modes: 0 shaded, 1 zebra, 2 isophote, 3 levels, 4 patches (the order of ShadingMode).
+// Modes: 0 shaded, 1 zebra, 2 isophote, 3 levels, 4 patches, 5 checker (the order of
+// ShadingMode).
 inline constexpr const char* surface_fragment = R"(#version 330 core
 in vec3 v_position;
 in vec3 v_normal;
+in vec2 v_texcoord;
 flat in int v_patch;
 flat in int v_level;
 uniform int u_mode;
@@ -35,6 +40,8 @@ uniform vec3 u_stripe_x;     // the zebra environment: stripes are the lines of 
 uniform vec3 u_stripe_y;     // atan(r.y, r.x) of the reflected ray r in this (x, y) frame
 uniform float u_stripes;
 uniform vec3 u_base;
+uniform float u_checks;      // squares per side of the texture's unit square
+uniform vec3 u_checker;      // the colour of the squares that are not u_base
 out vec4 frag_colour;
 
 const float TAU = 6.28318530718;
@@ -49,6 +56,17 @@ float stripe(float s, float width) {
   float tri = abs(fract(s) - 0.5) * 2.0;
   float w = clamp(width * 2.0, 1e-4, 1.0);
   return smoothstep(0.5 - 0.5 * w, 0.5 + 0.5 * w, tri);
+}
+
+// 1 on the squares with an odd sum of cell indices, 0 on the others: the checkerboard of unit
+// cells box-filtered over the pixel's footprint, so squares far away or seen at grazing angles
+// fade to the mean of the two colours instead of aliasing into moire.
+float checker(vec2 p) {
+  vec2 w = max(fwidth(p), vec2(1e-4));
+  // Per axis, the mean over [p - w/2, p + w/2] of the square wave of period 2 (+1, then -1).
+  vec2 a = abs(fract((p - 0.5 * w) * 0.5) - 0.5), b = abs(fract((p + 0.5 * w) * 0.5) - 0.5);
+  vec2 i = 2.0 * (a - b) / w;
+  return 0.5 - 0.5 * i.x * i.y;
 }
 
 void main() {
@@ -85,6 +103,8 @@ void main() {
       base = levels[clamp(v_level, 0, 7)];
     } else if (u_mode == 4) {
       base = hsv(fract(float(v_patch) * 0.6180339887), 0.45, 0.95);
+    } else if (u_mode == 5) {
+      base = mix(u_base, u_checker, checker(v_texcoord * u_checks));
     }
     colour = base * (0.25 + 0.75 * diffuse) + vec3(0.25 * specular);
   }
@@ -96,26 +116,31 @@ void main() {
 inline constexpr const char* line_vertex = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_colour;
+layout(location = 2) in float a_width;
 uniform mat4 u_view_projection;
 uniform float u_depth_bias;
 out vec3 g_colour;
+out float g_width;
 void main() {
   g_colour = a_colour;
+  g_width = a_width;
   gl_Position = u_view_projection * vec4(a_position, 1.0);
   gl_Position.z -= u_depth_bias * gl_Position.w;
 }
 )";
 
 // Core profiles do not guarantee lines wider than one pixel: expand each segment into a
-// screen-space quad.
+// screen-space quad, u_width times the segment's own factor (sharp features are wider) wide.
 inline constexpr const char* line_geometry = R"(#version 330 core
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
 in vec3 g_colour[];
+in float g_width[];
 out vec3 f_colour;
 uniform vec2 u_viewport;
 uniform float u_width;
 void main() {
+  float width = u_width * g_width[0];
   vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position;
   if (p0.w <= 0.0 || p1.w <= 0.0) return;
   vec2 half_viewport = 0.5 * u_viewport;
@@ -123,7 +148,7 @@ void main() {
   vec2 d = s1 - s0;
   float len = length(d);
   vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);
-  vec2 along = dir * 0.5 * u_width, across = vec2(-dir.y, dir.x) * 0.5 * u_width;
+  vec2 along = dir * 0.5 * width, across = vec2(-dir.y, dir.x) * 0.5 * width;
   f_colour = g_colour[0];
   gl_Position = vec4(p0.xy + (-along + across) / half_viewport * p0.w, p0.zw); EmitVertex();
   gl_Position = vec4(p0.xy + (-along - across) / half_viewport * p0.w, p0.zw); EmitVertex();

@@ -5,9 +5,15 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "../mesh/mesh_writer.hpp"
 #include "layout.hpp"
+#include "mesh/tinygltf.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "tess/gltf.hpp"
@@ -68,7 +74,74 @@ void write_stream(const std::string& path, const io_detail::MeshStream& stream,
   });
 }
 
+/// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.
+std::int64_t grid_size(int resolution) {
+  return static_cast<std::int64_t>(resolution + 1) * (resolution + 1);
+}
+
+/// The UVs of every corner's (n + 1)^2 grid, corner after corner (SurfaceMesh order unwelded).
+std::vector<Eigen::Vector2d> grid_uvs(const UvSurface& uvs, const std::vector<Corner>& corners,
+                                      int resolution) {
+  const std::int64_t per = grid_size(resolution);
+  std::vector<Eigen::Vector2d> out(static_cast<size_t>(per) * corners.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, corners.size(), 64),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t k = r.begin(); k < r.end(); ++k)
+                        uvs.evaluate_grid(corners[k], resolution, out.data() + k * per);
+                    });
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!out[i].allFinite())
+      throw MeshError(fmt::format("texture coordinate {} is not finite", i + 1));
+  return out;
+}
+
+/// The welded tessellation as glTF needs it: one UV per vertex, so a vertex whose patches give
+/// it different UVs (a seam) is split, one copy per distinct UV as glTF stores it (float). A
+/// vertex is split only where the floats differ: elsewhere the patches agree to round-off.
+struct TexturedMesh {
+  SurfaceMesh mesh;                        ///< positions, normals and quads only
+  std::vector<Eigen::Vector2f> texcoords;  ///< glTF's: v down from the top
+};
+
+TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                           const UvSurface& uvs) {
+  const SurfaceMesh whole = tessellate(mesh, surface, {resolution, true, false});
+  const std::vector<Eigen::Vector2d> grid = grid_uvs(uvs, surface.corners(), resolution);
+  const int n = resolution;
+  TexturedMesh out;
+  out.mesh.quads.resize(whole.quads.size());
+  // Copies of welded vertex v: head[v], then along `chain`; in order of first use by the quads,
+  // so the file does not depend on threads.
+  std::vector<int> head(whole.positions.size(), -1), chain;
+  for (size_t q = 0; q < whole.quads.size(); ++q) {
+    const auto k = static_cast<std::int64_t>(q / (static_cast<size_t>(n) * n));
+    const int cell = static_cast<int>(q % (static_cast<size_t>(n) * n));
+    const int i = cell / n, j = cell % n;
+    const std::array<std::array<int, 2>, 4> at{{{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+    for (int m = 0; m < 4; ++m) {
+      const Eigen::Vector2d& uv = grid[k * grid_size(n) + at[m][0] * (n + 1) + at[m][1]];
+      const Eigen::Vector2f st(static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y()));
+      const int v = whole.quads[q][m];
+      int* link = &head[v];
+      while (*link >= 0 && out.texcoords[*link] != st) link = &chain[*link];
+      if (*link < 0) {
+        *link = static_cast<int>(out.mesh.positions.size());
+        out.mesh.positions.push_back(whole.positions[v]);
+        out.mesh.normals.push_back(whole.normals[v]);
+        out.texcoords.push_back(st);
+        chain.push_back(-1);
+      }
+      out.mesh.quads[q][m] = *link;
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+bool surface_file_takes_uvs(const std::string& path) {
+  return file_extension(path) == ".obj" || is_gltf(path);
+}
 
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
                         const SurfaceFileOptions& options) {
@@ -88,6 +161,14 @@ void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
 SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
                                        const Surface& surface, int resolution,
                                        const SurfaceFileOptions& options) {
+  if (is_gltf(path) && options.uvs) {
+    const TexturedMesh whole = textured_mesh(mesh, surface, resolution, *options.uvs);
+    check_surface(path, whole.mesh);
+    write_gltf(path, whole.mesh, file_extension(path) == ".glb", &whole.texcoords);
+    return {static_cast<std::int64_t>(whole.mesh.positions.size()),
+            static_cast<std::int64_t>(whole.mesh.quads.size()),
+            static_cast<std::int64_t>(whole.texcoords.size())};
+  }
   if (is_gltf(path)) {  // glTF holds its buffer whole: tessellate, then write
     const SurfaceMesh whole = tessellate(mesh, surface, {resolution, true});
     write_surface_mesh(path, whole, options);
@@ -116,6 +197,34 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
     evaluate(begin, end, block.positions.data(), block.normals.data());
     if (!stream.has_normals) block.normals.clear();
   };
+  // OBJ's `vt` are numbered apart from `v`: one per grid sample of every patch (corner after
+  // corner, row-major like the unwelded samples), so each side of a seam has its own, while the
+  // positions stay welded.
+  const bool texcoords = options.uvs && ext == ".obj";
+  const int n = resolution;
+  const std::int64_t per_patch = grid_size(n);
+  if (texcoords) {
+    stream.num_texcoords = per_patch * static_cast<std::int64_t>(surface.corners().size());
+    if (stream.num_texcoords > std::numeric_limits<int>::max())
+      throw MeshError(fmt::format(
+          "cannot write {}: {} texture coordinates are more than 2^31 - 1; use a lower resolution",
+          path, stream.num_texcoords));
+    stream.texcoords = [&](std::int64_t begin, std::int64_t end,
+                           std::vector<Eigen::Vector2d>& block) {
+      block.resize(static_cast<size_t>(end - begin));
+      std::vector<Eigen::Vector2d> grid(static_cast<size_t>(per_patch));
+      for (std::int64_t k = begin / per_patch; k * per_patch < end; ++k) {
+        options.uvs->evaluate_grid(surface.corners()[static_cast<size_t>(k)], n, grid.data());
+        for (std::int64_t s = std::max(begin, k * per_patch);
+             s < std::min(end, (k + 1) * per_patch); ++s) {
+          const Eigen::Vector2d& uv = grid[static_cast<size_t>(s - k * per_patch)];
+          if (!uv.allFinite())
+            throw MeshError(fmt::format("texture coordinate {} is not finite", s + 1));
+          block[static_cast<size_t>(s - begin)] = uv;
+        }
+      }
+    };
+  }
   stream.faces = [&](std::int64_t begin, std::int64_t end, io_detail::FaceBlock& block) {
     block.sizes.assign(static_cast<size_t>(end - begin), 4);
     block.indices.resize(4 * block.sizes.size());
@@ -123,6 +232,21 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
       const auto quad = layout.quad(q);
       for (int k = 0; k < 4; ++k)
         block.indices[4 * static_cast<size_t>(q - begin) + k] = static_cast<int>(quad[k]);
+    }
+    if (!texcoords) return;
+    block.texcoords.resize(block.indices.size());
+    const std::int64_t cells = static_cast<std::int64_t>(n) * n;
+    for (std::int64_t q = begin; q < end; ++q) {
+      const std::int64_t k = q / cells;
+      const auto i = static_cast<int>(q % cells / n), j = static_cast<int>(q % cells % n);
+      const auto at = [&](int a, int b) {
+        return static_cast<int>(k * per_patch + static_cast<std::int64_t>(a) * (n + 1) + b);
+      };
+      int* out = block.texcoords.data() + 4 * static_cast<size_t>(q - begin);
+      out[0] = at(i, j);  // the order of TessellationLayout::quad
+      out[1] = at(i + 1, j);
+      out[2] = at(i + 1, j + 1);
+      out[3] = at(i, j + 1);
     }
   };
   std::vector<Vec3> positions;
@@ -137,7 +261,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
                       });
   }
   write_stream(path, stream, positions, options);
-  return {layout.num_vertices(), layout.num_quads()};
+  return {layout.num_vertices(), layout.num_quads(), stream.num_texcoords};
 }
 
 std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bool welded,
@@ -157,13 +281,29 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
   return bytes;
 }
 
-void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh) {
+void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
+                               const UvSurface* uvs) {
   check_surface(path, mesh);
   const size_t nv = mesh.positions.size();
   if (mesh.uv.size() != nv || mesh.patch.size() != nv)
     throw MeshError(fmt::format("cannot write {}: the samples lack (u, v) or patch numbers", path));
   if (file_extension(path) != ".ply")
     throw MeshError(fmt::format("cannot write {}: samples are written as .ply only", path));
+  std::vector<Eigen::Vector2d> st;
+  if (uvs) {
+    st.resize(nv);
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, nv, 4096), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i < r.end(); ++i)
+            st[i] = uvs->evaluate(Corner(mesh.patch[i]), mesh.uv[i].x(), mesh.uv[i].y());
+        });
+    for (size_t i = 0; i < nv; ++i)
+      if (!st[i].allFinite())
+        throw MeshError(fmt::format("cannot write {}: sample {} has non-finite texture coordinates",
+                                    path, i + 1));
+  }
+  // s t come after `patch`, so readers that know the records without them read on unchanged.
+  const size_t record_size = uvs ? 84 : 68;
   io_detail::write_mesh_file(path, true, [&](std::ostream& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment " << kComment
         << "\ncomment patch = corner (half-edge index) of the input mesh; u v = position in "
@@ -171,18 +311,25 @@ void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh)
         << nv << '\n';
     for (const char* name : {"x", "y", "z", "nx", "ny", "nz", "u", "v"})
       out << "property double " << name << '\n';
-    out << "property int patch\nelement face " << mesh.quads.size()
+    out << "property int patch\n";
+    if (uvs) out << "property double s\nproperty double t\n";
+    out << "element face " << mesh.quads.size()
         << "\nproperty list uchar int vertex_indices\nend_header\n";
     io_detail::write_blocks(
         out, static_cast<std::int64_t>(nv), 16384,
         [&](std::int64_t begin, std::int64_t end, io_detail::OutputBuffer& bytes) {
-          io_detail::LittleEndianWriter record(bytes, static_cast<size_t>(end - begin) * 68);
+          io_detail::LittleEndianWriter record(bytes,
+                                               static_cast<size_t>(end - begin) * record_size);
           for (std::int64_t i = begin; i < end; ++i) {
             record.put(mesh.positions[i]);
             record.put(mesh.normals[i]);
             record.put(mesh.uv[i].x());
             record.put(mesh.uv[i].y());
             record.put(static_cast<std::int32_t>(mesh.patch[i]));
+            if (!st.empty()) {
+              record.put(st[i].x());
+              record.put(st[i].y());
+            }
           }
         });
     io_detail::write_blocks(

@@ -45,7 +45,7 @@ int add_accessor(tinygltf::Model& model, int view, int component, int type, size
 
 /// glTF stores 32-bit floats; the normals are normalized again after rounding so that they are
 /// unit to float precision, as the specification asks.
-tinygltf::Model make_model(const SurfaceMesh& mesh) {
+tinygltf::Model make_model(const SurfaceMesh& mesh, const std::vector<Eigen::Vector2f>* texcoords) {
   const size_t nv = mesh.positions.size();
   std::vector<float> positions(3 * nv), normals(3 * nv);
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
@@ -69,6 +69,8 @@ tinygltf::Model make_model(const SurfaceMesh& mesh) {
   model.buffers.emplace_back();
   const int position_view = add_view(model, positions, TINYGLTF_TARGET_ARRAY_BUFFER);
   const int normal_view = add_view(model, normals, TINYGLTF_TARGET_ARRAY_BUFFER);
+  const int texcoord_view =
+      texcoords ? add_view(model, *texcoords, TINYGLTF_TARGET_ARRAY_BUFFER) : -1;
   const int index_view = add_view(model, indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
 
   tinygltf::Primitive primitive;
@@ -79,6 +81,9 @@ tinygltf::Model make_model(const SurfaceMesh& mesh) {
   model.accessors.back().maxValues = hi;
   primitive.attributes["NORMAL"] =
       add_accessor(model, normal_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+  if (texcoords)
+    primitive.attributes["TEXCOORD_0"] =
+        add_accessor(model, texcoord_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, nv);
   primitive.indices = add_accessor(model, index_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
                                    TINYGLTF_TYPE_SCALAR, indices.size());
   tinygltf::Mesh gltf_mesh;
@@ -97,10 +102,14 @@ tinygltf::Model make_model(const SurfaceMesh& mesh) {
 
 }  // namespace
 
-void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary) {
+void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
+                const std::vector<Eigen::Vector2f>* texcoords) {
   if (mesh.positions.empty() || mesh.quads.empty())
     throw MeshError(fmt::format("cannot write {}: the surface is empty", path));
-  tinygltf::Model model = make_model(mesh);
+  if (texcoords && texcoords->size() != mesh.positions.size())
+    throw MeshError(fmt::format("cannot write {}: {} texture coordinates for {} vertices", path,
+                                texcoords->size(), mesh.positions.size()));
+  tinygltf::Model model = make_model(mesh, texcoords);
   tinygltf::TinyGLTF writer;
   if (binary) {
     write_file_atomically(

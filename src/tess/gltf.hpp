@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "stitch/tess/surface_mesh.hpp"
 
@@ -9,6 +10,9 @@ namespace stitch {
 
 /// `binary`: one .glb file. Otherwise a .gltf file and its buffer beside it, named like the
 /// .gltf with the extension .bin (written first, so the .gltf never refers to a missing file).
-void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary);
+/// `texcoords`, if given, holds one UV per vertex in glTF's convention (v down from the top) and
+/// becomes TEXCOORD_0.
+void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
+                const std::vector<Eigen::Vector2f>* texcoords = nullptr);
 
 }  // namespace stitch

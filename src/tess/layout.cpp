@@ -28,7 +28,7 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
         vertices_.push_back(Vertex(v));
       }
     for (int f = 0; f < mesh.face_capacity(); ++f)
-      if (!mesh.is_deleted(Face(f))) {
+      if (!mesh.is_deleted(Face(f)) && !mesh.is_hole(Face(f))) {
         face_slot_[f] = static_cast<int>(faces_.size());
         faces_.push_back(Face(f));
       }
@@ -37,10 +37,20 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
         edge_slot_[e] = static_cast<int>(edges_.size());
         edges_.push_back(Edge(e));
       }
+    // On a boundary, the half of edge(prev(c)) at c's vertex has no patch across to own it;
+    // those halves get blocks of their own after the corners' blocks.
+    extra_half_.assign(mesh.halfedge_capacity(), -1);
+    int extra = 0;
+    for (Corner c : corners)
+      if (mesh.is_hole(mesh.rotate_ccw(c))) {
+        extra_half_[c.idx] = extra++;
+        extra_corner_.push_back(corner_index(c));
+      }
     first_face_ = static_cast<std::int64_t>(vertices_.size());
     first_edge_ = first_face_ + static_cast<std::int64_t>(faces_.size());
     first_block_ = first_edge_ + static_cast<std::int64_t>(edges_.size());
-    num_vertices_ = first_block_ + num_corners * (per_side * per_side + 2 * per_side);
+    first_extra_ = first_block_ + num_corners * (per_side * per_side + 2 * per_side);
+    num_vertices_ = first_extra_ + static_cast<std::int64_t>(extra) * per_side;
   }
   // Output files and SurfaceMesh number vertices with 32-bit ints.
   if (num_vertices_ > std::numeric_limits<int>::max())
@@ -63,7 +73,10 @@ std::int64_t TessellationLayout::vertex(int k, int i, int j) const {
   // rotate_ccw(c)'s edge. Side i = n runs from the middle of edge(c) to the face centre; side
   // j = n is prev(c)'s.
   if (j == 0) return block(k) + (i - 1);
-  if (i == 0) return block(corner_index(mesh_.rotate_ccw(c))) + (j - 1);
+  if (i == 0) {
+    if (const int x = extra_half_[c.idx]; x >= 0) return first_extra_ + x * side + (j - 1);
+    return block(corner_index(mesh_.rotate_ccw(c))) + (j - 1);
+  }
   if (i == n) return block(k) + side + (j - 1);
   if (j == n) return block(corner_index(mesh_.prev(c))) + side + (i - 1);
   return block(k) + 2 * side + (i - 1) * side + (j - 1);
@@ -97,7 +110,7 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
     const Corner start = mesh_.halfedge(vertices_[vertex]);
     Corner c = start;
     do {
-      out.push_back({corner_index(c), 0, 0});
+      if (corner_index(c) >= 0) out.push_back({corner_index(c), 0, 0});
       c = mesh_.rotate_ccw(c);
     } while (c != start);
   } else if (vertex < first_edge_) {
@@ -113,9 +126,14 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
     const Edge e = edges_[vertex - first_edge_];
     for (int side = 0; side < 2; ++side) {
       const Corner h = HalfedgeMesh::halfedge(e, side);
+      if (corner_index(h) < 0) continue;  // a hole
       out.push_back({corner_index(h), n, 0});
       out.push_back({corner_index(mesh_.next(h)), 0, n});
     }
+  } else if (vertex >= first_extra_) {
+    const std::int64_t at = vertex - first_extra_;
+    const auto x = static_cast<int>(at / (n - 1));
+    out.push_back({extra_corner_[x], 0, static_cast<int>(at % (n - 1)) + 1});
   } else {
     const std::int64_t at = vertex - first_block_;
     const std::int64_t per_corner = static_cast<std::int64_t>(n) * n - 1;
@@ -124,7 +142,8 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
     const int side = n - 1;
     if (r < side) {  // the half of edge(c) at the vertex, shared with rotate_cw(c)'s side i = 0
       out.push_back({k, r + 1, 0});
-      out.push_back({corner_index(mesh_.rotate_cw(corners_[k])), 0, r + 1});
+      if (const int across = corner_index(mesh_.rotate_cw(corners_[k])); across >= 0)
+        out.push_back({across, 0, r + 1});
     } else if (r < 2 * side) {  // the spoke, shared with next(c)'s side j = n
       const int m = r - side + 1;
       out.push_back({k, n, m});

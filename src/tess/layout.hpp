@@ -30,7 +30,8 @@ struct SampleAttributes {
 
 /// Output vertices, in order: mesh vertices, face centres, edge midpoints, then corner after
 /// corner the n - 1 samples of its edge half, the n - 1 of its spoke and its (n - 1)^2 interior
-/// samples (so a range of them stays on a few patches at a time).
+/// samples (so a range of them stays on a few patches at a time), then the n - 1 samples of each
+/// boundary half that no corner's block holds. Holes have no samples.
 /// Unwelded: every corner's own grid, corner after corner, row-major (i, then j).
 class TessellationLayout {
  public:
@@ -73,7 +74,11 @@ class TessellationLayout {
   std::vector<Edge> edges_;
   /// Where each group of output vertices starts; per corner, a block of n^2 - 1: its edge half
   /// (n - 1), its spoke (n - 1), its interior ((n - 1)^2).
-  std::int64_t first_face_ = 0, first_edge_ = 0, first_block_ = 0, num_vertices_ = 0;
+  std::int64_t first_face_ = 0, first_edge_ = 0, first_block_ = 0, first_extra_ = 0,
+               num_vertices_ = 0;
+  /// Boundary halves: by half-edge, the number of the extra block of corner c's side i = 0
+  /// (-1: owned by rotate_ccw(c)'s block); by that number, the corner's index.
+  std::vector<int> extra_half_, extra_corner_;
   [[nodiscard]] std::int64_t block(int k) const {
     return first_block_ + static_cast<std::int64_t>(k) * (static_cast<std::int64_t>(n_) * n_ - 1);
   }

@@ -20,7 +20,9 @@ bool match_from(const HalfedgeMesh& a, const HalfedgeMesh& b, Halfedge ra, Halfe
       if (map[x.idx] != y.idx) return false;
       continue;
     }
-    if (used[y.idx] || a.origin(x) != b.origin(y)) return false;
+    if (used[y.idx] || a.origin(x) != b.origin(y) || a.is_hole(x) != b.is_hole(y) ||
+        a.sharpness(HalfedgeMesh::edge(x)) != b.sharpness(HalfedgeMesh::edge(y)))
+      return false;
     map[x.idx] = y.idx;
     used[y.idx] = 1;
     stack.push_back({a.next(x), b.next(y)});
@@ -38,7 +40,7 @@ bool same_up_to_renumbering(const HalfedgeMesh& a, const HalfedgeMesh& b) {
   const std::vector<Vertex> va = a.vertices();
   if (va != b.vertices()) return false;
   for (Vertex v : va)
-    if (a.position(v) != b.position(v)) return false;
+    if (a.position(v) != b.position(v) || a.sharpness(v) != b.sharpness(v)) return false;
   std::vector<int> map(a.halfedge_capacity(), -1), used(b.halfedge_capacity(), 0);
   for (Vertex v : va) {
     const Halfedge ra = a.halfedge(v);

@@ -31,8 +31,29 @@ ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) 
           "edge joining them would be a loop",
           i + 1, f.idx + 1, partner_index(i) + 1, g.idx + 1, mesh.origin(lf[i]).idx + 1));
 
+  // An edge still on the boundary afterwards (a hole other than f and g on one side) must not get
+  // a tube edge beside it.
+  auto stays_boundary = [&](Halfedge h) {
+    const Face side = mesh.face(h);
+    return mesh.is_hole(side) && side != f && side != g;
+  };
+  for (int i = 0; i < k; ++i) {
+    const Vertex u = mesh.origin(lf[i]), v = mesh.origin(partner(i));
+    for (Edge y : td::edges_between(mesh, u, v))
+      if (stays_boundary(HalfedgeMesh::halfedge(y, 0)) ||
+          stays_boundary(HalfedgeMesh::halfedge(y, 1)))
+        throw MeshError(fmt::format(
+            "connect-faces: vertices {} and {} are joined by boundary edge {}; a tube edge beside "
+            "it would not read back ({})",
+            u.idx + 1, v.idx + 1, y.idx + 1, td::kBesideBoundary));
+  }
+
   ConnectFacesResult result;
   result.degree = k;
+  // Both faces are removed, so a hole given is closed by the tube (bridging boundary loops);
+  // the quads are surface, which insert_edge only builds between surface faces.
+  mesh.set_hole(f, false);
+  mesh.set_hole(g, false);
   // Checked above: none of these insertions can be refused, so the mesh is never left half-done.
   for (int i = 0; i < k; ++i) {
     const InsertEdgeResult r = insert_edge(mesh, lf[i], partner(i));

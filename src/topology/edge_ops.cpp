@@ -25,6 +25,8 @@ SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e) {
   mesh.set_origin(t, m);
   mesh.set_halfedge(m, g);
   if (mesh.halfedge(b) == t) mesh.set_halfedge(b, gt);
+  // A crease runs on through the new vertex: both halves are the old edge, so both keep its tag.
+  mesh.set_sharpness(HalfedgeMesh::edge(g), mesh.sharpness(e));
   return {m, HalfedgeMesh::edge(g)};
 }
 
@@ -43,6 +45,40 @@ void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
         "make the others loops",
         a.idx + 1, b.idx + 1));
 
+  // a takes every corner of b: if both already touch the boundary and e is not a boundary edge
+  // (whose hole loses one of its two corners there), two boundary loops, or one loop twice,
+  // would meet at a single vertex.
+  auto hole_corners = [&](Vertex v) {
+    int n = 0;
+    for (Halfedge c : mesh.vertex_fan(v)) n += mesh.is_hole(c);
+    return n;
+  };
+  const int holes_after =
+      hole_corners(a) + hole_corners(b) - (mesh.is_hole(h) ? 1 : 0) - (mesh.is_hole(t) ? 1 : 0);
+  if (holes_after > 1)
+    throw MeshError(fmt::format(
+        "collapse-edge: vertices {} and {} both lie on the boundary but edge {} does not; "
+        "merging them would pinch the boundary at one vertex",
+        a.idx + 1, b.idx + 1, e.idx + 1));
+  for (Halfedge side : {h, t})
+    if (mesh.is_hole(side) && mesh.degree(mesh.face(side)) <= 3)
+      throw MeshError(fmt::format(
+          "collapse-edge: hole {} would be left with 2 sides, a slit that a written file cannot "
+          "tell from a closed seam",
+          mesh.face(side).idx + 1));
+  // Edges from a and b to a common neighbour become parallel: fine between faces, but not when
+  // one of them is on the boundary.
+  for (Halfedge x : mesh.vertex_fan(b)) {
+    const Vertex c = mesh.target(x);
+    if (c == a) continue;
+    for (Edge y : td::edges_between(mesh, a, c))
+      if (mesh.is_boundary(y) || mesh.is_boundary(HalfedgeMesh::edge(x)))
+        throw MeshError(fmt::format(
+            "collapse-edge: vertices {} and {} are both joined to vertex {}, on the boundary; "
+            "the two edges would join the same vertices and would not read back ({})",
+            a.idx + 1, b.idx + 1, c.idx + 1, td::kBesideBoundary));
+  }
+
   const Halfedge ph = mesh.prev(h), nh = mesh.next(h), pt = mesh.prev(t), nt = mesh.next(t);
   for (Halfedge o : mesh.vertex_fan(b))
     if (o != t) mesh.set_origin(o, a);
@@ -54,6 +90,9 @@ void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
   }
   if (mesh.halfedge(a) == h) mesh.set_halfedge(a, nt);
   mesh.position(a) = 0.5 * (mesh.position(a) + mesh.position(b));
+  // The merged vertex stands for both: a corner tag on either survives, as when a file tags one
+  // vertex twice.
+  if (mesh.sharpness(b) > mesh.sharpness(a)) mesh.set_sharpness(a, mesh.sharpness(b));
   mesh.delete_vertex(b);
   mesh.delete_edge(e);
 }

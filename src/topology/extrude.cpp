@@ -77,6 +77,12 @@ ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double s
     mesh.link(rim[i], rim[j]);
     mesh.set_halfedge(top[i], rim[i]);
   }
+  // The top is the face moved: its border keeps the tags it had, and so does the base, which
+  // still bounds the faces around. On a hole the top stays the hole: the boundary moves out.
+  for (int i = 0; i < k; ++i) {
+    mesh.set_sharpness(HalfedgeMesh::edge(rim[i]), mesh.sharpness(HalfedgeMesh::edge(loop[i])));
+    mesh.set_sharpness(top[i], mesh.sharpness(mesh.origin(loop[i])));
+  }
   mesh.assign_loop(rim[0], f);
   return result;
 }

@@ -34,6 +34,20 @@ InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b) {
         "insert-edge: both corners are at vertex {}; the edge would be a loop", va.idx + 1));
 
   const Face fa = mesh.face(a), fb = mesh.face(b);
+  // Split or merged, a hole would end up on both sides of the new edge, which then bounds no
+  // surface; filling the hole first says what the user means.
+  for (Face f : {fa, fb})
+    if (mesh.is_hole(f))
+      throw MeshError(fmt::format(
+          "insert-edge: face {} is a hole (a boundary loop of the surface); an edge into it would "
+          "have the hole on both sides (fill-hole {} makes it a face first)",
+          f.idx + 1, f.idx + 1));
+  for (Edge x : td::edges_between(mesh, va, vb))
+    if (mesh.is_boundary(x))
+      throw MeshError(fmt::format(
+          "insert-edge: vertices {} and {} are joined by boundary edge {}; a second edge beside "
+          "it would not read back ({})",
+          va.idx + 1, vb.idx + 1, x.idx + 1, td::kBesideBoundary));
   const Halfedge pa = mesh.prev(a), pb = mesh.prev(b);
   const Halfedge h = mesh.add_edge(va, vb), t = HalfedgeMesh::twin(h);
   // Splice: ... pa -> h -> b ...   and   ... pb -> t -> a ...
@@ -73,6 +87,16 @@ DeleteEdgeResult delete_edge(HalfedgeMesh& mesh, Edge e) {
   td::check_edge(mesh, e, "delete-edge");
   const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
   const Vertex va = mesh.origin(h), vb = mesh.origin(t);
+  // The merged face would hold both a hole and a surface face: neither reading (the face
+  // swallowed by the hole, or the hole filled) is what deleting one edge says.
+  if (mesh.is_boundary(e)) {
+    const bool hole_h = mesh.is_hole(h);
+    const Face hole = mesh.face(hole_h ? h : t), face = mesh.face(hole_h ? t : h);
+    throw MeshError(fmt::format(
+        "delete-edge: edge {} lies on the boundary (face {} is a hole); deleting it would merge "
+        "face {} into the hole (open-face {} does that)",
+        e.idx + 1, hole.idx + 1, face.idx + 1, face.idx + 1));
+  }
   for (Vertex v : {va, vb})
     if (mesh.valence(v) <= 2)
       throw MeshError(fmt::format(

@@ -14,6 +14,7 @@
 #include "stitch/topology/delete_face.hpp"
 #include "stitch/topology/edge_ops.hpp"
 #include "stitch/topology/extrude.hpp"
+#include "stitch/topology/features.hpp"
 #include "stitch/topology/insert_edge.hpp"
 #include "stitch/topology/remesh.hpp"
 
@@ -86,9 +87,38 @@ void expect_args(const std::vector<std::string_view>& words, size_t min, size_t 
         fmt::format("{} takes {}; got {} argument{}", words[0], usage, n, n == 1 ? "" : "s"));
 }
 
+/// Sharpness as the user wrote it; a sharpness is a number like any other here, the operator
+/// says which values it refuses.
+double parse_sharpness(std::string_view text) {
+  const std::string s(text);
+  char* end = nullptr;
+  const double value = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size() || std::isnan(value))
+    throw MeshError(
+        fmt::format("'{}' is not a valid sharpness (a number >= 0; {} or more is "
+                    "infinitely sharp)",
+                    limits::quoted(text), infinitely_sharp));
+  return value;
+}
+
+std::string sharpness_text(double s) {
+  return s >= infinitely_sharp ? fmt::format("{} (infinitely sharp)", s) : fmt::format("{}", s);
+}
+
 std::string stats_text(const TopologyStats& s) {
-  return fmt::format("V {} E {} F {}, Euler {}, genus {}, components {}", s.vertices, s.edges,
-                     s.faces, s.euler, s.genus, s.components);
+  std::string text = fmt::format("V {} E {} F {}, Euler {}, genus {}, components {}", s.vertices,
+                                 s.edges, s.faces, s.euler, s.genus, s.components);
+  // Only when present, so closed untagged meshes print exactly as before.
+  if (s.boundary_loops > 0) text += fmt::format(", boundary loops {}", s.boundary_loops);
+  if (s.crease_edges > 0) text += fmt::format(", creases {}", s.crease_edges);
+  if (s.corner_vertices > 0) text += fmt::format(", corners {}", s.corner_vertices);
+  return text;
+}
+
+std::string face_list(const std::vector<Face>& faces) {
+  std::string out;
+  for (Face f : faces) out += (out.empty() ? "" : ", ") + std::to_string(f.idx + 1);
+  return out;
 }
 
 OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, Census census) {
@@ -154,6 +184,46 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, 
     report.what = fmt::format("face {} deleted: {} vertices, {} edges, {} faces fewer", f.idx + 1,
                               before.vertices - after.vertices, before.edges - after.edges,
                               before.faces - after.faces);
+  } else if (op == "open-face") {
+    expect_args(w, 1, 1, "a face: open-face F");
+    const Face f = face_arg(mesh, w[1]);
+    const OpenFaceResult r = open_face(mesh, f);
+    if (r.merged.empty()) {
+      report.what = fmt::format("face {} is now a hole ({} sides)", f.idx + 1, mesh.degree(f));
+    } else {
+      report.what = fmt::format(
+          "face {} opened and merged with hole{} {} into hole{} {} ({} sides); removed {} edge{}",
+          f.idx + 1, r.merged.size() == 1 ? "" : "s", face_list(r.merged),
+          r.holes.size() == 1 ? "" : "s", face_list(r.holes), mesh.degree(r.holes.front()),
+          r.removed_edges, r.removed_edges == 1 ? "" : "s");
+      if (r.removed_vertices > 0)
+        report.what += fmt::format(" and {} vertex{}", r.removed_vertices,
+                                   r.removed_vertices == 1 ? "" : "es");
+    }
+  } else if (op == "fill-hole") {
+    expect_args(w, 1, 1, "a hole face: fill-hole F");
+    const Face f = face_arg(mesh, w[1]);
+    fill_hole(mesh, f);
+    report.what = fmt::format("hole {} filled: now a face ({} sides)", f.idx + 1, mesh.degree(f));
+  } else if (op == "crease") {
+    expect_args(w, 3, 3, "an edge and a sharpness: crease V W[@F] SHARPNESS");
+    const Edge e = parse_edge(mesh, w[1], w[2]);
+    const double sharpness = parse_sharpness(w[3]);
+    const double old = mesh.sharpness(e);
+    set_crease(mesh, e, sharpness);
+    const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+    report.what =
+        fmt::format("edge {} (vertices {}-{}) sharpness {} -> {}{}", e.idx + 1,
+                    mesh.origin(h).idx + 1, mesh.target(h).idx + 1, old, sharpness_text(sharpness),
+                    mesh.is_boundary(e) ? " (a boundary edge: sharp anyway)" : "");
+  } else if (op == "corner") {
+    expect_args(w, 2, 2, "a vertex and a sharpness: corner V SHARPNESS");
+    const Vertex v = vertex_arg(mesh, w[1]);
+    const double sharpness = parse_sharpness(w[2]);
+    const double old = mesh.sharpness(v);
+    set_corner(mesh, v, sharpness);
+    report.what =
+        fmt::format("vertex {} sharpness {} -> {}", v.idx + 1, old, sharpness_text(sharpness));
   } else if (op == "doo-sabin" || op == "vertex-insertion" || op == "catmull-clark" ||
              op == "dual") {
     expect_args(w, 0, 0, "no arguments");
@@ -172,7 +242,8 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, 
     throw MeshError(
         fmt::format("unknown operation '{}' (known: insert-edge, delete-edge, "
                     "subdivide-edge, collapse-edge, extrude-face, connect-faces, "
-                    "delete-face, doo-sabin, vertex-insertion, catmull-clark, dual)",
+                    "delete-face, open-face, fill-hole, crease, corner, doo-sabin, "
+                    "vertex-insertion, catmull-clark, dual)",
                     limits::quoted(op)));
   }
   if (census == Census::full) {
@@ -306,6 +377,10 @@ std::vector<std::string> operation_synopsis() {
           "extrude-face F DIST [SCALE]",
           "connect-faces F G [TWIST]",
           "delete-face F",
+          "open-face F",
+          "fill-hole F",
+          "crease V W[@F] SHARPNESS",
+          "corner V SHARPNESS",
           "doo-sabin",
           "vertex-insertion",
           "catmull-clark",

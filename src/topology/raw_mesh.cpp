@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
+
 #include "stitch/mesh/validate.hpp"
 
 namespace stitch::topology_detail {
@@ -47,6 +50,91 @@ std::vector<Edge> edges_between(const HalfedgeMesh& mesh, Vertex a, Vertex b) {
   for (Halfedge h : mesh.vertex_fan(a))
     if (mesh.target(h) == b) out.push_back(HalfedgeMesh::edge(h));
   return out;
+}
+
+EdgeRemoval plan_edge_removal(const HalfedgeMesh& m, std::vector<std::uint8_t> gone) {
+  EdgeRemoval plan;
+  plan.gone = std::move(gone);
+  auto removed = [&](Halfedge x) { return plan.gone[HalfedgeMesh::edge(x).idx] != 0; };
+  // The successor of a kept half-edge x is found by turning clockwise around target(x) past the
+  // removed edges. twin(x) is kept, so this terminates.
+  plan.next.assign(m.halfedge_capacity(), -1);
+  const std::vector<Halfedge> halfedges = m.halfedges();
+  auto recompute = [&] {
+    for (Halfedge x : halfedges) {
+      if (removed(x)) continue;
+      Halfedge n = m.next(x);
+      while (removed(n)) n = m.rotate_cw(n);
+      plan.next[x.idx] = n.idx;
+    }
+  };
+  for (bool dangling = true; dangling;) {
+    recompute();
+    dangling = false;
+    for (Halfedge x : halfedges)
+      if (!removed(x) && plan.next[x.idx] == HalfedgeMesh::twin(x).idx) {
+        plan.gone[HalfedgeMesh::edge(x).idx] = 1;
+        dangling = true;
+      }
+  }
+  for (Halfedge x : halfedges)
+    if (!removed(x)) plan.kept.push_back(x);
+  for (Edge e : m.edges())
+    if (plan.gone[e.idx])
+      for (int s = 0; s < 2; ++s)
+        plan.touched_faces.insert(m.face(HalfedgeMesh::halfedge(e, s)).idx);
+  return plan;
+}
+
+std::vector<Face> remove_edges(HalfedgeMesh& m, const EdgeRemoval& plan) {
+  const int nh = m.halfedge_capacity();
+  for (Halfedge x : plan.kept) m.link(x, Halfedge(plan.next[x.idx]));
+  std::vector<std::uint8_t> visited(nh, 0);
+  struct Loop {
+    int min_face;
+    Halfedge first;
+  };
+  std::vector<Loop> loops;
+  for (Halfedge x : plan.kept) {
+    if (visited[x.idx] || !plan.touched_faces.count(m.face(x).idx)) continue;
+    int min_face = m.face(x).idx;
+    for (Halfedge y : m.loop_from(x)) {
+      visited[y.idx] = 1;
+      min_face = std::min(min_face, m.face(y).idx);
+    }
+    loops.push_back({min_face, x});
+  }
+  std::stable_sort(loops.begin(), loops.end(),
+                   [](const Loop& a, const Loop& b) { return a.min_face < b.min_face; });
+  const std::vector<int> free_numbers(plan.touched_faces.begin(), plan.touched_faces.end());
+  std::vector<Halfedge> old_start(m.face_capacity());
+  for (int fi : free_numbers) old_start[fi] = m.halfedge(Face(fi));
+  size_t used = 0;
+  std::vector<Face> result;
+  for (const Loop& loop : loops) {
+    const Face target = used < free_numbers.size() ? Face(free_numbers[used++]) : m.add_face();
+    Halfedge start = loop.first;
+    if (target.idx < static_cast<int>(old_start.size()) && old_start[target.idx].valid())
+      for (Halfedge y : m.loop_from(loop.first))
+        if (y == old_start[target.idx]) start = y;
+    m.assign_loop(start, target);
+    result.push_back(target);
+  }
+  for (; used < free_numbers.size(); ++used) m.delete_face(Face(free_numbers[used]));
+
+  for (Edge e : m.edges())
+    if (plan.gone[e.idx]) m.delete_edge(e);
+  std::vector<int> out_he(m.vertex_capacity(), -1);
+  for (Halfedge x : plan.kept)
+    if (out_he[m.origin(x).idx] < 0) out_he[m.origin(x).idx] = x.idx;
+  for (Vertex v : m.vertices()) {
+    if (out_he[v.idx] < 0) {
+      m.delete_vertex(v);
+    } else if (m.is_deleted(m.halfedge(v))) {
+      m.set_halfedge(v, Halfedge(out_he[v.idx]));
+    }
+  }
+  return result;
 }
 
 void check_vertex(const HalfedgeMesh& mesh, Vertex v, const char* op) {

@@ -2,6 +2,8 @@
 // the small queries several operators share.
 #pragma once
 
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,33 @@ Vec3 face_centroid(const HalfedgeMesh& mesh, Face f);
 
 /// The live edges joining a and b.
 std::vector<Edge> edges_between(const HalfedgeMesh& mesh, Vertex a, Vertex b);
+
+/// Removing a set of edges from the map (delete-face, open-face): what goes and what the kept
+/// half-edges link to afterwards.
+struct EdgeRemoval {
+  std::vector<std::uint8_t> gone;  ///< per edge: removed (with the edges left dangling)
+  std::vector<int> next;           ///< per kept half-edge: its successor once the rest are gone
+  std::vector<Halfedge> kept;      ///< the live half-edges that stay, in index order
+  std::set<int> touched_faces;     ///< faces that lose a half-edge (their loops change)
+};
+
+/// Plans removing the edges marked in `gone`: grows it by every edge then left dangling (an end
+/// vertex with no other edge) until none is. The mesh is not changed.
+EdgeRemoval plan_edge_removal(const HalfedgeMesh& mesh, std::vector<std::uint8_t> gone);
+
+/// Carries out the plan: every changed loop takes the smallest free number among the faces it
+/// came from (loops ordered by the smallest face number they came from), further loops new
+/// numbers, and numbers left over are removed; then the edges, and the vertices left without
+/// edges, are deleted. A loop reusing a number keeps that face's tags (a new face starts smooth,
+/// not a hole). Returns the faces of the changed loops. The result is not validated.
+std::vector<Face> remove_edges(HalfedgeMesh& mesh, const EdgeRemoval& plan);
+
+/// Why a boundary edge may not share both ends with another edge: the message tail for refusals.
+/// A file names an edge by its two vertices, so the reader could not tell which of them is on the
+/// boundary, and the mesh would not read back.
+inline constexpr const char* kBesideBoundary =
+    "a file names edges by their two vertices, so it could not tell which of them is on the "
+    "boundary";
 
 void check_vertex(const HalfedgeMesh& mesh, Vertex v, const char* op);
 void check_face(const HalfedgeMesh& mesh, Face f, const char* op);

@@ -14,7 +14,40 @@ namespace stitch {
 
 namespace td = topology_detail;
 
+namespace {
+
+// None of these schemes has a rule for a boundary or a crease that this library implements
+// (dual and vertex insertion have none at all), and dropping the tags would quietly change the
+// surface, so a mesh with any is refused. Numbers are the input's, as the user wrote them.
+void refuse_features(const HalfedgeMesh& mesh, const char* op) {
+  if (!mesh.has_features()) return;
+  constexpr const char* kWhy = "the remeshings do not carry holes or sharpness tags";
+  for (Face f : mesh.faces())
+    if (mesh.is_hole(f))
+      throw MeshError(fmt::format(
+          "{}: face {} is a hole (a boundary loop of the surface) and {} (fill-hole {} closes it)",
+          op, f.idx + 1, kWhy, f.idx + 1));
+  for (Edge e : mesh.edges())
+    if (mesh.sharpness(e) > 0) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+      const int a = mesh.origin(h).idx + 1, b = mesh.target(h).idx + 1;
+      throw MeshError(
+          fmt::format("{}: edge {} has sharpness {} and {} (crease {} {} 0 makes it "
+                      "smooth)",
+                      op, e.idx + 1, mesh.sharpness(e), kWhy, std::min(a, b), std::max(a, b)));
+    }
+  for (Vertex v : mesh.vertices())
+    if (mesh.sharpness(v) > 0)
+      throw MeshError(
+          fmt::format("{}: vertex {} has sharpness {} and {} (corner {} 0 makes it "
+                      "smooth)",
+                      op, v.idx + 1, mesh.sharpness(v), kWhy, v.idx + 1));
+}
+
+}  // namespace
+
 HalfedgeMesh dual(const HalfedgeMesh& input) {
+  refuse_features(input, "dual");
   const HalfedgeMesh m = td::compacted(input);
   for (Halfedge h : m.halfedges())
     if (m.face(h) == m.face(HalfedgeMesh::twin(h)))
@@ -37,6 +70,7 @@ HalfedgeMesh dual(const HalfedgeMesh& input) {
 }
 
 HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
+  refuse_features(input, "vertex-insertion");
   const HalfedgeMesh m = td::compacted(input);
   const int nv = m.num_vertices(), nh = m.halfedge_capacity();
   td::RawMesh raw;
@@ -66,6 +100,7 @@ HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
 }
 
 HalfedgeMesh doo_sabin(const HalfedgeMesh& input) {
+  refuse_features(input, "doo-sabin");
   const HalfedgeMesh m = td::compacted(input);
   const int nh = m.halfedge_capacity(), nf = m.num_faces(), ne = m.num_edges();
   td::RawMesh raw;
@@ -152,37 +187,6 @@ struct VertexNeighbourhood {
   }
 };
 
-// Sdc's MASK interface over plain arrays.
-struct Mask {
-  using Weight = double;
-  std::vector<double> vertex, edge, face;
-  int num_vertex = 0, num_edge = 0, num_face = 0;
-  bool face_centres = false;
-
-  explicit Mask(int size) : vertex(size), edge(size), face(size) {}
-  [[nodiscard]] int GetNumVertexWeights() const { return num_vertex; }
-  [[nodiscard]] int GetNumEdgeWeights() const { return num_edge; }
-  [[nodiscard]] int GetNumFaceWeights() const { return num_face; }
-  void SetNumVertexWeights(int n) { num_vertex = n; }
-  void SetNumEdgeWeights(int n) { num_edge = n; }
-  void SetNumFaceWeights(int n) { num_face = n; }
-  [[nodiscard]] const double& VertexWeight(int i) const { return vertex[i]; }
-  [[nodiscard]] const double& EdgeWeight(int i) const { return edge[i]; }
-  [[nodiscard]] const double& FaceWeight(int i) const { return face[i]; }
-  double& VertexWeight(int i) { return vertex[i]; }
-  double& EdgeWeight(int i) { return edge[i]; }
-  double& FaceWeight(int i) { return face[i]; }
-  [[nodiscard]] bool AreFaceWeightsForFaceCenters() const { return face_centres; }
-  void SetFaceWeightsForFaceCenters(bool on) { face_centres = on; }
-};
-
-// Face weights of Catmull-Clark's edge and vertex masks apply to the new face points; the other
-// reading (weights on vertices opposite in the face) belongs to other schemes.
-void require_face_centre_weights(const Mask& mask) {
-  if (mask.num_face > 0 && !mask.face_centres)
-    throw std::logic_error("catmull-clark: Sdc gave face weights not meant for face points");
-}
-
 }  // namespace
 
 // OpenSubdiv's Far refiner would need the mesh as a face-vertex list, which cannot express a
@@ -212,7 +216,7 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
   int max_size = 2;
   for (Face f : faces) max_size = std::max(max_size, m.degree(f));
   for (Vertex v : vertices) max_size = std::max(max_size, m.valence(v));
-  Mask mask(max_size);
+  SdcMask mask(max_size);
 
   for (Face f : faces) {
     const auto loop = m.face_loop(f);
@@ -284,6 +288,7 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
 }
 
 HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh) {
+  refuse_features(mesh, "catmull-clark");
   return catmull_clark_refinement(mesh).mesh;
 }
 

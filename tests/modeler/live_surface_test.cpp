@@ -28,7 +28,7 @@ void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh,
   const SurfaceMesh& got = live.tessellation();
   // Live corner k's block in `expected` is corner c's slot in `got` (blocks indexed by corner).
   const int per = live.vertices_per_patch(), per_quads = live.quads_per_patch();
-  const auto corners = mesh.halfedges();
+  const auto corners = mesh.patch_corners();
   ASSERT_EQ(expected.num_vertices(), static_cast<int>(corners.size()) * per);
   ASSERT_EQ(got.num_vertices(), mesh.halfedge_capacity() * per);
   ASSERT_EQ(live.corners(), corners);
@@ -63,7 +63,7 @@ void check_update(LiveSurface& live, const Document& doc, const Change& change) 
   const std::vector<ControlNet> fresh =
       build_control_nets(doc.mesh(), build_kgons(doc.mesh(), doc.kgon_options()));
   std::vector<Corner> changed;
-  for (Corner c : doc.mesh().halfedges()) {
+  for (Corner c : doc.mesh().patch_corners()) {
     const bool existed = std::binary_search(live_before.begin(), live_before.end(), c);
     if (!existed || before[c.idx] != fresh[c.idx]) changed.push_back(c);
   }
@@ -85,7 +85,14 @@ std::vector<Case> cases() {
           {"cube_hole", read_mesh(test::example_path("cube_hole.obj"), {false, true})},
           {"torus", make_torus(8, 6)},
           {"tetrahedron", make_tetrahedron()},
-          {"pyramid", read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"))}};
+          {"pyramid", read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"))},
+          {"open_creased", [] {
+             HalfedgeMesh m = make_torus(6, 5);
+             m.set_hole(Face(3), true);
+             for (int e : {0, 1, 7, 12}) m.set_sharpness(Edge(e), infinitely_sharp);
+             m.set_sharpness(Vertex(9), infinitely_sharp);
+             return m;
+           }()}};
 }
 
 TEST(ModelerLiveSurface, VertexMovesRecomputeExactlyTheChangedPatches) {
@@ -144,6 +151,26 @@ TEST(ModelerLiveSurface, VertexMoveIsLocal) {
   EXPECT_LE(s.recomputed_patches, s.candidate_patches);
 }
 
+/// Applies the operation lines in turn, checking each update against a rebuild; returns how many
+/// applied. A refused line changes nothing; with `all_apply` it is a failure.
+int apply_checked(Document& doc, LiveSurface& live, const std::vector<std::string>& ops,
+                  bool all_apply) {
+  int applied = 0;
+  for (const std::string& op : ops) {
+    SCOPED_TRACE(op);
+    Change c;
+    try {
+      c = doc.apply_operation(op);
+    } catch (const MeshError& e) {
+      if (all_apply) ADD_FAILURE() << "refused: " << e.what();
+      continue;
+    }
+    ++applied;
+    check_update(live, doc, c);
+  }
+  return applied;
+}
+
 TEST(ModelerLiveSurface, TopologyEditsRecomputeExactlyTheChangedPatches) {
   const std::vector<std::string> ops{
       "insert-edge 1@1 5@2", "subdivide-edge 2 3",  "collapse-edge 3 9", "extrude-face 3 0.4",
@@ -153,18 +180,7 @@ TEST(ModelerLiveSurface, TopologyEditsRecomputeExactlyTheChangedPatches) {
     Document doc(make_cube());
     LiveSurface live;
     live.rebuild(doc.mesh(), doc.kgon_options(), method, 2);
-    int applied = 0;
-    for (const std::string& op : ops) {
-      SCOPED_TRACE(op);
-      Change c;
-      try {
-        c = doc.apply_operation(op);
-      } catch (const MeshError&) {
-        continue;  // refused on this mesh: nothing changed
-      }
-      ++applied;
-      check_update(live, doc, c);
-    }
+    const int applied = apply_checked(doc, live, ops, false);
     EXPECT_GE(applied, 5);
     for (int i = 0; i < applied; ++i) check_update(live, doc, doc.undo());
     EXPECT_TRUE(doc.mesh() == make_cube());
@@ -175,6 +191,25 @@ TEST(ModelerLiveSurface, TopologyEditsRecomputeExactlyTheChangedPatches) {
       EXPECT_TRUE(live.update(doc.mesh(), doc.kgon_options(), c).full);
       expect_same_as_rebuild(live, doc.mesh(), doc.kgon_options());
     }
+    EXPECT_TRUE(doc.mesh() == make_cube());
+  }
+}
+
+TEST(ModelerLiveSurface, HolesCreasesAndCornersUpdateExactly) {
+  // Tags and holes change no connectivity, yet they change which patches exist and which sides
+  // are sharp curves: each edit is checked against a rebuild, then all are undone.
+  const std::vector<std::string> ops{"open-face 2",        "crease 1 2 10", "corner 3 10",
+                                     "crease 2 3 10",      "crease 1 2 0",  "insert-edge 1@1 3@1",
+                                     "subdivide-edge 3 4", "fill-hole 2",   "open-face 4",
+                                     "extrude-face 1 0.3"};
+  for (Method method : {Method::mdc, Method::asc}) {
+    SCOPED_TRACE(to_string(method));
+    Document doc(make_cube());
+    LiveSurface live;
+    live.rebuild(doc.mesh(), doc.kgon_options(), method, 2);
+    const int applied = apply_checked(doc, live, ops, true);
+    EXPECT_EQ(applied, static_cast<int>(ops.size()));
+    for (int i = 0; i < applied; ++i) check_update(live, doc, doc.undo());
     EXPECT_TRUE(doc.mesh() == make_cube());
   }
 }

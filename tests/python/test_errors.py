@@ -46,7 +46,7 @@ def test_bad_face_data(faces, message):
     # Messages number vertices and faces from 1, as files and edit operations do.
     ([[0, 3, 2, 8]] + CUBE_FACES[1:], "face 1 refers to vertex 9, but there are 8 vertices"),
     ([[0, 3, 2, -1]] + CUBE_FACES[1:], "face 1 refers to vertex 0, but there are 8 vertices"),
-    ([[0, 1, 2]], "boundary"),
+    ([[0, 1, 2], [0, 4, 5]], "boundary loops touch"),  # two triangles sharing a vertex only
     ([[1, 2, 3, 0]] + CUBE_FACES[1:], "orient"),           # the bottom face flipped
     (CUBE_FACES + [[0, 1, 5]], "non-manifold edge"),     # a third face on edge (1, 2)
     ([[0, 3, 3, 1]] + CUBE_FACES[1:], "repeats vertex"),

@@ -35,6 +35,7 @@ def test_read_matches_primitive(examples):
     np.testing.assert_array_equal(mesh.vertices, cube.vertices)
     assert mesh.topology() == {
         "vertices": 8, "edges": 12, "faces": 6, "components": 1, "euler": 2, "genus": 0,
+        "boundary_loops": 0, "crease_edges": 0, "corner_vertices": 0,
         "valence_histogram": {3: 8}, "degree_histogram": {4: 6},
         "extraordinary_vertices": 8, "extraordinary_faces": 0}
 
@@ -108,13 +109,14 @@ def test_build_warnings_become_python_warnings():
     assert mesh.num_vertices == 8
 
 
-def test_fill_holes():
+def test_boundaries_are_kept_or_filled():
     open_box = CUBE_FACES[:1] + CUBE_FACES[2:]
-    with pytest.raises(stitch.StitchError, match="boundary"):
-        stitch.Mesh(CUBE_VERTICES, open_box)
+    mesh = stitch.Mesh(CUBE_VERTICES, open_box)
+    assert (mesh.num_faces, mesh.genus, mesh.topology()["boundary_loops"]) == (5, 0, 1)
+    assert mesh.num_patches == 20
     with pytest.warns(UserWarning, match="filled 1 hole"):
         mesh = stitch.Mesh(CUBE_VERTICES, open_box, fill_holes=True)
-    assert (mesh.num_faces, mesh.genus) == (6, 0)
+    assert (mesh.num_faces, mesh.genus, mesh.topology()["boundary_loops"]) == (6, 0, 0)
 
 
 @pytest.mark.parametrize("name,params,counts", [

@@ -6,6 +6,8 @@
 // two face edges that meet at the corner.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -37,12 +39,35 @@ enum class KgonConstruction {
 
 struct KgonOptions {
   KgonConstruction construction = KgonConstruction::openings;
+  /// Whether boundary vertices with one face are corners of the surface (the default, as in
+  /// OpenSubdiv) or lie on a smooth boundary curve. Also used by --method cc.
+  BoundaryInterpolation boundary = BoundaryInterpolation::edge_and_corner;
+  /// Sharpness from which an edge or vertex tag counts as infinitely sharp; below it a tag is
+  /// smooth. The construction has no subdivision levels to round a crease over (method.md):
+  /// OpenSubdiv rounds a crease of sharpness s over about 2^-s of the faces beside it, so from
+  /// 4 on the difference is a sliver, and below it the crease is soft. --method cc honours the
+  /// exact values.
+  double sharp_from = 4.0;
   /// Applies to every face and vertex K-gon with K != 4 (the extraordinary ones); quads and
   /// edge K-gons keep their shape unless a per-element control names them.
   KgonControl global;
   /// Per-element controls, keyed by element index; they replace `global` for that element.
   std::unordered_map<int, KgonControl> face, vertex, edge;
 };
+
+/// How a vertex meets the sharp edges (boundary edges and infinitely sharp creases) around it
+/// (method.md, "Boundaries, creases and corners").
+enum class VertexKind {
+  smooth,  ///< no sharp edge: one K-gon over the whole fan
+  dart,    ///< one sharp edge, which fades out here: one K-gon over the whole fan
+  crease,  ///< two sharp edges: the sharp curve runs smoothly through, one K-gon per sector
+  corner,  ///< three or more sharp edges, a corner tag, or (edge-and-corner) a boundary
+           ///< vertex with one face: interpolated, one K-gon per sector
+};
+VertexKind vertex_kind(const HalfedgeMesh& mesh, Vertex v, const KgonOptions& options);
+/// A boundary edge, or a crease whose sharpness reaches options.sharp_from: the surface has a
+/// sharp curve there, C0 across it.
+bool is_sharp(const HalfedgeMesh& mesh, Edge e, const KgonOptions& options);
 
 struct Kgon {
   std::vector<Vec3> points;  ///< in the order of `corners`
@@ -62,6 +87,20 @@ struct KgonSet {
   /// Index of the corner's point in its face, vertex, next-edge (edge(h)) and
   /// previous-edge (edge(prev(h))) K-gon, indexed by half-edge.
   std::vector<int> in_face, in_vertex, in_next_edge, in_prev_edge;
+  /// K of the vertex K-gon the corner's patch sees at its vertex, indexed by half-edge: the
+  /// valence, or at a crease or corner vertex the size of the corner's sector closed by its
+  /// ghost points (4 where the surface is regular there).
+  std::vector<int> vertex_k;
+  /// Along a sharp edge, the first two Bézier points of the sharp curve from origin(h) (the
+  /// patch corner at the vertex and at the edge midpoint are the K-gon centroids), indexed by
+  /// half-edge h; unset for other edges.
+  std::vector<std::array<Vec3, 2>> sharp_curve;
+  /// By half-edge: 1 where the corner's sector at a crease or corner vertex wraps around too far
+  /// to be flattened, so the surface has a cone point there (method.md); 0 elsewhere.
+  std::vector<std::uint8_t> cone;
+  /// Whether each edge is sharp under the options the set was built with (is_sharp), by edge.
+  std::vector<std::uint8_t> sharp_edge;
+  [[nodiscard]] bool sharp(Edge e) const { return !sharp_edge.empty() && sharp_edge[e.idx] != 0; }
 
   [[nodiscard]] const Vec3& face_point(const HalfedgeMesh& m, Corner c) const {
     return face[m.face(c).idx].points[in_face[c.idx]];

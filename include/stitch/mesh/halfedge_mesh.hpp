@@ -10,6 +10,12 @@
 // A *corner* (a face and one position in its loop) is the half-edge of that face leaving the
 // corner's vertex; everything downstream is defined per corner, never per vertex id.
 //
+// Feature tags live in arrays beside the connectivity, as OpenSubdiv's Sdc tags do: a face can be
+// a *hole* (a boundary loop of the surface: it makes no patches, and its edges are the surface's
+// boundary), an edge or a vertex can carry a sharpness (creases and corners; sharpness >=
+// infinitely_sharp is infinite, as in OpenSubdiv). A mesh read with boundaries holds one hole face
+// per boundary loop, so navigation never meets a missing face.
+//
 // Elements are removed by marking them deleted, so the numbers of untouched elements stay stable
 // while a sequence of operators runs; garbage_collection() compacts the arrays, keeping order.
 //
@@ -41,6 +47,14 @@ class MeshError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// OpenSubdiv's infinite sharpness: tags at or above it make a crease or corner (method.md).
+inline constexpr double infinitely_sharp = 10.0;
+
+/// How the surface treats boundary vertices with a single face (OpenSubdiv's
+/// Sdc::Options::VtxBoundaryInterpolation): interpolated as corners, or smoothed along the
+/// boundary curve like every other boundary vertex.
+enum class BoundaryInterpolation { edge_and_corner, edge_only };
 
 template <class Tag>
 struct Handle {
@@ -90,6 +104,40 @@ class HalfedgeMesh {
     return positions_[v.idx];
   }
   [[nodiscard]] const std::vector<Vec3>& positions() const { return positions_; }
+
+  // --- feature tags ----------------------------------------------------------------------
+  [[nodiscard]] bool is_hole(Face f) const { return face_hole_[f.idx] != 0; }
+  void set_hole(Face f, bool hole) {
+    note(f);
+    face_hole_[f.idx] = hole ? 1 : 0;
+  }
+  /// Whether the corner h (a half-edge) lies in a hole, i.e. makes no patch.
+  [[nodiscard]] bool is_hole(Halfedge h) const { return is_hole(face(h)); }
+  /// An edge of a hole: on the surface's boundary.
+  [[nodiscard]] bool is_boundary(Edge e) const {
+    return is_hole(halfedge(e, 0)) || is_hole(halfedge(e, 1));
+  }
+  [[nodiscard]] double sharpness(Edge e) const { return edge_sharpness_[e.idx]; }
+  void set_sharpness(Edge e, double s) {
+    note(e);
+    edge_sharpness_[e.idx] = s;
+  }
+  [[nodiscard]] double sharpness(Vertex v) const { return vertex_sharpness_[v.idx]; }
+  void set_sharpness(Vertex v, double s) {
+    note(v);
+    vertex_sharpness_[v.idx] = s;
+  }
+  /// A boundary edge or an infinitely sharp crease: the surface has a curve there that only the
+  /// vertices along it shape, and is C0 across it.
+  [[nodiscard]] bool is_sharp(Edge e) const {
+    return is_boundary(e) || edge_sharpness_[e.idx] >= infinitely_sharp;
+  }
+  /// Whether any face is a hole or any edge or vertex carries a sharpness tag.
+  [[nodiscard]] bool has_features() const;
+  /// The corners that make patches (not in holes), in index order.
+  [[nodiscard]] std::vector<Corner> patch_corners() const;
+  /// The faces that are not holes, in index order.
+  [[nodiscard]] std::vector<Face> surface_faces() const;
 
   // --- sizes and iteration ----------------------------------------------------------------
   // *_capacity() counts deleted elements too (handles index arrays of that size);
@@ -177,16 +225,19 @@ class HalfedgeMesh {
     Vec3 position;
     int halfedge = -1;
     std::uint8_t deleted = 0;
+    double sharpness = 0;
     bool operator==(const VertexState&) const = default;
   };
   struct EdgeState {  ///< both half-edges, side 0 first
     std::array<int, 2> next{}, prev{}, origin{}, face{};
     std::uint8_t deleted = 0;
+    double sharpness = 0;
     bool operator==(const EdgeState&) const = default;
   };
   struct FaceState {
     int halfedge = -1;
     std::uint8_t deleted = 0;
+    std::uint8_t hole = 0;
     bool operator==(const FaceState&) const = default;
   };
   /// The mesh at one end of a delta: capacities, deletion counts, and the states of the touched
@@ -255,10 +306,12 @@ class HalfedgeMesh {
   std::vector<Vec3> positions_;
   std::vector<int> vertex_he_;
   std::vector<std::uint8_t> vertex_deleted_;
+  std::vector<double> vertex_sharpness_;
   std::vector<int> he_next_, he_prev_, he_origin_, he_face_;
   std::vector<std::uint8_t> edge_deleted_;
+  std::vector<double> edge_sharpness_;
   std::vector<int> face_he_;
-  std::vector<std::uint8_t> face_deleted_;
+  std::vector<std::uint8_t> face_deleted_, face_hole_;
   int deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
   JournalSlot journal_;
 };

@@ -14,13 +14,17 @@ namespace stitch {
 /// Reads a polygon soup; the format is chosen by the file's extension (.obj, .off, .ply, .stl).
 /// STL (ASCII or binary) has no shared vertices: corners closer than 1e-6 of the bounding box
 /// diagonal are welded into one vertex, and triangles that collapse in the welding are dropped.
-/// OBJ: faces of any degree, texture/normal indices and negative (relative) indices accepted,
-/// OpenSubdiv's `t` tag lines and other unsupported statements ignored (one warning each kind).
+/// OBJ: faces of any degree, negative (relative) indices accepted, normal indices ignored,
+/// OpenSubdiv's `t` crease and corner tags read, other tags and unsupported statements ignored
+/// (one warning each kind).
+/// Texture coordinates (PolygonSoup::uvs, face_uvs): OBJ `vt` with `f v/vt` (every face or
+/// none), PLY per-vertex `s t` (or `texture_u texture_v`, `texture_s texture_t`, `u v`), glTF
+/// TEXCOORD_0 (v flipped to OBJ's convention: 0 at the bottom).
 /// Throws MeshError naming the file and line (or element) for anything malformed.
 PolygonSoup read_polygon_soup(const std::string& path,
                               std::vector<std::string>* warnings = nullptr);
 
-/// read_polygon_soup + build_mesh.
+/// read_polygon_soup + build_mesh; report->corner_uvs gets the file's texture coordinates.
 HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options = {},
                        BuildReport* report = nullptr, std::vector<std::string>* warnings = nullptr);
 

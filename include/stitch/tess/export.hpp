@@ -6,6 +6,7 @@
 #include <string>
 
 #include "stitch/eval/surface.hpp"
+#include "stitch/eval/uv_surface.hpp"
 #include "stitch/tess/surface_mesh.hpp"
 
 namespace stitch {
@@ -19,7 +20,16 @@ struct SurfaceFileOptions {
   bool single_precision = false;
   /// Called with the fraction (0..1) done; from one thread at a time.
   std::function<void(double)> progress;
+  /// Texture coordinates for write_smooth_surface to write where the format has a place for them
+  /// (surface_file_takes_uvs); null: none. Not owned.
+  const UvSurface* uvs = nullptr;
 };
+
+/// Whether write_smooth_surface writes SurfaceFileOptions::uvs to this file: .obj (`vt`, one per
+/// grid sample of each patch, so the two sides of a seam keep their own) and glTF (TEXCOORD_0,
+/// vertices split where a seam needs two UVs). Welded .ply, .off and .stl have no place for UVs
+/// that differ on the two sides of a seam, and are written without them.
+bool surface_file_takes_uvs(const std::string& path);
 
 /// The extensions write_surface_mesh and write_smooth_surface take, for messages.
 inline constexpr const char* kSurfaceMeshExtensions = ".obj, .ply, .off, .stl, .glb, .gltf";
@@ -33,13 +43,15 @@ void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
 /// What write_smooth_surface wrote.
 struct SurfaceFileCounts {
   std::int64_t vertices = 0, quads = 0;
+  std::int64_t texcoords = 0;  ///< texture coordinates written (0: none)
 };
 
 /// The same file as write_surface_mesh(path, tessellate(mesh, surface, {resolution, true})),
 /// byte for byte, made block by block while it is written: memory grows with the input mesh,
 /// not with the resolution (except .stl, which repeats positions per triangle and so holds them
 /// all, and glTF, whose buffer is written whole), and evaluation runs on every core. Refuses
-/// non-finite samples. Atomic.
+/// non-finite samples. Atomic. With options.uvs the file also has texture coordinates (then it
+/// is no longer write_surface_mesh's; glTF's vertices are split at seams).
 SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
                                        const Surface& surface, int resolution,
                                        const SurfaceFileOptions& options = {});
@@ -52,7 +64,9 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
                                     const std::string& path);
 
 /// Writes every sample with its patch attributes as binary little-endian PLY: double x y z
-/// nx ny nz u v and int patch, so continuity can be checked from the file alone. Atomic.
-void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh);
+/// nx ny nz u v and int patch, so continuity can be checked from the file alone; with `uvs`, also
+/// double s t, the sample's texture coordinates. Atomic.
+void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
+                               const UvSurface* uvs = nullptr);
 
 }  // namespace stitch

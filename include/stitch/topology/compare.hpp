@@ -6,9 +6,10 @@
 
 namespace stitch {
 
-/// True when a and b have the same live vertices (same numbers, exactly equal positions) and
-/// their half-edges correspond one to one keeping origin vertex, next and twin, i.e. the same
-/// faces as cyclic corner sequences around the same rotation at every vertex. Edge and face
+/// True when a and b have the same live vertices (same numbers, exactly equal positions and
+/// sharpness) and their half-edges correspond one to one keeping origin vertex, next, twin, the
+/// edge's sharpness and whether the face is a hole, i.e. the same faces as cyclic corner
+/// sequences around the same rotation at every vertex, with the same tags. Edge and face
 /// numbers, face start corners, vertex start half-edges and deleted elements may differ.
 bool same_up_to_renumbering(const HalfedgeMesh& a, const HalfedgeMesh& b);
 

@@ -19,6 +19,10 @@ struct ConnectFacesResult {
 /// rule: the part holding its first corner keeps the number, the other gets the next one), so
 /// the k quads carry the smaller number and k-1 new ones. Refused: f == g, different degrees, or
 /// a pair of corners to be joined at the same vertex (the edge would be a loop).
+/// Either face may be a hole: it is removed like a face, so the tube bridges two boundary loops
+/// or closes one onto a face. The tube's quads and edges are smooth; the edges of f and g keep
+/// their sharpness. Refused too when a tube edge would join the ends of an edge that stays on
+/// the boundary (a file could not tell the two apart).
 ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist = 0);
 
 }  // namespace stitch

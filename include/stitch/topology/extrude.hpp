@@ -17,6 +17,10 @@ struct ExtrudeResult {
 /// i+1). The top is scaled by `scale` about the face's centroid (a negative distance with a
 /// scale below 1 makes a dent, e.g. the ends of a tube for connect_faces).
 /// V + k, E + 2k, F + k; Euler characteristic, genus and components unchanged.
+/// Tags: the top's edges and corners copy the sharpness of the edges and vertices under them,
+/// which keep theirs; the rising edges and the side faces are smooth. A hole extrudes too: it
+/// stays the top, so the boundary moves out by a ring of quads (its normal points away from the
+/// surface, as the missing face's would).
 /// Refused: a non-finite distance, a scale that is not positive and finite, or a face without a
 /// normal (zero area, e.g. a 2-sided face).
 ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale = 1.0);

@@ -23,7 +23,9 @@ struct InsertEdgeResult {
 /// Different faces: they merge into one face whose loop runs along the new edge twice; it keeps
 /// the smaller of the two numbers and the other is removed. Merging faces of different
 /// components joins them; of one component, adds a handle (genus + 1).
-/// Refused: a == b, or both corners at the same vertex (the edge would be a loop).
+/// Refused: a == b, both corners at the same vertex (the edge would be a loop), or a corner in a
+/// hole (the new edge would have the hole on both sides), or a boundary edge already joining the
+/// two vertices (a file could not tell the two apart). The new edge is smooth (sharpness 0).
 InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b);
 
 struct DeleteEdgeResult {
@@ -36,7 +38,8 @@ struct DeleteEdgeResult {
 /// number survives). A face that runs along e twice splits: the part holding the face's start
 /// half-edge keeps its number, the other part becomes a new face; this lowers the genus or
 /// separates a component. Refused when an end vertex has valence 2 (it would be left with one
-/// edge).
+/// edge), or when e lies on the boundary (a hole on one side: the face on the other side would
+/// merge into the hole; open_face says that).
 DeleteEdgeResult delete_edge(HalfedgeMesh& mesh, Edge e);
 
 }  // namespace stitch

@@ -18,12 +18,14 @@ struct OperationReport {
   TopologyStats stats;  ///< counts after the operation (see apply_operation's `census`)
   bool components_counted = true;  ///< stats has genus and components (and the histograms)
   /// One line: the operation, what changed, then V E F, Euler characteristic, and genus and
-  /// components when counted.
+  /// components when counted, followed by the boundary loops, creases and corners when there
+  /// are any.
   [[nodiscard]] std::string summary(std::string_view op_text) const;
 };
 
 /// How much of the topology apply_operation recounts for its report: everything (a pass over
-/// the whole mesh), or only what is known without one (V, E, F, Euler characteristic), for
+/// the whole mesh), or only what is known without one (V, E, F, Euler characteristic; F and the
+/// Euler characteristic then count hole faces too, telling them apart takes the pass), for
 /// callers that must not pay in proportion to the mesh, such as the modeler. With the full
 /// census the result must also pass check_reads_back (the operation is refused, and the mesh
 /// left as it was, when it does not); without it the reader's exhaustive pairing search is

@@ -1,6 +1,9 @@
 // Remeshing the whole mesh. Each returns a new mesh numbered afresh (documented per scheme and in
 // docs/editing.md); the input is not changed. Numbers below are 0-based indices of the
 // garbage-collected input (V vertices, E edges, H = 2E half-edges, F faces).
+// dual, vertex_insertion, doo_sabin and catmull_clark_step refuse (MeshError) a mesh with a hole
+// or a sharpness tag: they have no rule here for boundaries and creases, and dropping the tags
+// would change the surface without saying so.
 #pragma once
 
 #include <vector>
@@ -32,13 +35,15 @@ HalfedgeMesh doo_sabin(const HalfedgeMesh& mesh);
 /// per edge (V + F + e). Faces: one quad per old corner, face by face in loop order from
 /// halfedge(f); the quad of corner c runs from c's vertex point to the edge point of edge(c),
 /// the face point and the edge point of edge(prev(c)), and starts there (halfedge(quad)).
+/// catmull_clark_refinement itself applies the smooth rules everywhere: a hole is refined as a
+/// face and sharpness tags are ignored (callers that need tags check them first).
 struct CatmullClarkRefinement {
   HalfedgeMesh mesh;
   std::vector<Face> corner_quad;  ///< per half-edge of the input: its quad (invalid if deleted)
 };
 CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& mesh);
 
-/// catmull_clark_refinement(mesh).mesh.
+/// catmull_clark_refinement(mesh).mesh; refused for a mesh with holes or sharpness tags.
 HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh);
 
 }  // namespace stitch

@@ -28,9 +28,13 @@ enum class ShadingMode {
   isophote,  ///< bands of constant angle between normal and light
   levels,    ///< colour by hierarchy level of the sub-patch a sample came from
   patches,   ///< colour by patch
+  /// shaded, on a checkerboard over the texture's unit square (Renderer::set_surface_texcoords;
+  /// a surface without texture coordinates gets one square's colour)
+  checker,
 };
 
-/// Parses "shaded", "zebra", "isophote", "levels", "patches"; throws std::invalid_argument.
+/// Parses "shaded", "zebra", "isophote", "levels", "patches", "checker"; throws
+/// std::invalid_argument.
 ShadingMode parse_shading_mode(const std::string& name);
 std::string to_string(ShadingMode mode);
 
@@ -44,10 +48,14 @@ struct RenderStyle {
   /// this off (depth must then be cleared by it).
   bool clear = true;
   std::array<bool, num_overlays> overlays{};  ///< indexed by Overlay
-  bool markers = false;                       ///< extraordinary points
-  int stripes = 16;  ///< zebra stripes around the full circle / isophote bands
+  bool markers = false;  ///< extraordinary points and the sharp curves (MarkerSet::curves)
+  int stripes = 16;      ///< zebra stripes around the full circle / isophote bands
+  int checks = 8;        ///< checker squares along each side of the texture's unit square
   Colour background{1.0f, 1.0f, 1.0f};
   Colour surface_colour{0.80f, 0.82f, 0.86f};
+  /// The checker's other squares (surface_colour are the first): far from it in hue and
+  /// brightness, so the two stay apart in shadow and highlight alike.
+  Colour checker_colour{0.85f, 0.38f, 0.12f};
   float line_width_px = 1.5f;
   float marker_size_px = 9.0f;
   /// Opacity of overlay parts hidden behind the surface (0 hides them).
@@ -92,6 +100,12 @@ class Renderer {
   /// std::logic_error without a block surface, std::invalid_argument when the block sizes
   /// differ, std::out_of_range for a block the surface does not have.
   void update_surface_blocks(const SurfaceMesh& surface, std::vector<int> blocks);
+  /// Texture coordinates of the uploaded surface's vertices, for ShadingMode::checker. They live
+  /// in a buffer of their own, so the surface's vertex layout, its partial updates and the other
+  /// modes do not change. set_surface, set_block_surface and update_surface_blocks drop them
+  /// (the vertices they describe may be gone). Throws std::invalid_argument when the count is
+  /// not the uploaded surface's vertex count.
+  void set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoords);
   void set_overlay(Overlay overlay, const LineSet& lines);
   void set_markers(const MarkerSet& markers);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
+#include "stitch/eval/uv_surface.hpp"
 #include "stitch/render/overlays.hpp"
 #include "stitch/render/renderer.hpp"
 
@@ -17,7 +18,12 @@ struct SceneGeometry {
   SurfaceMesh input;                           ///< the input polygons (input_faces)
   std::array<LineSet, num_overlays> overlays;  ///< indexed by Overlay
   std::vector<ExtraordinaryPoint> extraordinary;
+  /// The surface's boundary and crease curves, shown with the extraordinary points.
+  LineSet sharp_curves;
   BoundingBox bounds;  ///< of the surface and the input mesh
+  /// Texture coordinates of the vertices of `surface` and of `input` (add_texcoords); empty
+  /// when the input has none.
+  std::vector<Eigen::Vector2d> surface_texcoords, input_texcoords;
 };
 
 /// Which overlays build_scene makes (indexed by Overlay); the others stay empty, which saves
@@ -30,7 +36,15 @@ inline constexpr OverlaySelection all_overlays{true, true, true, true};
 SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                           const OverlaySelection& overlays = all_overlays);
 
-/// Uploads the scene: the smooth surface, or the input polygons when `input_polygons`.
+/// The UV of every sample of `surface`: `uvs` at the sample's patch and (u, v).
+std::vector<Eigen::Vector2d> surface_texcoords(const SurfaceMesh& surface, const UvSurface& uvs);
+/// Fills scene.surface_texcoords from `uvs` and scene.input_texcoords from `corner_uvs` (the
+/// mesh's, which `uvs` was built on). Throws MeshError as input_face_texcoords does.
+void add_texcoords(SceneGeometry& scene, const HalfedgeMesh& mesh, const CornerUvs& corner_uvs,
+                   const UvSurface& uvs);
+
+/// Uploads the scene: the smooth surface, or the input polygons when `input_polygons`, with their
+/// texture coordinates when the scene has them; the markers carry the sharp curves.
 void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_polygons = false);
 
 /// A close-up of an extraordinary point: seen along its normal tilted by 30 degrees towards the
