@@ -194,7 +194,11 @@ void build_edge_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet&
     set.edge[e.idx] = detail::sharp_edge_kgon(m, e, set);
     return;
   }
-  Kgon g = make_kgon(set, corners, normal_around(m, {h}, normal_of));
+  std::optional<Kgon> bridge;
+  if (options.construction == KgonConstruction::openings && m.face(h) == m.face(t))
+    if (const auto openings = detail::find_two_openings(m, m.face(h)))
+      bridge = detail::place_bridge_kgon(m, m.face(h), *openings, corners, set.corner_point);
+  Kgon g = bridge ? std::move(*bridge) : make_kgon(set, corners, normal_around(m, {h}, normal_of));
   if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
   set.edge[e.idx] = std::move(g);
 }

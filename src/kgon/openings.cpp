@@ -69,10 +69,171 @@ std::optional<RimSample> far_point(const std::vector<Vec3>& chain) {
   return RimSample{chain.back(), (chain.back() - chain[chain.size() - 2]).normalized()};
 }
 
+/// The tube between the two openings as a cylinder: its axis runs from the first rim's
+/// centroid to the second's; angles are measured around the axis from the first rim's bridge
+/// vertex. `twist` is the angle of the second rim's bridge vertex, in (-pi, pi]: the shortest
+/// way the bridge can turn around the tube.
+struct Tube {
+  Vec3 base = Vec3::Zero(), axis = Vec3::UnitZ(), x0 = Vec3::UnitX(), y0 = Vec3::UnitY();
+  double length = 1, twist = 0;
+  bool hole = true;  ///< openings facing away from each other (else a handle between solids)
+
+  [[nodiscard]] Vec3 radial(double angle) const {
+    return std::cos(angle) * x0 + std::sin(angle) * y0;
+  }
+  [[nodiscard]] Vec3 wall(double angle, double height, double radius) const {
+    return base + height * length * axis + radius * radial(angle);
+  }
+  [[nodiscard]] double radius_of(const Vec3& p) const {
+    const Vec3 d = p - base;
+    return (d - d.dot(axis) * axis).norm();
+  }
+  [[nodiscard]] double height_of(const Vec3& p) const { return (p - base).dot(axis) / length; }
+  /// The surface's normal on the wall: into the tube around a hole, out of it on a handle.
+  [[nodiscard]] Vec3 normal(double angle) const { return hole ? -radial(angle) : radial(angle); }
+};
+
+std::optional<Tube> tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
+  auto rim = [&](const std::vector<Corner>& cs) {
+    std::vector<Vec3> pts;
+    for (size_t i = 0; i + 1 < cs.size(); ++i) pts.push_back(m.position(m.origin(cs[i])));
+    return pts;
+  };
+  const auto rim_a = rim(o.first), rim_b = rim(o.second);
+  Tube t;
+  t.base = centroid(rim_a);
+  const Vec3 across = centroid(rim_b) - t.base;
+  t.length = across.norm();
+  if (!(t.length > 0)) return std::nullopt;
+  t.axis = across / t.length;
+  const double sa = newell_normal(rim_a).dot(across), sb = newell_normal(rim_b).dot(across);
+  if (!((sa < 0 && sb > 0) || (sa > 0 && sb < 0))) return std::nullopt;
+  t.hole = sa < 0;
+  const Vec3 a = m.position(m.origin(o.first.front())) - t.base;
+  const Vec3 ra = a - a.dot(t.axis) * t.axis;
+  if (!(ra.norm() > 1e-9 * t.length)) return std::nullopt;
+  t.x0 = ra.normalized();
+  t.y0 = t.axis.cross(t.x0);
+  const Vec3 b = m.position(m.origin(o.second.front())) - t.base;
+  t.twist = std::atan2(b.dot(t.y0), b.dot(t.x0));
+  return t;
+}
+
+/// A twist smaller than this is no twist: the bridge runs along the wall.
+constexpr double kNoTwist = 1e-6;
+
 }  // namespace
+
+namespace {
+
+/// The face K-gon of a twisted tube: a regular K-gon on the wall opposite the middle of the
+/// bridge's helix, halfway up, in the wall's tangent plane, turned so that the middle of the
+/// first opening's corners faces that opening.
+std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const Tube& tube,
+                                          const TwoOpenings& openings,
+                                          const std::vector<Vec3>& corner_point) {
+  const auto loop = m.face_loop(f);
+  const int k = static_cast<int>(loop.size());
+  double radius_sum = 0, height_a = 0, height_b = 0;
+  for (Corner c : loop) radius_sum += tube.radius_of(corner_point[c.idx]);
+  for (Corner c : openings.first) height_a += tube.height_of(corner_point[c.idx]);
+  for (Corner c : openings.second) height_b += tube.height_of(corner_point[c.idx]);
+  height_a /= static_cast<double>(openings.first.size());
+  height_b /= static_cast<double>(openings.second.size());
+  const double angle = tube.twist / 2 + std::numbers::pi;
+  const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius_sum / k);
+  const Vec3 normal = tube.normal(angle);
+  const Vec3 e1 = tube.axis;  // towards the second opening
+  const Vec3 e2 = normal.cross(e1);
+  double s = 0, c = 0;
+  for (int i = 0; i < k; ++i)
+    for (Corner a : openings.first)
+      if (loop[i] == a) {
+        s += std::sin(2 * std::numbers::pi * i / k);
+        c += std::cos(2 * std::numbers::pi * i / k);
+      }
+  const double phase = std::numbers::pi - std::atan2(s, c);
+  double radius = 0;
+  for (Corner cn : loop) radius += (corner_point[cn.idx] - centre).norm();
+  radius *= 0.5 / k;
+  Kgon g;
+  g.corners = loop;
+  g.centroid = centre;
+  g.normal = normal;
+  for (int i = 0; i < k; ++i) {
+    const double t = phase + 2 * std::numbers::pi * i / k;
+    g.points.push_back(centre + radius * (std::cos(t) * e1 + std::sin(t) * e2));
+  }
+  return g;
+}
+
+}  // namespace
+
+std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
+                                      const TwoOpenings& openings,
+                                      const std::vector<Corner>& corners,
+                                      const std::vector<Vec3>& corner_point) {
+  const auto tube = tube_of(m, openings);
+  if (!tube || std::abs(tube->twist) < kNoTwist) return std::nullopt;
+  // The helix from the first rim's bridge vertex to the second's, at the corner points' mean
+  // radius and heights; the K-gon sits at its middle.
+  double radius = 0, height_a = 0, height_b = 0;
+  int na = 0, nb = 0;
+  const Vertex a = m.origin(openings.first.front());
+  for (Corner c : corners) {
+    radius += tube->radius_of(corner_point[c.idx]) / static_cast<double>(corners.size());
+    const double h = tube->height_of(corner_point[c.idx]);
+    if (m.origin(c) == a) {
+      height_a += h;
+      ++na;
+    } else {
+      height_b += h;
+      ++nb;
+    }
+  }
+  if (na != 2 || nb != 2) return std::nullopt;
+  height_a /= 2;
+  height_b /= 2;
+  const double angle = tube->twist / 2, height = (height_a + height_b) / 2;
+  const Vec3 centre = tube->wall(angle, height, radius);
+  // The helix's direction there, and the wall's direction across it.
+  const Vec3 along = ((height_b - height_a) * tube->length * tube->axis +
+                      tube->twist * radius * tube->radial(angle + std::numbers::pi / 2))
+                         .normalized();
+  // Section 2 shrinks the edge's quad of corner points to half its size; the helix's length
+  // and the corner points' spacing across the bridge give that quad here.
+  const double helix = std::hypot((height_b - height_a) * tube->length, tube->twist * radius);
+  const Vec3 across = tube->normal(angle).cross(along);
+  double width = 0;
+  for (int i = 0; i < 4; i += 2)
+    width += (corner_point[corners[i].idx] - corner_point[corners[i + 1].idx]).norm() / 2;
+  Kgon g;
+  g.corners = corners;
+  g.centroid = centre;
+  g.normal = tube->normal(angle);
+  for (Corner c : corners) {
+    const bool at_a = m.origin(c) == a;
+    // The side of the bridge the corner's face region lies on: its corner point against the
+    // other corner point at the same end.
+    Corner other = c;
+    for (Corner d : corners)
+      if (d != c && m.origin(d) == m.origin(c)) other = d;
+    const double side = (corner_point[c.idx] - corner_point[other.idx])
+                                    .dot(tube->normal(at_a ? 0.0 : tube->twist).cross(along)) >= 0
+                            ? 1.0
+                            : -1.0;
+    // A quarter of the helix's length from its middle, as section 2's shrink places the points
+    // of a straight edge, and a quarter of the corner points' spacing to the side.
+    g.points.push_back(centre + (at_a ? -0.25 : 0.25) * helix * along +
+                       side * 0.25 * width * across);
+  }
+  return g;
+}
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point) {
+  if (const auto tube = tube_of(m, openings); tube && std::abs(tube->twist) >= kNoTwist)
+    return place_on_twisted_tube(m, f, *tube, openings, corner_point);
   auto points_of = [&](const std::vector<Corner>& cs) {
     std::vector<Vec3> pts;
     for (Corner c : cs) pts.push_back(corner_point[c.idx]);

@@ -39,4 +39,13 @@ void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& open
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& mesh, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point);
 
+/// The K-gon of the bridge edge of such a face when the tube is twisted (the bridge joins
+/// corners at different angles around the tube): a quad on the tube wall halfway along the
+/// helix the bridge stands for, so that the surface runs around the wall instead of along the
+/// chord, which cuts through the tube. Nothing for an untwisted tube (section 2's K-gon is
+/// kept there) or no usable tube. `corners` in the edge K-gon's order.
+std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& mesh, Face f, const TwoOpenings& openings,
+                                      const std::vector<Corner>& corners,
+                                      const std::vector<Vec3>& corner_point);
+
 }  // namespace stitch::detail
