@@ -141,3 +141,38 @@ TEST(CliAnalyze, AllAnalyzesEveryMethodOnTheCubeWithAHole) {
 
 }  // namespace
 }  // namespace stitch
+
+namespace stitch {
+namespace {
+
+using testing::stitch_cli;
+using testing::TempFolder;
+
+// On a terminal the long stages show how far they are, reading included (issue 17); elsewhere
+// (a pipe, a file: what scripts see) nothing but the result. The terminal is the one `script`
+// (util-linux, in every Debian) gives the command.
+TEST(CliSmooth, ShowsPercentagesOnATerminalAndNothingElsewhere) {
+  if (std::system("script --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  TempFolder folder;
+  // More lines than the OBJ reader's reporting interval (65536), so parsing reports too.
+  auto r = stitch_cli(folder, "primitive torus 200 200 -o torus.obj");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string command = "cd '" + folder.path().string() + "' && script -qec \"'" +
+                              std::string(STITCH_CLI) +
+                              "' smooth torus.obj -o s.ply --resolution 2\" /dev/null > tty.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::string tty = testing::read_file(folder.file("tty.txt"));
+  for (const char* stage : {"reading torus.obj... ", "and writing s.ply... "}) {
+    const size_t at = tty.find(stage);
+    ASSERT_NE(at, std::string::npos) << tty;
+    // The same line redrawn with a percentage, up to 100.
+    EXPECT_NE(tty.find(std::string(stage) + "100%", at), std::string::npos) << tty;
+  }
+  EXPECT_NE(tty.find(" 33%"), std::string::npos) << tty;  // the bytes read: a third of reading
+  r = stitch_cli(folder, "smooth torus.obj -o s.ply --resolution 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find('%'), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace stitch

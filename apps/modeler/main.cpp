@@ -98,6 +98,7 @@ struct App {
   bool show_ui = true;  ///< the panels (`ui off` in a script hides them, e.g. for pictures)
   bool show_recover_dialog = false;
   bool open_popup_requested = false, save_popup_requested = false, export_popup_requested = false;
+  bool append_popup_requested = false;
   std::string recover_path;
 
   // Mouse state.
@@ -191,6 +192,7 @@ RenderStyle style_for(const App& app) {
     style.show(Overlay::mesh);
     style.markers = true;
   }
+  if (!app.session.surface_problems().empty()) style.markers = true;  // their outlines
   style.background = Colour(0.96f, 0.96f, 0.97f);
   return style;
 }
@@ -206,6 +208,9 @@ void upload_overlays(App& app, View3D& view, const LiveSurface& surface) {
   if (app.previous_pick)
     add_highlight(m, *app.previous_pick, Colour(0.1f, 0.7f, 0.2f), mesh_set, markers);
   if (s.selection) add_highlight(m, *s.selection, Colour(1.0f, 0.45f, 0.0f), mesh_set, markers);
+  // Patches that fold or cross, outlined on the main view's own tessellation.
+  if (&surface == &s.surface)
+    add_problem_outlines(surface, s.surface_problems().corners, markers.curves);
   view.renderer->set_overlay(Overlay::mesh, mesh_set);
   view.renderer->set_overlay(
       Overlay::kgons, d.overlays[int(Overlay::kgons)] ? kgon_lines(surface.kgons()) : LineSet{});
@@ -570,6 +575,7 @@ void menu_bar(App& app, const ScriptHooks& hooks) {
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("File")) {
       if (ImGui::MenuItem("Open...")) open_popup = true;
+      if (ImGui::MenuItem("Append...")) app.append_popup_requested = true;
       if (ImGui::MenuItem("Save", nullptr, false, !s.path.empty())) run_line(app, "save", hooks);
       if (ImGui::MenuItem("Save as...")) save_popup = true;
       if (ImGui::MenuItem("Export smooth surface...")) app.export_popup_requested = true;
@@ -615,9 +621,15 @@ void dialogs(App& app, const ScriptHooks& hooks) {
   if (app.open_popup_requested) ImGui::OpenPopup("Open file");
   if (app.save_popup_requested) ImGui::OpenPopup("Save as");
   if (app.export_popup_requested) ImGui::OpenPopup("Export smooth surface");
+  if (app.append_popup_requested) ImGui::OpenPopup("Append file");
   app.open_popup_requested = app.save_popup_requested = app.export_popup_requested = false;
+  app.append_popup_requested = false;
   path_dialog(app, hooks, "Open file", "path (.obj .off .ply .stl .glb .gltf .stitch)",
               app.open_path, "Open", "open");
+  // Shares Open's path: the second mesh is usually beside the first.
+  path_dialog(app, hooks, "Append file",
+              "path (.obj .off .ply .stl .glb .gltf .stitch; may end in --offset X,Y,Z)",
+              app.open_path, "Append", "append");
   path_dialog(app, hooks, "Save as", "path (.stitch keeps K-gons and view)", app.save_path, "Save",
               "save");
   path_dialog(app, hooks, "Export smooth surface",
@@ -660,6 +672,11 @@ void status_bar(App& app) {
               s.last_update.milliseconds, s.last_update.recomputed_patches, s.surface.num_patches(),
               s.last_update.full ? ", full" : "", app.fps, to_string(s.display.method).c_str(),
               app.status.c_str());
+  if (const SurfaceProblems& p = s.surface_problems(); !p.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(problem_colour.x(), problem_colour.y(), problem_colour.z(), 1.0f),
+                       "| %s", p.summary().c_str());
+  }
   ImGui::End();
 }
 

@@ -113,14 +113,14 @@ void add_analyze_command(CLI::App& app) {
       "extraordinary points and elsewhere, and the tangent plane at extraordinary points; on "
       "meshes with boundaries or creases also the crease gap and G1 within each sector");
   add_input_options(cmd, args->in);
-  add_method_option(cmd, args->method, true);
+  add_method_option(cmd, args->method, true, &args->in);
   cmd->add_flag("--json", args->json,
                 "print JSON (includes the jump against distance from "
                 "extraordinary points)");
   cmd->add_option("--samples", args->samples, "evenly spaced samples per patch side")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   add_progress_option(cmd, args->progress);
   cmd->callback([args] { run_analyze(*args); });
 }

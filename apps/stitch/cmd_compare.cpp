@@ -333,7 +333,7 @@ void add_compare_command(CLI::App& app) {
                   "radius of the region shown in the close-up, in patch sizes")
       ->check(finite_range(kMinZoom, kMaxZoom))
       ->capture_default_str();
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   add_progress_option(cmd, args->progress);
   cmd->callback([args] { run_compare(*args); });
 }

@@ -1,10 +1,16 @@
 // stitch edit IN -o OUT --op "OP ARGS" [--op ...] [--ops FILE]: topology operations in order.
+// With --check, the patches the operations changed are checked for folds and self-intersections
+// (local_check.hpp) and any are reported as a warning.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "commands.hpp"
+#include "stitch/analysis/local_check.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
@@ -17,7 +23,74 @@ namespace {
 struct EditArgs {
   std::string in, out;
   bool quiet = false;
+  bool check = false, strict = false;
+  int check_resolution = LocalCheckOptions{}.resolution;
 };
+
+/// The elements the operations touched (their journals), or `whole` after a remeshing, which
+/// renumbers everything.
+struct Touched {
+  std::vector<Vertex> vertices;
+  std::vector<Edge> edges;
+  std::vector<Face> faces;
+  bool whole = false;
+};
+
+bool is_remeshing(std::string_view text) {
+  const auto words = split_words(text.substr(0, text.find(" #")));
+  if (words.empty()) return false;
+  return words[0] == "doo-sabin" || words[0] == "vertex-insertion" || words[0] == "catmull-clark" ||
+         words[0] == "dual";
+}
+
+/// Warns when the surface folds or meets itself near what the operations changed; returns
+/// whether it does. Patches are named by their corners as the written file numbers them, and by
+/// their `patch` numbers (the corner's half-edge when the file is read back, as `stitch smooth
+/// --unwelded` and `.bez.json` number them).
+bool check_edited_surface(const EditArgs& a, const HalfedgeMesh& mesh, const Touched& touched) {
+  const std::vector<Corner> changed =
+      touched.whole ? mesh.patch_corners()
+                    : patches_touched(mesh, touched.vertices, touched.edges, touched.faces);
+  const Surface surface(mesh, Method::mdc);
+  LocalCheckOptions options;
+  options.resolution = a.check_resolution;
+  const LocalCheckReport r = check_patches(mesh, surface, changed, options);
+  if (r.clean()) {
+    if (!a.quiet)
+      fmt::print(
+          "check: no folds or self-intersections near the edits ({} patches changed, {} "
+          "around them, {} triangles at resolution {})\n",
+          r.changed_patches, r.patches - r.changed_patches, r.triangles, options.resolution);
+    return false;
+  }
+  std::vector<std::string> names = corner_names(mesh, r.problem_corners, true);
+  // The corners as the written file reads back (build_mesh of the same polygons), in order.
+  std::string patches;
+  try {
+    BuildOptions build;
+    build.allow_two_gons = true;
+    const HalfedgeMesh back = build_mesh(to_polygon_soup(mesh), build);
+    std::vector<std::pair<int, std::string>> numbered;
+    for (std::string& name : names) numbered.emplace_back(parse_corner(back, name).idx, name);
+    std::sort(numbered.begin(), numbered.end());
+    std::vector<int> numbers;
+    for (size_t i = 0; i < numbered.size(); ++i) {
+      numbers.push_back(numbered[i].first);
+      names[i] = std::move(numbered[i].second);
+    }
+    patches = fmt::format("patches {} ", fmt::join(numbers, ", "));
+  } catch (const MeshError&) {  // not expected: the mesh passed validate()
+  }
+  const char* what = r.folds > 0 && r.self_intersections > 0 ? "folds and intersects itself"
+                     : r.folds > 0                           ? "folds"
+                                                             : "intersects itself";
+  fmt::print(stderr,
+             "stitch: warning: the surface {} at {}(corners {} of {}): {} folded and {} "
+             "crossing pairs of triangles at resolution {}; see stitch check-surface\n",
+             what, patches, fmt::join(names, ", "), a.out, r.folds, r.self_intersections,
+             options.resolution);
+  return true;
+}
 
 /// One operation and where it came from, for messages.
 struct OpLine {
@@ -63,12 +136,24 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   for (const std::string& w : warnings) fmt::print(stderr, "stitch: warning: {}: {}\n", a.in, w);
 
   std::vector<std::string> lines;
+  Touched touched;
   for (const OpLine& op : ops) {
     OperationReport r;
+    const bool journal = a.check && !is_remeshing(op.text);
     try {
+      if (journal) mesh.begin_journal();
       r = apply_operation(mesh, op.text);
     } catch (const MeshError& e) {
       throw MeshError(fmt::format("{}: {} (nothing written)", op.where, e.what()));
+    }
+    if (journal) {
+      // Numbers stay valid for the whole run (until a remeshing), so the lists add up.
+      const HalfedgeMesh::Delta delta = mesh.end_journal();
+      touched.vertices.insert(touched.vertices.end(), delta.vertices.begin(), delta.vertices.end());
+      touched.edges.insert(touched.edges.end(), delta.edges.begin(), delta.edges.end());
+      touched.faces.insert(touched.faces.end(), delta.faces.begin(), delta.faces.end());
+    } else if (a.check && !r.what.empty()) {
+      touched.whole = true;
     }
     if (r.what.empty()) continue;  // blank or comment line
     std::string text = op.text.substr(0, op.text.find(" #"));
@@ -87,6 +172,7 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   write_mesh(a.out, mesh);
   if (!a.quiet)
     for (const std::string& line : lines) fmt::print("{}\n", line);
+  if (a.check && check_edited_surface(a, mesh, touched) && a.strict) throw ExitStatus(1, "");
 }
 
 }  // namespace
@@ -111,7 +197,20 @@ void add_edit_command(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->check(CLI::ExistingFile);
   cmd->add_flag("-q,--quiet", args->quiet, "do not print the per-operation summary lines");
-  cmd->callback([args, cmd] { run_edit(*args, *cmd); });
+  cmd->add_flag("--check", args->check,
+                "check the patches the operations changed, and their neighbours, for folds and "
+                "self-intersections; a warning on stderr names them (exit status 0)");
+  cmd->add_flag("--strict", args->strict,
+                "check as --check does, and end with exit status 1 when it finds any (the output "
+                "is written all the same)");
+  cmd->add_option("--check-resolution", args->check_resolution,
+                  "segments per patch side for --check")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  cmd->callback([args, cmd] {
+    args->check = args->check || args->strict;
+    run_edit(*args, *cmd);
+  });
 }
 
 }  // namespace stitch::cli

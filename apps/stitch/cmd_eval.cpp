@@ -137,9 +137,9 @@ void add_eval_command(CLI::App& app) {
                   "file of points, one per line: 'patch u v' (patch = corner number from 0, as "
                   "in --unwelded PLY) or 'face vertex u v' (1-based); u, v from 0 to 1")
       ->required();
-  add_method_option(cmd, args->method);
+  add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--format", args->format, "csv or json")->capture_default_str();
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   cmd->callback([args] { run_eval(*args); });
 }
 

@@ -134,7 +134,7 @@ void add_info_command(CLI::App& app) {
   cmd->add_flag("--patches", args->patches,
                 "also expand the Bezier patch set that .step/.igs/.bez.json outputs hold and "
                 "report its depth, patch count and largest deviation from exact evaluation");
-  add_method_option(cmd, args->method);
+  add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--tolerance", args->patch_set.tolerance,
                   "with --patches: largest distance of the innermost cells from the exact "
                   "surface, relative to the model size")
@@ -142,7 +142,7 @@ void add_info_command(CLI::App& app) {
   cmd->add_option("--angle-tolerance", args->patch_set.angle_tolerance_deg,
                   "with --patches: largest normal deviation of those cells, degrees")
       ->capture_default_str();
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   cmd->callback([args] { run_info(*args); });
 }
 

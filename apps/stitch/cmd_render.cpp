@@ -127,7 +127,7 @@ void add_render_command(CLI::App& app) {
       "K-gons, nets and extraordinary points");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")->required();
-  add_method_option(cmd, args->method);
+  add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--mode", args->mode,
                   "shaded, zebra (reflection lines), isophote, levels (hierarchy level of the "
                   "sub-patch), patches or checker (shaded, on a checkerboard through the input's "
@@ -171,7 +171,7 @@ void add_render_command(CLI::App& app) {
                   "none (overlays only)")
       ->check(CLI::IsMember({"smooth", "input", "none"}))
       ->capture_default_str();
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   add_progress_option(cmd, args->progress);
   cmd->callback([args] { run_render(*args); });
 }

@@ -9,6 +9,7 @@
 #include "options.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
 
@@ -21,6 +22,8 @@ struct SmoothArgs {
   std::string out;
   std::string method = "mdc";
   int resolution = 8;
+  /// --tolerance (ExactOutputOptions::tolerance) given for a mesh output: adaptive triangles.
+  bool adaptive = false;
   bool unwelded = false;
   bool ascii = false;
   bool single_precision = false;
@@ -79,6 +82,8 @@ std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& m
     lost =
         "a welded .ply, .off or .stl has no place for UVs that differ across a seam (write .obj, "
         ".glb or .gltf, or --unwelded .ply)";
+  else if (a.adaptive)
+    lost = "--tolerance writes no texture coordinates";
   else if (a.in.fill_holes && report.filled_holes > 0)
     lost = "the faces --fill-holes added have none";
   if (lost) {
@@ -105,11 +110,15 @@ void run_smooth(const SmoothArgs& a) {
     throw MeshError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
                                 smooth_output_extensions()));
   check_exact_outputs(a.out, a.exact);
+  if (a.adaptive && (a.unwelded || ext == ".glb" || ext == ".gltf"))
+    throw MeshError(fmt::format("--tolerance writes .obj, .ply, .off or .stl, not '{}'{}", a.out,
+                                a.unwelded ? " --unwelded" : ""));
 
   StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
   BuildReport report;
-  const HalfedgeMesh mesh = load_input(a.in, &report);
+  const HalfedgeMesh mesh =
+      load_input(a.in, &report, [&stage](double done) { stage.fraction(done); });
   stage.end();
   check_memory(a, mesh);
   stage.begin(fmt::format("building the {} surface ({} patches)", a.method,
@@ -120,6 +129,23 @@ void run_smooth(const SmoothArgs& a) {
   if (const std::string exact = write_exact_outputs(a.out, mesh, surface, a.exact, stage);
       !exact.empty()) {
     fmt::print("wrote {} ({}, method {})\n", a.out, exact, a.method);
+    return;
+  }
+  if (a.adaptive) {
+    stage.begin(fmt::format("tessellating to tolerance {}", a.exact.tolerance));
+    const AdaptiveMesh adaptive = tessellate_adaptive(mesh, surface, {a.exact.tolerance});
+    stage.end();
+    stage.begin("writing " + a.out);
+    SurfaceFileOptions file;
+    file.ascii_ply = a.ascii;
+    file.single_precision = a.single_precision;
+    write_adaptive_mesh(a.out, adaptive, file);
+    stage.end();
+    fmt::print(
+        "wrote {} ({} vertices, {} triangles, method {}, tolerance {}: {} to {} segments per "
+        "patch side)\n",
+        a.out, adaptive.num_vertices(), adaptive.triangles.size(), a.method, a.exact.tolerance,
+        adaptive.min_rate, adaptive.max_rate);
     return;
   }
   SurfaceFileCounts written;
@@ -162,10 +188,11 @@ void add_smooth_command(CLI::App& app) {
                   "meshes), .off, .stl, .glb or .gltf (+ .bin); or the exact patches: .json "
                   "(Bezier JSON), .step/.stp or .igs/.iges (B-spline faces)")
       ->required();
-  add_method_option(cmd, args->method);
-  cmd->add_option("--resolution", args->resolution, "segments per patch side")
-      ->check(CLI::Range(1, 1024))
-      ->capture_default_str();
+  add_method_option(cmd, args->method, false, &args->in);
+  CLI::Option* resolution =
+      cmd->add_option("--resolution", args->resolution, "segments per patch side")
+          ->check(CLI::Range(1, 1024))
+          ->capture_default_str();
   cmd->add_flag("--unwelded", args->unwelded,
                 "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
                 "int patch, to check continuity from the file alone");
@@ -182,10 +209,21 @@ void add_smooth_command(CLI::App& app) {
                   "refuse up front a run estimated to need more memory than this many GB "
                   "(default: the memory available)")
       ->check(CLI::Range(0.0, 1e6));
-  add_kgon_options(cmd, args->kgon);
+  add_kgon_options(cmd, args->kgon, &args->in);
   add_exact_output_options(cmd, args->exact);
   add_progress_option(cmd, args->progress);
-  cmd->callback([args] { run_smooth(*args); });
+  // One --tolerance, relative to the model size, for both kinds of output: for a mesh output it
+  // asks for adaptive triangles instead of a fixed resolution.
+  CLI::Option* tolerance = cmd->get_option("--tolerance");
+  tolerance->description(tolerance->get_description() +
+                         "; for .obj/.ply/.off/.stl: adaptive triangles instead of --resolution, "
+                         "segments per patch side from the control nets' flatness (try 1e-3)");
+  cmd->callback([args, resolution, tolerance] {
+    args->adaptive = tolerance->count() > 0 && !is_exact_output(args->out);
+    if (args->adaptive && resolution->count() > 0)
+      throw MeshError("--tolerance and --resolution exclude each other for a mesh output");
+    run_smooth(*args);
+  });
 }
 
 }  // namespace stitch::cli

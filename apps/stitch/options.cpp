@@ -5,23 +5,28 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/project/kgon_controls.hpp"
+#include "stitch/project/project_file.hpp"
 
 namespace stitch::cli {
 
 void add_input_options(CLI::App* cmd, InputOptions& in) {
   cmd->add_option("IN", in.path,
                   "input mesh (.obj, .off, .ply, .stl, .gltf, .glb): orientable and manifold, "
-                  "closed or with boundaries")
+                  "closed or with boundaries; or a stitch-modeler project (.stitch): its mesh, "
+                  "K-gon controls and method")
       ->required();
   cmd->add_flag("--fill-holes", in.fill_holes,
                 "close every boundary loop with one face instead of keeping it as a boundary");
 }
 
-HalfedgeMesh load_input(const InputOptions& in, BuildReport* report_out) {
+HalfedgeMesh load_input(const InputOptions& in, BuildReport* report_out,
+                        const std::function<void(double)>& progress) {
   BuildOptions opt;
   opt.fill_holes = in.fill_holes;
   // The topology operators make 2-sided faces, and edited meshes must read back; they are
@@ -30,7 +35,21 @@ HalfedgeMesh load_input(const InputOptions& in, BuildReport* report_out) {
   BuildReport local;
   BuildReport& report = report_out ? *report_out : local;
   std::vector<std::string> warnings;
-  HalfedgeMesh mesh = read_mesh(in.path, opt, &report, &warnings);
+  HalfedgeMesh mesh;
+  if (is_project_path(in.path)) {
+    ProjectFile project = read_project_file(in.path, opt, &report);
+    mesh = std::move(project.mesh);
+    if (in.kgon) {
+      in.kgon->from_input = std::move(project.kgons);
+      in.kgon->input_has_global = true;
+    }
+    if (in.method && project.method && !(in.method_option && in.method_option->count() > 0))
+      *in.method = to_string(*project.method);
+  } else {
+    mesh = read_mesh(in.path, opt, &report, &warnings, progress);
+  }
+  if (in.kgon && !in.kgon->controls_path.empty())
+    read_kgon_controls(in.kgon->controls_path, mesh, in.kgon->from_input);
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
   for (Vertex v : mesh.vertices())
     if (mesh.valence(v) == 2 && vertex_kind(mesh, v, KgonOptions{}) == VertexKind::smooth)
@@ -62,20 +81,30 @@ CLI::Validator finite_range(double lo, double hi) {
       fmt::format("NUMBER in [{:g}, {:g}]", lo, hi));
 }
 
-void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
-  cmd->add_option("--kgon-scale", k.scale,
-                  fmt::format("scale every K-gon with K != 4 about its centroid (default 1, from "
-                              "{:g} to {:g})",
-                              limits::min_kgon_scale, limits::max_kgon_scale))
-      ->check(finite_range(limits::min_kgon_scale, limits::max_kgon_scale));
-  cmd->add_option("--kgon-rotate", k.rotate_deg,
-                  fmt::format("rotate every K-gon with K != 4 in its plane, degrees (default 0, "
-                              "at most {:g} either way)",
-                              limits::max_rotation_deg))
-      ->check(finite_range(-limits::max_rotation_deg, limits::max_rotation_deg));
-  cmd->add_flag("--regularize", k.regularize,
-                "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
-                "(makes star-shaped K-gons convex)");
+void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
+  if (in) in->kgon = &k;
+  k.scale_option =
+      cmd->add_option(
+             "--kgon-scale", k.scale,
+             fmt::format("scale every K-gon with K != 4 about its centroid (default 1, from "
+                         "{:g} to {:g})",
+                         limits::min_kgon_scale, limits::max_kgon_scale))
+          ->check(finite_range(limits::min_kgon_scale, limits::max_kgon_scale));
+  k.rotate_option =
+      cmd->add_option(
+             "--kgon-rotate", k.rotate_deg,
+             fmt::format("rotate every K-gon with K != 4 in its plane, degrees (default 0, "
+                         "at most {:g} either way)",
+                         limits::max_rotation_deg))
+          ->check(finite_range(-limits::max_rotation_deg, limits::max_rotation_deg));
+  k.regularize_option =
+      cmd->add_flag("--regularize", k.regularize,
+                    "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
+                    "(makes star-shaped K-gons convex)");
+  cmd->add_option("--kgon-controls", k.controls_path,
+                  "a JSON file of per-element K-gon controls (face, vertex or edge: scale, "
+                  "rotate, offset, regularize; docs/modeler.md); they replace those of a "
+                  ".stitch input for the same elements");
   cmd->add_option("--kgon-construction", k.construction,
                   "openings: faces made by inserting an edge between two faces get a K-gon on "
                   "the wall of the tube between their openings (docs/method.md); doo-sabin: "
@@ -97,10 +126,15 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k) {
 }
 
 KgonOptions to_kgon_options(const KgonCliOptions& k) {
-  KgonOptions o;
-  o.global.scale = k.scale;
-  o.global.rotate_deg = k.rotate_deg;
-  o.global.regularize = k.regularize;
+  KgonOptions o = k.from_input;
+  // Without a project the flags are the global control; with one, each flag given replaces
+  // the project's value and the rest stay as the modeler left them.
+  auto use_flag = [&](const CLI::Option* flag) {
+    return !k.input_has_global || (flag != nullptr && flag->count() > 0);
+  };
+  if (use_flag(k.scale_option)) o.global.scale = k.scale;
+  if (use_flag(k.rotate_option)) o.global.rotate_deg = k.rotate_deg;
+  if (use_flag(k.regularize_option)) o.global.regularize = k.regularize;
   o.construction =
       k.construction == "doo-sabin" ? KgonConstruction::doo_sabin : KgonConstruction::openings;
   o.sharp_from = k.sharp_from;
@@ -109,17 +143,22 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
   return o;
 }
 
-void add_method_option(CLI::App* cmd, std::string& method, bool allow_all) {
-  auto* opt = cmd->add_option(
+void add_method_option(CLI::App* cmd, std::string& method, bool allow_all, InputOptions* in) {
+  CLI::Option* opt = cmd->add_option(
       "--method", method,
       std::string("mdc: modified de Casteljau (the paper's), asc: AS&C baseline (the same "
                   "patches as plain polynomials), cc: Catmull-Clark through OpenSubdiv") +
-          (allow_all ? ", all: every method" : ""));
+          (allow_all ? ", all: every method" : "") +
+          "; a .stitch input's own method replaces the default");
   if (allow_all)
     opt->check(CLI::IsMember({"mdc", "asc", "cc", "all"}));
   else
     opt->check(CLI::IsMember({"mdc", "asc", "cc"}));
   opt->capture_default_str();
+  if (in) {
+    in->method = &method;
+    in->method_option = opt;
+  }
 }
 
 bool stderr_is_terminal() {

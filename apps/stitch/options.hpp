@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "stitch/eval/surface.hpp"
@@ -13,16 +14,28 @@
 
 namespace stitch::cli {
 
+struct KgonCliOptions;
+
 struct InputOptions {
   std::string path;
   bool fill_holes = false;
+  // Where load_input puts what the input brings besides the mesh: a project's K-gon controls and
+  // method, a --kgon-controls file's controls. add_kgon_options and add_method_option on the same
+  // sub-command set them (the sub-commands add their options with separate calls).
+  KgonCliOptions* kgon = nullptr;
+  std::string* method = nullptr;
+  const CLI::Option* method_option = nullptr;
 };
 /// Adds the positional IN and --fill-holes.
 void add_input_options(CLI::App* cmd, InputOptions& in);
 /// Reads and checks the mesh, printing warnings (dropped vertices, filled holes, 2-gons,
 /// valence-2 vertices) to stderr. Throws MeshError on bad input. `report` (optional) receives
-/// the build report, e.g. the texture coordinates of the corners.
-HalfedgeMesh load_input(const InputOptions& in, BuildReport* report = nullptr);
+/// the build report, e.g. the texture coordinates of the corners. A project (.stitch) brings
+/// its K-gon controls and, unless --method was given, its method; a --kgon-controls file is
+/// read against the mesh here, so its numbers are checked before any work. `progress`
+/// (optional) is told how much of the reading is done.
+HalfedgeMesh load_input(const InputOptions& in, BuildReport* report = nullptr,
+                        const std::function<void(double)>& progress = {});
 
 struct KgonCliOptions {
   double scale = 1.0;
@@ -31,10 +44,18 @@ struct KgonCliOptions {
   std::string construction = "openings";
   std::string boundary = "edge-and-corner";
   double sharp_from = KgonOptions{}.sharp_from;
+  std::string controls_path;  ///< --kgon-controls
+  /// Set by load_input: the per-element controls of a project or a --kgon-controls file, and a
+  /// project's global control, which --kgon-scale, --kgon-rotate and --regularize override one
+  /// by one when given.
+  KgonOptions from_input;
+  bool input_has_global = false;
+  const CLI::Option *scale_option = nullptr, *rotate_option = nullptr, *regularize_option = nullptr;
 };
-/// Adds --kgon-scale, --kgon-rotate, --regularize, --kgon-construction, --boundary and
-/// --sharp-from.
-void add_kgon_options(CLI::App* cmd, KgonCliOptions& k);
+/// Adds --kgon-scale, --kgon-rotate, --regularize, --kgon-controls, --kgon-construction,
+/// --boundary and --sharp-from.
+/// With `in`, a .stitch input's K-gon controls reach `k` through load_input.
+void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in = nullptr);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
 
 /// A CLI11 check for a finite number from lo to hi (CLI::Range and CLI::PositiveNumber let NaN
@@ -44,7 +65,9 @@ CLI::Validator finite_range(double lo, double hi);
 inline constexpr double kMinZoom = 1e-3, kMaxZoom = 1e3;
 
 /// Adds --method with the given default; `allow_all` accepts "all" as well.
-void add_method_option(CLI::App* cmd, std::string& method, bool allow_all = false);
+/// With `in`, a .stitch input's method applies unless --method is given.
+void add_method_option(CLI::App* cmd, std::string& method, bool allow_all = false,
+                       InputOptions* in = nullptr);
 
 /// --progress and --quiet.
 struct ProgressFlags {

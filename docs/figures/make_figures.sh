@@ -31,8 +31,8 @@ run render $T -o $F/tet_4_surface.png --size 400x400 --mode patches --show mesh
 run render $T -o $F/tet_5_polygon_mesh.png --size 400x400 --show tess --resolution 6
 
 # 2. The cube with an inserted edge (one 10-sided face, genus 1), before and after smoothing.
-run render $H -o $F/cube_hole_mesh.png --size 480x480 --view front --draw input --show mesh,ev
-run render $H -o $F/cube_hole_smooth.png --size 480x480 --view front --show mesh,ev
+run render $H -o $F/cube_hole_mesh.png --size 480x480 --view top --draw input --show mesh,ev
+run render $H -o $F/cube_hole_smooth.png --size 480x480 --view top --show mesh,ev
 run render $H -o $F/cube_hole_smooth_iso.png --size 480x480 --eye -3,-4,5 --show ev
 
 # 3. AS&C against ours: zebra close-ups of a 3-valent point and of the 10-valent point.
@@ -42,10 +42,10 @@ run render $H -o $F/valence10_asc.png --size 480x480 --method asc --mode zebra -
 run render $H -o $F/valence10_mdc.png --size 480x480 --method mdc --mode zebra --focus-ev --stripes 32 --resolution 24
 
 # 4. Catmull-Clark against ours on the cube with a hole and on two cubes joined by an edge.
-run render $H -o $F/cube_hole_cc.png --size 480x480 --view front --method cc --mode zebra --resolution 16
-run render $H -o $F/cube_hole_mdc.png --size 480x480 --view front --method mdc --mode zebra --resolution 16
-run render $W -o $F/two_cubes_cc.png --size 640x400 --view front --method cc --mode zebra --resolution 16
-run render $W -o $F/two_cubes_mdc.png --size 640x400 --view front --method mdc --mode zebra --resolution 16
+run render $H -o $F/cube_hole_cc.png --size 480x480 --view top --method cc --mode zebra --resolution 16
+run render $H -o $F/cube_hole_mdc.png --size 480x480 --view top --method mdc --mode zebra --resolution 16
+run render $W -o $F/two_cubes_cc.png --size 640x400 --view top --method cc --mode zebra --resolution 16
+run render $W -o $F/two_cubes_mdc.png --size 640x400 --view top --method mdc --mode zebra --resolution 16
 #    A hole made by connect-faces instead: both faces dented, then joined by a tube (all quads).
 run edit $C --op "extrude-face 1 -0.4 0.5" --op "extrude-face 2 -0.4 0.5" --op "connect-faces 1 2" -o $F/cube_tunnel.obj
 run render $F/cube_tunnel.obj -o $F/cube_tunnel_cc.png --size 480x480 --eye 2.5,-3.5,4 --method cc --mode zebra --resolution 16
@@ -54,8 +54,8 @@ run render $F/cube_tunnel.obj -o $F/cube_tunnel_mdc.png --size 480x480 --eye 2.5
 # 5. Star-shaped against regularised K-gons: the K-gons of the star prism's non-convex
 #    10-sided faces (docs/figures/star_prism.obj), and the surfaces they give.
 P=docs/figures/star_prism.obj
-run render $P -o $F/kgon_star.png --size 400x400 --view front --show mesh,kgons
-run render $P -o $F/kgon_regularized.png --size 400x400 --view front --show mesh,kgons --regularize
+run render $P -o $F/kgon_star.png --size 400x400 --view top --show mesh,kgons
+run render $P -o $F/kgon_regularized.png --size 400x400 --view top --show mesh,kgons --regularize
 run render $P -o $F/kgon_star_surface.png --size 400x400 --eye 1.2,-2.4,3.2 --mode isophote
 run render $P -o $F/kgon_regularized_surface.png --size 400x400 --eye 1.2,-2.4,3.2 --mode isophote --regularize
 
@@ -81,6 +81,14 @@ done
 run render examples/cube_creased.obj -o $F/cube_creased.png --size 400x400 --eye 3,-4,4 --show mesh
 run render examples/cube_creased.obj -o $F/cube_creased_zebra.png --size 400x400 --eye 3,-4,4 --mode zebra --resolution 16
 run render examples/open_box.obj -o $F/open_box.png --size 400x400 --eye 3,-4,5 --show mesh
+
+# 11. Texture coordinates: the cube with a cross-shaped UV unwrap (examples/cube_uv.obj) as a
+#     checker of 16 x 16 squares over the unit square, through the smooth UVs, through bilinear
+#     UVs per patch, and on the input polygons.
+U=examples/cube_uv.obj
+run render $U -o $F/cube_uv_checker.png --size 400x400 --mode checker --checks 16
+run render $U -o $F/cube_uv_checker_linear.png --size 400x400 --mode checker --checks 16 --uv linear
+run render $U -o $F/cube_uv_input.png --size 400x400 --mode checker --checks 16 --draw input --show mesh
 
 if ((${#failed[@]})); then
   echo "make_figures.sh: these commands failed:" >&2

@@ -43,3 +43,7 @@
 // analysis: continuity measured, surface checks
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/analysis/surface_check.hpp"
+
+// project files: a mesh with its K-gon controls (the modeler's .stitch), K-gon controls files
+#include "stitch/project/kgon_controls.hpp"
+#include "stitch/project/project_file.hpp"

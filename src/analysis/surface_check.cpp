@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
-#include <unordered_map>
-#include <unordered_set>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace stitch {
 
@@ -145,8 +147,14 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2, const V
   return std::min(hi_a, hi_b) > std::max(lo_a, lo_b);
 }
 
-SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options) {
+namespace {
+
+/// Both checks: the whole surface (focus null) and the part of it near an edit (focus[t] for the
+/// triangles whose problems count; pairs count when either triangle is in focus).
+SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focus,
+                         const SurfaceCheckOptions& options) {
   SurfaceCheckReport report;
+  auto focused = [&](int t) { return focus == nullptr || (*focus)[t] != 0; };
   const auto& P = soup.positions;
   const auto& T = soup.triangles;
   const int nt = static_cast<int>(T.size());
@@ -166,29 +174,43 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
     normal[i] = (P[T[i][1]] - P[T[i][0]]).cross(P[T[i][2]] - P[T[i][0]]);
     if (normal[i].norm() <= options.degenerate_relative_area * diag * diag) {
       degenerate[i] = 1;
+      if (!focused(i)) continue;
       ++report.degenerate;
       if (static_cast<int>(report.degenerate_triangles.size()) < options.max_listed)
         report.degenerate_triangles.push_back(i);
     }
   }
 
-  // Folds and orientation, over edges shared by two triangles.
-  std::unordered_map<std::uint64_t, std::vector<std::pair<int, bool>>> edge_tris;
+  // Folds and orientation, over edges shared by two triangles. Sorted runs rather than a map of
+  // lists: one allocation instead of one per edge, which is most of the time on small soups.
+  struct EdgeUse {
+    std::uint64_t edge;
+    int triangle;
+    bool forward;
+    bool operator<(const EdgeUse& o) const {
+      return edge != o.edge ? edge < o.edge : triangle < o.triangle;
+    }
+  };
   auto key = [](int a, int b) {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
            static_cast<std::uint32_t>(std::max(a, b));
   };
+  std::vector<EdgeUse> uses;
+  uses.reserve(static_cast<size_t>(nt) * 3);
   for (int i = 0; i < nt; ++i)
     for (int k = 0; k < 3; ++k) {
       const int a = T[i][k], b = T[i][(k + 1) % 3];
-      edge_tris[key(a, b)].push_back({i, a < b});
+      uses.push_back({key(a, b), i, a < b});
     }
+  std::sort(uses.begin(), uses.end());
   const double cos_fold = std::cos(options.fold_angle_deg * std::numbers::pi / 180);
-  for (const auto& [k, list] : edge_tris)
-    for (size_t x = 0; x < list.size(); ++x)
-      for (size_t y = x + 1; y < list.size(); ++y) {
-        const auto [i, dir_i] = list[x];
-        const auto [j, dir_j] = list[y];
+  for (size_t run = 0, end = 0; run < uses.size(); run = end) {
+    while (end < uses.size() && uses[end].edge == uses[run].edge) ++end;
+    for (size_t x = run; x < end; ++x)
+      for (size_t y = x + 1; y < end; ++y) {
+        const int i = uses[x].triangle, j = uses[y].triangle;
+        const bool dir_i = uses[x].forward, dir_j = uses[y].forward;
+        if (!focused(i) && !focused(j)) continue;
         if (dir_i == dir_j) {
           ++report.inconsistent_edges;
           continue;
@@ -200,6 +222,7 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
             report.folded_pairs.push_back({std::min(i, j), std::max(i, j)});
         }
       }
+  }
 
   // Candidate pairs from a uniform grid of about one triangle per cell.
   double mean_size = 0;
@@ -218,28 +241,44 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
   auto cell_of = [&](double x, double origin) {
     return static_cast<long>(std::floor((x - origin) / cell));
   };
-  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  // Cells are 0..256 along each axis (the cell is at least diag / 256), so 21 bits each make a
+  // key that names one cell.
+  auto cell_key = [](long x, long y, long z) {
+    return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) |
+           static_cast<std::uint64_t>(z);
+  };
+  // (cell, triangle) for every cell a triangle's box meets, sorted so each cell's triangles
+  // form a run; and each triangle's first cell.
+  std::vector<std::pair<std::uint64_t, int>> in_cell;
+  std::vector<std::array<long, 3>> first_cell(static_cast<size_t>(nt));
   for (int i = 0; i < nt; ++i) {
     Vec3 tlo = P[T[i][0]], thi = tlo;
     for (int v : T[i]) {
       tlo = tlo.cwiseMin(P[v]);
       thi = thi.cwiseMax(P[v]);
     }
-    for (long x = cell_of(tlo.x(), lo.x()); x <= cell_of(thi.x(), lo.x()); ++x)
-      for (long y = cell_of(tlo.y(), lo.y()); y <= cell_of(thi.y(), lo.y()); ++y)
-        for (long z = cell_of(tlo.z(), lo.z()); z <= cell_of(thi.z(), lo.z()); ++z)
-          grid[(static_cast<std::uint64_t>(x) << 42) ^ (static_cast<std::uint64_t>(y) << 21) ^
-               static_cast<std::uint64_t>(z)]
-              .push_back(i);
+    first_cell[i] = {cell_of(tlo.x(), lo.x()), cell_of(tlo.y(), lo.y()), cell_of(tlo.z(), lo.z())};
+    for (long x = first_cell[i][0]; x <= cell_of(thi.x(), lo.x()); ++x)
+      for (long y = first_cell[i][1]; y <= cell_of(thi.y(), lo.y()); ++y)
+        for (long z = first_cell[i][2]; z <= cell_of(thi.z(), lo.z()); ++z)
+          in_cell.emplace_back(cell_key(x, y, z), i);
   }
-  std::unordered_set<std::uint64_t> tested;
+  std::sort(in_cell.begin(), in_cell.end());
   // Vertices closer than this to the other's plane count as on it; relative to the model size.
   const double eps = 1e-12 * diag;
-  for (const auto& [c, members] : grid)
-    for (size_t x = 0; x < members.size(); ++x)
-      for (size_t y = x + 1; y < members.size(); ++y) {
-        const int i = std::min(members[x], members[y]), j = std::max(members[x], members[y]);
-        if (!tested.insert(key(i, j)).second) continue;
+  for (size_t run = 0, end = 0; run < in_cell.size(); run = end) {
+    while (end < in_cell.size() && in_cell[end].first == in_cell[run].first) ++end;
+    for (size_t x = run; x < end; ++x)
+      for (size_t y = x + 1; y < end; ++y) {
+        const int i = in_cell[x].second, j = in_cell[y].second;  // i < j: sorted
+        if (!focused(i) && !focused(j)) continue;
+        // A pair is tested in the first of the cells both meet only (the cells both meet form
+        // a box, whose lowest corner is the larger of their first cells): once, without a set
+        // of the pairs tested.
+        if (cell_key(std::max(first_cell[i][0], first_cell[j][0]),
+                     std::max(first_cell[i][1], first_cell[j][1]),
+                     std::max(first_cell[i][2], first_cell[j][2])) != in_cell[run].first)
+          continue;
         if (degenerate[i] || degenerate[j]) continue;
         int shared = 0, si = -1, sj = -1;
         for (int a = 0; a < 3; ++a)
@@ -266,9 +305,24 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
             report.intersecting_pairs.push_back({i, j});
         }
       }
+  }
   std::sort(report.intersecting_pairs.begin(), report.intersecting_pairs.end());
   std::sort(report.folded_pairs.begin(), report.folded_pairs.end());
   return report;
+}
+
+}  // namespace
+
+SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options) {
+  return check(soup, nullptr, options);
+}
+
+SurfaceCheckReport check_surface(const TriangleSoup& soup, const std::vector<char>& focus,
+                                 const SurfaceCheckOptions& options) {
+  if (focus.size() != soup.triangles.size())
+    throw std::invalid_argument(fmt::format("check_surface: {} focus flags for {} triangles",
+                                            focus.size(), soup.triangles.size()));
+  return check(soup, &focus, options);
 }
 
 std::string SurfaceCheckReport::describe(const TriangleSoup& soup) const {

@@ -140,7 +140,8 @@ void check_tags(const std::string& path, const PolygonSoup& soup) {
 
 }  // namespace
 
-std::string read_regular_file(const std::string& path) {
+std::string read_regular_file(const std::string& path,
+                              const std::function<void(double)>& progress) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);  // follows symbolic links
   if (ec) throw MeshError(fmt::format("{}: cannot open: {}", path, ec.message()));
@@ -151,6 +152,20 @@ std::string read_regular_file(const std::string& path) {
     throw MeshError(fmt::format("{}: not a regular file (a pipe, device or socket)", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
+  if (progress) {
+    // In large pieces, so that a slow disk shows how far it is.
+    const auto size = std::filesystem::file_size(path, ec);
+    std::string bytes;
+    if (!ec) bytes.reserve(size);
+    std::vector<char> piece(std::size_t{16} << 20);
+    while (in) {
+      in.read(piece.data(), static_cast<std::streamsize>(piece.size()));
+      bytes.append(piece.data(), static_cast<std::size_t>(in.gcount()));
+      if (!ec && size > 0) progress(static_cast<double>(bytes.size()) / static_cast<double>(size));
+    }
+    if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
+    return bytes;
+  }
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
@@ -164,30 +179,42 @@ std::string file_extension(const std::string& path) {
   return ext;
 }
 
-PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings) {
+PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings,
+                              const std::function<void(double)>& progress) {
   const std::string ext = file_extension(path);
   const bool gltf = ext == ".glb" || ext == ".gltf";
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl" && !gltf)
     throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
                                 limits::quoted(ext), supported_list()));
-  const std::string text = read_regular_file(path);
+  // Reading the bytes is the first third of the work, parsing them the rest.
+  auto part = [&progress](double from, double to) -> std::function<void(double)> {
+    if (!progress) return {};
+    return [&progress, from, to](double done) { progress(from + (to - from) * done); };
+  };
+  const std::string text = read_regular_file(path, part(0, 1.0 / 3));
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw MeshError(fmt::format("{}: the file is empty", path));
-  PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings)
+  PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings, part(1.0 / 3, 1))
                      : ext == ".off" ? io_detail::read_off(text, path, warnings)
                      : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
                      : gltf          ? io_detail::read_gltf(text, path, warnings)
                                      : io_detail::read_ply(text, path, warnings);
   soup.source = path;
   if (soup.faces.empty()) throw MeshError(fmt::format("{}: the file contains no faces", path));
+  if (progress) progress(1);
   return soup;
 }
 
 HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options, BuildReport* report,
-                       std::vector<std::string>* warnings) {
-  const PolygonSoup soup = read_polygon_soup(path, warnings);
+                       std::vector<std::string>* warnings,
+                       const std::function<void(double)>& progress) {
+  std::function<void(double)> reading;
+  if (progress) reading = [&progress](double done) { progress(0.9 * done); };
+  const PolygonSoup soup = read_polygon_soup(path, warnings, reading);
   try {
-    return build_mesh(soup, options, report);
+    HalfedgeMesh mesh = build_mesh(soup, options, report);
+    if (progress) progress(1);
+    return mesh;
   } catch (const MeshError& e) {
     // build_mesh names the file only where it knows a line (not for binary PLY, nor for
     // problems of the whole mesh); every message about a file must say which file.

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -54,8 +55,10 @@ class LineReader {
 /// Throws MeshError naming the line when the line holds a byte that cannot be in a text file.
 void require_text(std::string_view line, const std::string& path, int line_number);
 
+/// `progress` (optional) gets the fraction of the text parsed, every so many lines.
 PolygonSoup read_obj(std::string_view text, const std::string& path,
-                     std::vector<std::string>* warnings);
+                     std::vector<std::string>* warnings,
+                     const std::function<void(double)>& progress = {});
 PolygonSoup read_off(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);
 PolygonSoup read_ply(std::string_view text, const std::string& path,

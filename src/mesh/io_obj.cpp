@@ -217,7 +217,8 @@ struct IgnoredTag {
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& path,
-                     std::vector<std::string>* warnings) {
+                     std::vector<std::string>* warnings,
+                     const std::function<void(double)>& progress) {
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
   PolygonSoup soup;
   std::vector<int> uv_loop;
@@ -229,6 +230,8 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   std::string_view line;
   while (lines.next(line)) {
     const int number = lines.line_number();
+    if (progress && number % 65536 == 0)
+      progress(static_cast<double>(lines.offset()) / static_cast<double>(text.size()));
     require_text(line, path, number);
     const auto words = tokens(line);
     if (words.empty()) continue;

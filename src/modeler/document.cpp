@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "sort_unique.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::modeler {
 
@@ -132,6 +133,63 @@ Change Document::replace(DocumentState state, std::string label) {
   state_ = std::get<Snapshot>(command.edit).after;
   record(std::move(command));
   return topology_change(nullptr);
+}
+
+Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgons,
+                        const Vec3& offset, std::string label) {
+  HalfedgeMesh& m = state_.mesh;
+  // New numbers of other's live elements; for edges the new half-edge of side 0.
+  std::vector<int> vertex_to(other.vertex_capacity(), -1), face_to(other.face_capacity(), -1),
+      edge_to(other.edge_capacity(), -1);
+  auto halfedge_to = [&](Halfedge h) {
+    return Halfedge(edge_to[HalfedgeMesh::edge(h).idx] + (h.idx & 1));
+  };
+  m.begin_journal();
+  try {
+    for (Vertex v : other.vertices()) {
+      const Vec3 p = other.position(v) + offset;
+      limits::check_coordinates(p, fmt::format("append: vertex {} moved by the offset", v.idx + 1));
+      const Vertex n = m.add_vertex(p);
+      vertex_to[v.idx] = n.idx;
+      if (other.sharpness(v) > 0) m.set_sharpness(n, other.sharpness(v));
+    }
+    for (Face f : other.faces()) {
+      const Face n = m.add_face();
+      face_to[f.idx] = n.idx;
+      if (other.is_hole(f)) m.set_hole(n, true);
+    }
+    for (Edge e : other.edges()) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+      const Halfedge n = m.add_edge(Vertex(vertex_to[other.origin(h).idx]),
+                                    Vertex(vertex_to[other.target(h).idx]));
+      edge_to[e.idx] = n.idx;
+      if (other.sharpness(e) > 0) m.set_sharpness(HalfedgeMesh::edge(n), other.sharpness(e));
+    }
+    for (Halfedge h : other.halfedges()) {
+      m.link(halfedge_to(h), halfedge_to(other.next(h)));
+      m.set_face(halfedge_to(h), Face(face_to[other.face(h).idx]));
+    }
+    for (Vertex v : other.vertices())
+      m.set_halfedge(Vertex(vertex_to[v.idx]), halfedge_to(other.halfedge(v)));
+    for (Face f : other.faces())
+      m.set_halfedge(Face(face_to[f.idx]), halfedge_to(other.halfedge(f)));
+  } catch (...) {
+    m.apply(m.end_journal(), false);
+    throw;
+  }
+  HalfedgeMesh::Delta delta = m.end_journal();
+  KgonOptions kgons_before = state_.kgons;
+  for (const auto& [f, c] : other_kgons.face)
+    if (f < other.face_capacity() && face_to[f] >= 0) state_.kgons.face[face_to[f]] = c;
+  for (const auto& [v, c] : other_kgons.vertex)
+    if (v < other.vertex_capacity() && vertex_to[v] >= 0) state_.kgons.vertex[vertex_to[v]] = c;
+  for (const auto& [e, c] : other_kgons.edge)
+    if (e < other.edge_capacity() && edge_to[e] >= 0)
+      state_.kgons.edge[HalfedgeMesh::edge(Halfedge(edge_to[e])).idx] = c;
+  Change c = topology_change(&delta);
+  record(Command{std::move(label),
+                 TopologyEdit{std::move(delta), std::move(kgons_before), state_.kgons}});
+  return c;
 }
 
 Change Document::move_vertices(const std::vector<Vertex>& vertices,

@@ -44,7 +44,7 @@ double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
 
 Vec3 OrbitView::eye_direction() const {
   const double y = rad(yaw_deg), p = rad(pitch_deg);
-  return {std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y)};
+  return {std::cos(p) * std::sin(y), -std::cos(p) * std::cos(y), std::sin(p)};
 }
 
 Camera OrbitView::camera(const BoundingBox& scene) const {
@@ -53,7 +53,7 @@ Camera OrbitView::camera(const BoundingBox& scene) const {
   c.target = target;
   const double y = rad(yaw_deg), p = rad(pitch_deg);
   // d(eye direction)/d(pitch): always perpendicular to the view, so straight up/down views work.
-  c.up = Vec3(-std::sin(p) * std::sin(y), std::cos(p), -std::sin(p) * std::cos(y));
+  c.up = Vec3(-std::sin(p) * std::sin(y), std::sin(p) * std::cos(y), std::cos(p));
   c.fov_y_deg = fov_y_deg;
   const double radius = scene.empty() ? 1.0 : std::max(scene.radius(), 1e-9);
   const double to_center = scene.empty() ? distance : (scene.center() - c.eye).norm();
@@ -87,28 +87,16 @@ void OrbitView::frame(const Vec3& center, double radius) {
 }
 
 void OrbitView::set_standard(View view, const BoundingBox& box) {
-  switch (view) {
-    case View::front:
-      yaw_deg = 0, pitch_deg = 0;
-      break;
-    case View::back:
-      yaw_deg = 180, pitch_deg = 0;
-      break;
-    case View::left:
-      yaw_deg = -90, pitch_deg = 0;
-      break;
-    case View::right:
-      yaw_deg = 90, pitch_deg = 0;
-      break;
-    case View::top:
-      yaw_deg = 0, pitch_deg = 90;
-      break;
-    case View::bottom:
-      yaw_deg = 0, pitch_deg = -90;
-      break;
-    case View::iso:
-      yaw_deg = 45, pitch_deg = std::asin(1.0 / std::sqrt(3.0)) * 180.0 / std::numbers::pi;
-      break;
+  const auto [from, up] = view_direction(view);
+  const double deg = 180.0 / std::numbers::pi;
+  // Exactly +-90 straight up and down: projects refuse a pitch beyond that.
+  pitch_deg = from.z() >= 1.0 ? 90.0 : from.z() <= -1.0 ? -90.0 : std::asin(from.z()) * deg;
+  if (std::abs(pitch_deg) < 90.0) {
+    yaw_deg = std::atan2(from.x(), -from.y()) * deg;
+  } else {
+    // Looking straight along z the yaw only turns the image: the one that shows `up` upwards
+    // (camera(): up = (-sin yaw, cos yaw, 0) at the top, (sin yaw, -cos yaw, 0) at the bottom).
+    yaw_deg = pitch_deg > 0 ? std::atan2(-up.x(), up.y()) * deg : std::atan2(up.x(), -up.y()) * deg;
   }
   if (!box.empty()) frame(box.center(), box.radius());
 }

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
+#include "stitch/project/project_file.hpp"
 
 namespace stitch::modeler {
 
@@ -30,153 +30,50 @@ Vec3 vec_from(const json& j, const std::string& what) {
   return p;
 }
 
-json control_json(const KgonControl& c) {
-  return {{"scale", c.scale},
-          {"rotate", c.rotate_deg},
-          {"offset", vec_json(c.offset)},
-          {"regularize", c.regularize}};
-}
-
-KgonControl control_from(const json& j, const std::string& what) {
-  KgonControl c;
-  c.scale = j.value("scale", 1.0);
-  c.rotate_deg = j.value("rotate", 0.0);
-  if (j.contains("offset")) c.offset = vec_from(j["offset"], what + " offset");
-  c.regularize = j.value("regularize", false);
-  // The same ranges as the `kgon` command: a project file is input like any other.
-  limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, what + ": scale");
-  limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                      what + ": rotate");
-  return c;
+/// A section of the project the core reader passed through, or a MeshError naming it.
+json section(const ProjectFile& file, const char* name) {
+  const auto it = file.sections.find(name);
+  if (it == file.sections.end()) throw MeshError(fmt::format("the project has no \"{}\"", name));
+  return json::parse(it->second);
 }
 
 }  // namespace
 
 bool is_project_path(const std::string& path) {
-  const std::string ext = file_extension(path);
-  return ext == ".stitch" || ext == ".json";
+  return stitch::is_project_path(path);
 }
 
 std::string project_to_json(const Project& project) {
-  const HalfedgeMesh& m = project.state.mesh;
-  const KgonOptions& k = project.state.kgons;
-  // Saved numbers are ranks among live elements (what to_polygon_soup writes).
-  std::vector<int> vertex_rank(m.vertex_capacity(), -1), face_rank(m.face_capacity(), -1);
-  int rank = 0;
-  for (Vertex v : m.vertices()) vertex_rank[v.idx] = rank++;
-  rank = 0;
-  for (Face f : m.faces()) face_rank[f.idx] = rank++;
-
-  const PolygonSoup soup = to_polygon_soup(m);
-  json positions = json::array(), faces = json::array();
-  for (const Vec3& p : soup.positions) positions.push_back(vec_json(p));
-  for (const auto& f : soup.faces) faces.push_back(f);
-
-  json kf = json::array(), kv = json::array(), ke = json::array();
-  for (const auto& [f, c] : k.face) {
-    json j = control_json(c);
-    j["face"] = face_rank[f];
-    kf.push_back(j);
-  }
-  for (const auto& [v, c] : k.vertex) {
-    json j = control_json(c);
-    j["vertex"] = vertex_rank[v];
-    kv.push_back(j);
-  }
-  for (const auto& [e, c] : k.edge) {
-    const Halfedge h = HalfedgeMesh::halfedge(Edge(e), 0);
-    json j = control_json(c);
-    j["face"] = face_rank[m.face(h).idx];
-    j["corner"] = m.index_in_face(h);
-    ke.push_back(j);
-  }
-  // Sorted so the same project always gives the same file.
-  auto by = [](const char* key) {
-    return [key](const json& a, const json& b) {
-      return std::make_pair(a[key].get<int>(), a.value("corner", 0)) <
-             std::make_pair(b[key].get<int>(), b.value("corner", 0));
-    };
-  };
-  std::sort(kf.begin(), kf.end(), by("face"));
-  std::sort(kv.begin(), kv.end(), by("vertex"));
-  std::sort(ke.begin(), ke.end(), by("face"));
-
   const DisplaySettings& d = project.display;
   json overlays = json::array();
   for (int o = 0; o < num_overlays; ++o)
     if (d.overlays[o]) overlays.push_back(overlay_names[o]);
   const OrbitView& v = project.view;
-  json j = {{"format", "stitch-modeler-project"},
-            {"version", 1},
-            {"mesh", {{"positions", positions}, {"faces", faces}}},
-            {"kgons",
-             {{"global", control_json(k.global)}, {"faces", kf}, {"vertices", kv}, {"edges", ke}}},
-            {"view",
-             {{"target", vec_json(v.target)},
-              {"distance", v.distance},
-              {"yaw", v.yaw_deg},
-              {"pitch", v.pitch_deg},
-              {"fov", v.fov_y_deg}}},
-            {"display",
-             {{"method", to_string(d.method)},
-              {"resolution", d.resolution},
-              {"mode", to_string(d.mode)},
-              {"input", d.input_polygons},
-              {"overlays", overlays},
-              {"markers", d.markers},
-              {"split", d.split ? json(to_string(*d.split)) : json(nullptr)}}}};
-  return j.dump(1) + "\n";
+  const json view = {{"target", vec_json(v.target)},
+                     {"distance", v.distance},
+                     {"yaw", v.yaw_deg},
+                     {"pitch", v.pitch_deg},
+                     {"fov", v.fov_y_deg}};
+  const json display = {{"method", to_string(d.method)},
+                        {"resolution", d.resolution},
+                        {"mode", to_string(d.mode)},
+                        {"input", d.input_polygons},
+                        {"overlays", overlays},
+                        {"markers", d.markers},
+                        {"split", d.split ? json(to_string(*d.split)) : json(nullptr)}};
+  // The mesh and K-gon controls are the core's part of the file, which `stitch` reads too.
+  return write_project_json(project.state.mesh, project.state.kgons,
+                            {{"view", view.dump()}, {"display", display.dump()}});
 }
 
 Project project_from_json(const std::string& text, const std::string& source) {
+  ProjectFile file = parse_project_json(text, source);
   try {
-    const json j = json::parse(text);
-    if (j.value("format", "") != "stitch-modeler-project")
-      throw MeshError(
-          "not a stitch modeler project (\"format\" is not \"stitch-modeler-project\")");
-    if (j.value("version", 0) != 1)
-      throw MeshError(fmt::format("unsupported project version {}", j.value("version", 0)));
     Project p;
-    PolygonSoup soup;
-    soup.source = source;
-    const json& mesh = j.at("mesh");
-    for (const json& q : mesh.at("positions")) soup.positions.push_back(vec_from(q, "a position"));
-    for (const json& f : mesh.at("faces")) soup.faces.push_back(f.get<std::vector<int>>());
-    BuildOptions build;
-    build.allow_two_gons = true;
-    BuildReport report;
-    p.state.mesh = build_mesh(soup, build, &report);
-    const HalfedgeMesh& m = p.state.mesh;
+    p.state.mesh = std::move(file.mesh);
+    p.state.kgons = std::move(file.kgons);
 
-    std::vector<int> vertex_of(soup.positions.size(), -1);
-    for (size_t v = 0; v < report.vertex_source.size(); ++v)
-      vertex_of[report.vertex_source[v]] = int(v);
-    const json& k = j.at("kgons");
-    p.state.kgons.global = control_from(k.at("global"), "the global K-gon control");
-    for (const json& c : k.at("faces")) {
-      const int f = c.at("face").get<int>();
-      if (f < 0 || f >= m.face_capacity())
-        throw MeshError(fmt::format("K-gon control of face {}: no such face", f));
-      p.state.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f));
-    }
-    for (const json& c : k.at("vertices")) {
-      const int v = c.at("vertex").get<int>();
-      if (v < 0 || v >= int(vertex_of.size()) || vertex_of[v] < 0)
-        throw MeshError(fmt::format("K-gon control of vertex {}: no such vertex", v));
-      p.state.kgons.vertex[vertex_of[v]] =
-          control_from(c, fmt::format("K-gon control of vertex {}", v));
-    }
-    for (const json& c : k.at("edges")) {
-      const int f = c.at("face").get<int>(), i = c.at("corner").get<int>();
-      if (f < 0 || f >= m.face_capacity() || i < 0 || i >= m.degree(Face(f)))
-        throw MeshError(
-            fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
-      const Halfedge h = m.face_loop(Face(f))[i];
-      p.state.kgons.edge[HalfedgeMesh::edge(h).idx] =
-          control_from(c, fmt::format("K-gon control of the edge at corner {} of face {}", i, f));
-    }
-
-    const json& v = j.at("view");
+    const json v = section(file, "view");
     p.view.target = vec_from(v.at("target"), "the view target");
     p.view.distance = v.at("distance").get<double>();
     p.view.yaw_deg = v.at("yaw").get<double>();
@@ -189,7 +86,7 @@ Project project_from_json(const std::string& text, const std::string& source) {
                         "the view's yaw");
     limits::check_range(p.view.pitch_deg, -90, 90, "the view's pitch");
 
-    const json& d = j.at("display");
+    const json d = section(file, "display");
     p.display.method = parse_method(d.at("method").get<std::string>());
     p.display.resolution = d.at("resolution").get<int>();
     if (p.display.resolution < 1 || p.display.resolution > 64)
@@ -207,11 +104,7 @@ Project project_from_json(const std::string& text, const std::string& source) {
     if (d.contains("split") && !d["split"].is_null())
       p.display.split = parse_method(d["split"].get<std::string>());
     return p;
-  } catch (const MeshError& e) {
-    const std::string msg = e.what();
-    if (msg.rfind(source, 0) == 0) throw;
-    throw MeshError(fmt::format("{}: {}", source, msg));
-  } catch (const std::exception& e) {  // JSON syntax and type errors, bad names
+  } catch (const std::exception& e) {  // MeshError, JSON type errors, bad names
     throw MeshError(fmt::format("{}: {}", source, e.what()));
   }
 }

@@ -9,6 +9,7 @@
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/project/project_file.hpp"
 #include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/patches.hpp"
@@ -77,6 +78,22 @@ bool is_operation(const std::string& word) {
   return false;
 }
 
+/// "X,Y,Z", as the command line writes points.
+Vec3 offset_from(const std::string& text) {
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 3)
+    throw MeshError(fmt::format("the offset must be X,Y,Z, not '{}'", limits::quoted(text)));
+  const Vec3 p(number(parts[0], "x"), number(parts[1], "y"), number(parts[2], "z"));
+  limits::check_coordinates(p, "the offset");
+  return p;
+}
+
 const char* const overlay_words[] = {"mesh", "kgons", "nets", "tess"};
 
 /// Zoom steps in one command: 0.9^100 is a factor of 4e-5, more than any view needs at once.
@@ -114,7 +131,21 @@ const UpdateStats& Session::apply(const Change& change) {
   } catch (const MeshError& e) {
     fall_back_from_cc(e.what());
   }
+  // Checked where the edit changed the surface, so its cost follows the edit; a full update
+  // would make that the whole mesh, which `check` does on request.
+  if (last_update.full)
+    problems_ = {};
+  else if (change.kind == Change::Kind::topology)
+    check_surface_near(surface.recomputed());
+  else if (!problems_.empty())
+    check_surface_near({});
   return last_update;
+}
+
+void Session::check_surface_near(const std::vector<Corner>& corners) {
+  std::vector<Corner> all = corners;
+  all.insert(all.end(), problems_.corners.begin(), problems_.corners.end());
+  problems_ = check_live_surface(document.mesh(), surface, all);
 }
 
 void Session::rebuild() {
@@ -122,6 +153,7 @@ void Session::rebuild() {
   whole.kind = Change::Kind::topology;
   whole.whole = true;
   remember(std::move(whole));
+  problems_ = {};
   try {
     last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
                                   display.resolution);
@@ -170,13 +202,41 @@ void open_file(Session& session, const std::string& path) {
 }
 
 void save_file(Session& session, const std::string& path) {
+  bool lost = false;
   if (is_project_path(path)) {
     save_project(path, session.project());
   } else {
     write_mesh(path, session.document.mesh());
+    const KgonOptions& k = session.document.kgon_options();
+    lost = !k.face.empty() || !k.vertex.empty() || !k.edge.empty() || k.global != KgonControl{};
+    if (lost)
+      session.warning =
+          fmt::format("K-gon controls are not stored in {}; save as .stitch to keep them",
+                      file_extension(path));
   }
   session.path = path;
-  session.document.mark_saved();
+  // Unless the file holds everything: then the document still differs from every file.
+  if (!lost) session.document.mark_saved();
+}
+
+std::string append_file(Session& session, const std::string& path, const Vec3& offset) {
+  HalfedgeMesh mesh;
+  KgonOptions kgons;
+  if (is_project_path(path)) {
+    ProjectFile p = read_project_file(path);
+    mesh = std::move(p.mesh);
+    kgons = std::move(p.kgons);
+  } else {
+    BuildOptions build;
+    build.allow_two_gons = true;
+    mesh = read_mesh(path, build);
+  }
+  const HalfedgeMesh& m = session.document.mesh();
+  const int v0 = m.vertex_capacity(), f0 = m.face_capacity();
+  session.apply(session.document.append(mesh, kgons, offset, "append " + path));
+  const int v1 = m.vertex_capacity(), f1 = m.face_capacity();
+  return fmt::format("appended {}: vertices {} to {}, faces {} to {}", path, v0 + 1, v1, f0 + 1,
+                     f1);
 }
 
 /// Writes the smooth surface as the session shows it (method, resolution, K-gon controls): a
@@ -233,6 +293,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     text = text.substr(std::min(text.size(), text.find_first_not_of(" \t")));
     result.message = report.summary(text);
     if (hooks.print) hooks.print(result.message);
+    if (const SurfaceProblems& p = s.surface_problems(); !p.empty()) {
+      result.message += "; " + p.summary();
+      if (hooks.print) hooks.print("warning: " + describe_problems(s.document.mesh(), p));
+    }
   } else if (cmd == "primitive") {
     expect(w, 1, 3, "primitive NAME [PARAMS]");
     std::vector<int> params;
@@ -340,6 +404,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     }
     s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), method);
     s.display.method = method;
+    s.check_surface_near({});  // the problems found, on the other method's patches
   } else if (cmd == "resolution") {
     expect(w, 1, 1, "resolution N");
     const int n = integer(w[1], "the resolution");
@@ -435,6 +500,19 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     } catch (const std::invalid_argument& e) {  // cc is not a set of Bézier patches
       throw MeshError(e.what());
     }
+  } else if (cmd == "append") {
+    std::string path = rest_after_first_word(strip_comment(raw));
+    Vec3 offset = Vec3::Zero();
+    // `--offset X,Y,Z` closes the line, so the path before it may contain blanks.
+    const auto parts = split_words(path);
+    if (!parts.empty() && parts.back() == "--offset")
+      throw MeshError("usage: append PATH [--offset X,Y,Z]");
+    if (parts.size() >= 2 && parts[parts.size() - 2] == "--offset") {
+      offset = offset_from(std::string(parts.back()));
+      path.erase(path.find_last_not_of(" \t", path.rfind("--offset") - 1) + 1);
+    }
+    if (path.empty()) throw MeshError("usage: append PATH [--offset X,Y,Z]");
+    result.message = append_file(s, path, offset);
   } else if (cmd == "open") {
     const std::string path = rest_after_first_word(strip_comment(raw));
     if (path.empty()) throw MeshError("usage: open PATH");
@@ -449,6 +527,20 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         t.vertices, t.edges, t.faces, t.euler, t.genus, t.components, to_string(s.display.method),
         s.surface.num_patches(), s.last_update.milliseconds, s.last_update.recomputed_patches);
     if (hooks.print) hooks.print(result.message);
+  } else if (cmd == "check") {
+    expect(w, 0, 0, "check");
+    if (s.surface.method() == Method::cc)
+      throw MeshError("check: the Catmull-Clark surface has no patches of its own to check");
+    s.check_surface_near(s.surface.corners());  // every patch: a pass over the whole surface
+    const SurfaceProblems& p = s.surface_problems();
+    if (p.empty())
+      result.message = fmt::format(
+          "check: no folds or self-intersections ({} patches, {} triangles at resolution {}, "
+          "{:.0f} ms)",
+          p.checked_patches, p.triangles, kHealthResolution, p.milliseconds);
+    else
+      result.message = "check: " + describe_problems(mesh, p);
+    if (hooks.print) hooks.print(result.message);
   } else if (cmd == "quit" || cmd == "exit") {
     expect(w, 0, 0, "quit");
     result.quit = true;
@@ -458,7 +550,9 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         "collapse-edge, extrude-face, connect-faces, delete-face, open-face, fill-hole, crease, "
         "corner, doo-sabin, vertex-insertion, catmull-clark, dual; modeler: primitive, "
         "move-vertex, translate-vertex, select, kgon, undo, redo, method, resolution, mode, "
-        "overlay, split, view, frame, orbit, zoom, screenshot, save, export, open, info, quit)",
+        "overlay, split, view, frame, orbit, zoom, screenshot, save, export, open, append, info, "
+        "check, "
+        "quit)",
         cmd));
   }
   if (!s.warning.empty()) {

@@ -69,34 +69,31 @@ Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double 
   return camera;
 }
 
-Camera frame_view(View view, const BoundingBox& box, double aspect) {
-  Vec3 from = Vec3::UnitZ();
-  Vec3 up = Vec3::UnitY();
+ViewDirection view_direction(View view) {
   switch (view) {
     case View::front:
-      from = Vec3::UnitZ();
-      break;
+      return {-Vec3::UnitY(), Vec3::UnitZ()};
     case View::back:
-      from = -Vec3::UnitZ();
-      break;
+      return {Vec3::UnitY(), Vec3::UnitZ()};
     case View::left:
-      from = -Vec3::UnitX();
-      break;
+      return {-Vec3::UnitX(), Vec3::UnitZ()};
     case View::right:
-      from = Vec3::UnitX();
-      break;
+      return {Vec3::UnitX(), Vec3::UnitZ()};
     case View::top:
-      from = Vec3::UnitY();
-      up = -Vec3::UnitZ();
-      break;
+      return {Vec3::UnitZ(), Vec3::UnitY()};
     case View::bottom:
-      from = -Vec3::UnitY();
-      up = Vec3::UnitZ();
-      break;
+      return {-Vec3::UnitZ(), Vec3::UnitY()};
     case View::iso:
-      from = Vec3(1, 1, 1);
       break;
   }
+  // From (1, 1, 1), as before z was up: a third of a turn about that diagonal maps the cube and
+  // the tetrahedron onto themselves, so their default-view pictures in the docs stay true.
+  const Vec3 from = Vec3(1, 1, 1).normalized();
+  return {from, (Vec3::UnitZ() - from.z() * from).normalized()};
+}
+
+Camera frame_view(View view, const BoundingBox& box, double aspect) {
+  const auto [from, up] = view_direction(view);
   // Fit the box's eight corners (tighter than its bounding sphere): each corner at lateral
   // offsets (x, y) and depth z towards the eye needs distance >= z + |x| / tan(half fov x).
   Camera camera;

@@ -178,8 +178,9 @@ struct Renderer::Impl {
   GLuint surface_program = 0, line_program = 0, marker_program = 0;
   Buffer surface;
   // Texture coordinates beside the surface's vertex buffer (set_surface_texcoords), attribute 4
-  // of its vertex array; while that attribute is disabled every vertex reads (0, 0).
+  // of its vertex array while `textured`.
   GLuint texcoord_vbo = 0;
+  bool textured = false;
   int surface_vertices = 0;
   // A block surface (set_block_surface): block sizes and the blocks the buffers have room for;
   // zero for a plain surface.
@@ -215,6 +216,7 @@ struct Renderer::Impl {
   Impl& operator=(const Impl&) = delete;
 
   void drop_texcoords() {
+    textured = false;
     glBindVertexArray(surface.vao);
     glDisableVertexAttribArray(4);
     glBindVertexArray(0);
@@ -392,9 +394,8 @@ void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> bloc
 void Renderer::set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoords) {
   Impl& r = *impl_;
   if (texcoords.size() != static_cast<size_t>(r.surface_vertices))
-    throw std::invalid_argument(
-        fmt::format("{} texture coordinates for a surface of {} vertices", texcoords.size(),
-                    r.surface_vertices));
+    throw std::invalid_argument(fmt::format("{} texture coordinates for a surface of {} vertices",
+                                            texcoords.size(), r.surface_vertices));
   std::vector<float> data(texcoords.size() * 2);
   for (size_t i = 0; i < texcoords.size(); ++i) {
     data[2 * i] = static_cast<float>(texcoords[i].x());
@@ -407,6 +408,7 @@ void Renderer::set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoor
   glEnableVertexAttribArray(4);
   glVertexAttribPointer(4, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   glBindVertexArray(0);
+  r.textured = true;
 }
 
 void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
@@ -479,6 +481,7 @@ void Renderer::draw(const Camera& camera, const RenderStyle& style, int width, i
     set_uniform(r.surface_program, "u_base", style.surface_colour);
     set_uniform(r.surface_program, "u_checks", static_cast<float>(style.checks));
     set_uniform(r.surface_program, "u_checker", style.checker_colour);
+    glUniform1i(glGetUniformLocation(r.surface_program, "u_textured"), r.textured ? 1 : 0);
     glBindVertexArray(r.surface.vao);
     glDrawElements(GL_TRIANGLES, r.surface.count, GL_UNSIGNED_INT, nullptr);
   }

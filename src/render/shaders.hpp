@@ -42,6 +42,7 @@ uniform float u_stripes;
 uniform vec3 u_base;
 uniform float u_checks;      // squares per side of the texture's unit square
 uniform vec3 u_checker;      // the colour of the squares that are not u_base
+uniform bool u_textured;     // whether v_texcoord holds texture coordinates
 out vec4 frag_colour;
 
 const float TAU = 6.28318530718;
@@ -103,7 +104,7 @@ void main() {
       base = levels[clamp(v_level, 0, 7)];
     } else if (u_mode == 4) {
       base = hsv(fract(float(v_patch) * 0.6180339887), 0.45, 0.95);
-    } else if (u_mode == 5) {
+    } else if (u_mode == 5 && u_textured) {
       base = mix(u_base, u_checker, checker(v_texcoord * u_checks));
     }
     colour = base * (0.25 + 0.75 * diffuse) + vec3(0.25 * specular);

@@ -58,6 +58,12 @@ struct SurfaceCheckReport {
 /// pairs is not detected); all other pairs near each other (uniform grid) by Moller's
 /// triangle-triangle test, touching at a point not counting as crossing.
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options = {});
+/// The same checks for the part of a surface near an edit (local_check.hpp): only triangles
+/// with focus[t] != 0 count as degenerate, and only pairs with at least one such triangle count
+/// as folded, crossing or inconsistent. The others are there to be met. Throws
+/// std::invalid_argument unless there is one flag per triangle.
+SurfaceCheckReport check_surface(const TriangleSoup& soup, const std::vector<char>& focus,
+                                 const SurfaceCheckOptions& options = {});
 
 /// Moller's interval test (1997) with a coplanar fallback: do the closed triangles intersect?
 /// `eps` is the distance below which a vertex counts as on the other's plane.

@@ -21,12 +21,16 @@ namespace stitch {
 /// none), PLY per-vertex `s t` (or `texture_u texture_v`, `texture_s texture_t`, `u v`), glTF
 /// TEXCOORD_0 (v flipped to OBJ's convention: 0 at the bottom).
 /// Throws MeshError naming the file and line (or element) for anything malformed.
-PolygonSoup read_polygon_soup(const std::string& path,
-                              std::vector<std::string>* warnings = nullptr);
+/// `progress`, if set, is told how much of the work is done (0 to 1) from time to time: the
+/// bytes read, then the lines parsed (OBJ, the format of the largest meshes).
+PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings = nullptr,
+                              const std::function<void(double)>& progress = {});
 
 /// read_polygon_soup + build_mesh; report->corner_uvs gets the file's texture coordinates.
+/// `progress` as for read_polygon_soup, building the mesh counted as the last tenth.
 HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options = {},
-                       BuildReport* report = nullptr, std::vector<std::string>* warnings = nullptr);
+                       BuildReport* report = nullptr, std::vector<std::string>* warnings = nullptr,
+                       const std::function<void(double)>& progress = {});
 
 /// Writes the soup; format by extension (.obj, .off, .ply as ASCII, .stl as binary triangles
 /// with each polygon fanned). Atomic: written to a temporary file beside `path`, then renamed.
@@ -46,8 +50,10 @@ void write_file_atomically_at(const std::string& path,
                               const std::function<void(const std::string& temporary)>& write);
 
 /// The bytes of a regular file (after following symbolic links). Pipes, devices and sockets
-/// are refused, since reading them may never end. Throws MeshError naming the file.
-std::string read_regular_file(const std::string& path);
+/// are refused, since reading them may never end. Throws MeshError naming the file. `progress`
+/// (optional) gets the fraction of the bytes read.
+std::string read_regular_file(const std::string& path,
+                              const std::function<void(double)>& progress = {});
 
 /// Lower-case extension of a path including the dot (".obj"), or "" when it has none.
 std::string file_extension(const std::string& path);

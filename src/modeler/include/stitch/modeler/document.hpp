@@ -70,6 +70,13 @@ class Document {
   Change apply_operation(std::string_view line, OperationReport* report = nullptr);
   /// Replaces the whole document (new primitive, opened file) as one undoable step.
   Change replace(DocumentState state, std::string label);
+  /// Adds `other` (a valid mesh) as one more component, moved by `offset`, with its
+  /// per-element K-gon controls, as one undoable step. Its elements are numbered after this
+  /// mesh's, in their order; nothing already here is renumbered, so the step is a journal entry
+  /// like a local operation and the surface updates only the new patches. Throws MeshError with
+  /// the document unchanged when the result would break a limit.
+  Change append(const HalfedgeMesh& other, const KgonOptions& other_kgons, const Vec3& offset,
+                std::string label);
   /// Moves vertices to `positions`. With `merge`, a move of the same vertices right after
   /// another one extends that command (one undo step per mouse drag).
   Change move_vertices(const std::vector<Vertex>& vertices, const std::vector<Vec3>& positions,

@@ -10,8 +10,8 @@
 
 namespace stitch::modeler {
 
-/// A camera orbiting `target` (world y is up): yaw turns about y, pitch lifts the eye.
-/// yaw = pitch = 0 looks down -z (the front view).
+/// A camera orbiting `target` (world z is up, as everywhere in stitch): yaw turns about z, pitch
+/// lifts the eye. yaw = pitch = 0 is the front view (eye on -y, looking along +y).
 struct OrbitView {
   Vec3 target = Vec3::Zero();
   double distance = 6.0;
@@ -33,7 +33,7 @@ struct OrbitView {
   void zoom(double steps);
   /// Keeps the direction, shows the whole sphere (center, radius).
   void frame(const Vec3& center, double radius);
-  /// One of the standard directions of camera.hpp, framing `box`.
+  /// One of the standard views of camera.hpp (view_direction), framing `box`.
   void set_standard(View view, const BoundingBox& box);
 };
 

@@ -1,17 +1,6 @@
-// The modeler's project file (JSON): the mesh, the per-element K-gon controls, the view and the
-// display settings; and where autosaves go.
-//
-// Format (version 1):
-//   { "format": "stitch-modeler-project", "version": 1,
-//     "mesh": { "positions": [[x, y, z], ...], "faces": [[i, j, k, ...], ...] },   // 0-based
-//     "kgons": { "global": CONTROL,
-//                "faces": [{"face": F, CONTROL...}], "vertices": [{"vertex": V, ...}],
-//                "edges": [{"face": F, "corner": K, ...}] },  // the edge of face F's K-th side
-//     "view": { "target": [x, y, z], "distance": d, "yaw": deg, "pitch": deg, "fov": deg },
-//     "display": { "method": "mdc", "resolution": 8, "mode": "shaded", "input": false,
-//                  "overlays": ["mesh", ...], "markers": false, "split": null | "asc" } }
-// where CONTROL is "scale", "rotate" (degrees), "offset" [x, y, z], "regularize". Numbers are
-// those of the mesh as saved (deleted elements compacted away), all 0-based.
+// The modeler's project file (JSON): the mesh and the per-element K-gon controls (the core's
+// part, which `stitch` commands read too: stitch/project/project_file.hpp describes the whole
+// format), plus the view and the display settings; and where autosaves go.
 #pragma once
 
 #include <array>

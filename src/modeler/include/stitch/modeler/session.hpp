@@ -16,6 +16,10 @@
 //   view front|back|left|right|top|bottom|iso        frame all|selection
 //   orbit DYAW DPITCH (degrees)      zoom STEPS
 //   screenshot PATH    save [PATH]    open PATH    info    quit
+//   check                            the whole surface for folds and self-intersections (an
+//                                    edit checks the patches it changed: surface_problems)
+//   append PATH [--offset X,Y,Z]     adds a mesh or project as one more component (one undo
+//                                    step), moved by the offset
 //   export PATH                      the smooth surface as shown (method, resolution, K-gon
 //                                    controls): .obj .ply .off .stl .glb .gltf, or .json for the
 //                                    Bézier patches
@@ -33,6 +37,7 @@
 #include "stitch/modeler/live_surface.hpp"
 #include "stitch/modeler/navigation.hpp"
 #include "stitch/modeler/project.hpp"
+#include "stitch/modeler/surface_health.hpp"
 
 namespace stitch::modeler {
 
@@ -61,9 +66,18 @@ struct Session {
   [[nodiscard]] BoundingBox mesh_bounds() const;
   /// The project as it stands (for saving and autosaving).
   [[nodiscard]] Project project() const;
+  /// Folds and self-intersections of the surface near the edits (surface_health.hpp): checked
+  /// after every topology edit on the patches it recomputed; a move or K-gon edit re-checks only
+  /// the patches already found; a rebuild (remeshing, new document) clears it, as `check` finds
+  /// them on the whole surface again.
+  [[nodiscard]] const SurfaceProblems& surface_problems() const { return problems_; }
+  /// Checks `corners` and the patches of the problems found before, with their neighbours, and
+  /// keeps the result as surface_problems().
+  void check_surface_near(const std::vector<Corner>& corners);
 
  private:
   void fall_back_from_cc(const std::string& why);
+  SurfaceProblems problems_;
   /// Changes not yet taken; after many, one whole change stands for them all.
   std::vector<Change> untaken_;
   void remember(Change change);
@@ -73,8 +87,12 @@ struct Session {
 /// (or the project's). Throws MeshError.
 void open_file(Session& session, const std::string& path);
 /// Saves the project (.stitch/.json) or the mesh (.obj/.off/.ply/.stl), atomically; the path
-/// becomes the document's. Throws MeshError.
+/// becomes the document's. Throws MeshError. A mesh file has no place for K-gon controls: with
+/// any set, session.warning says so and the document stays modified (its autosave keeps them).
 void save_file(Session& session, const std::string& path);
+/// Adds the mesh or project at `path` to the document as one more component moved by `offset`
+/// (Document::append), one undo step. Returns what was added. Throws MeshError.
+std::string append_file(Session& session, const std::string& path, const Vec3& offset);
 
 /// What a script line needs from the application.
 struct ScriptHooks {

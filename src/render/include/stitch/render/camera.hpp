@@ -27,19 +27,32 @@ struct BoundingBox {
 
 BoundingBox bounding_box(const std::vector<Vec3>& points);
 
-/// A perspective camera. Right-handed world, the image's y points along `up`.
+/// A perspective camera. Right-handed world, the image's y points along `up`. The default is
+/// the front view (z up).
 struct Camera {
-  Vec3 eye = Vec3(0, 0, 5);
+  Vec3 eye = Vec3(0, -5, 0);
   Vec3 target = Vec3::Zero();
-  Vec3 up = Vec3::UnitY();
+  Vec3 up = Vec3::UnitZ();
   double fov_y_deg = 30.0;
   double near_plane = 0.1;
   double far_plane = 100.0;
 };
 
-/// front: looking down -z (eye on +z), back: eye on -z, left: eye on -x, right: eye on +x,
-/// top: eye on +y (image up = -z), bottom: eye on -y, iso: eye along (1, 1, 1).
+/// The named views. z is up, as in the primitives and the docs (the cube's bottom and top faces
+/// are z = -1 and z = 1): front looks along +y at the y = -1 side, back along -y, left along +x
+/// at the x = -1 side, right along -x, all with +z up in the image; top looks down -z onto the
+/// z = 1 face and bottom up +z, both with +y up in the image; iso looks from (1, 1, 1) with +z
+/// up.
 enum class View { front, back, left, right, top, bottom, iso };
+
+/// A named view's direction from the target towards the eye and the world direction shown up in
+/// the image (perpendicular to `from`): the one definition of the views, which the renderer's
+/// framing and the modeler's orbit camera share.
+struct ViewDirection {
+  Vec3 from;
+  Vec3 up;
+};
+ViewDirection view_direction(View view);
 
 /// Parses the names above; throws std::invalid_argument listing them otherwise.
 View parse_view(const std::string& name);
@@ -47,8 +60,10 @@ std::string to_string(View view);
 
 /// The camera that shows the whole box from `view`, filling the smaller image side.
 Camera frame_view(View view, const BoundingBox& box, double aspect);
-/// Looks from `eye` at `target`; near/far planes are chosen to contain `box`. Throws
-/// std::invalid_argument when eye == target.
+/// Looks from `eye` at `target`; near/far planes are chosen to contain `box`. The image's up is
+/// world +y (+z when looking along y), not the named views' +z: explicit eyes keep the roll they
+/// had, so existing commands and their pictures stay as they were. Throws std::invalid_argument
+/// when eye == target.
 Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box);
 /// Frames the sphere (center, radius) seen from direction `from` (pointing from the center
 /// towards the eye); `scene` sets the clipping planes so the rest of the model is not cut.

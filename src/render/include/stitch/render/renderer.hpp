@@ -28,8 +28,8 @@ enum class ShadingMode {
   isophote,  ///< bands of constant angle between normal and light
   levels,    ///< colour by hierarchy level of the sub-patch a sample came from
   patches,   ///< colour by patch
-  /// shaded, on a checkerboard over the texture's unit square (Renderer::set_surface_texcoords;
-  /// a surface without texture coordinates gets one square's colour)
+  /// shaded, on a checkerboard over the texture's unit square (Renderer::set_surface_texcoords);
+  /// a surface without texture coordinates is drawn as in `shaded`
   checker,
 };
 

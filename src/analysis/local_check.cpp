@@ -1,0 +1,231 @@
+#include "stitch/analysis/local_check.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "eval/patch_sampler.hpp"
+
+namespace stitch {
+
+namespace {
+
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+bool has_patch(const HalfedgeMesh& m, Corner c) {
+  return c.idx >= 0 && c.idx < m.halfedge_capacity() && !m.is_deleted(c) && !m.is_hole(c);
+}
+
+// Grid indices get 14 bits each in a weld key, element numbers 32.
+constexpr int kMostResolution = (1 << 14) - 1;
+
+/// What a grid sample lies on, so that every patch sharing it finds the same key (the rules of
+/// TessellationLayout::vertex, which numbers the welded tessellation the same way).
+enum class On : std::uint64_t { vertex, face, edge, half, boundary_half, spoke, interior };
+
+std::uint64_t key(On on, int element, int a = 0, int b = 0) {
+  return (static_cast<std::uint64_t>(on) << 60) |
+         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(element)) << 28) |
+         (static_cast<std::uint64_t>(a) << 14) | static_cast<std::uint64_t>(b);
+}
+
+/// Sample (i, j) of corner c's grid: (0, 0) is its vertex, (n, n) its face's centre, (n, 0) the
+/// middle of edge(c), (0, n) the middle of edge(prev(c)). Side j = 0 is the half of edge(c) at
+/// the vertex, which the patch of rotate_cw(c) has as its side i = 0; side i = n is the spoke
+/// to the face centre, which next(c) has as its side j = n.
+std::uint64_t sample_key(const HalfedgeMesh& m, Corner c, int i, int j, int n) {
+  if (i == 0 && j == 0) return key(On::vertex, m.origin(c).idx);
+  if (i == n && j == n) return key(On::face, m.face(c).idx);
+  if (i == n && j == 0) return key(On::edge, HalfedgeMesh::edge(c).idx);
+  if (i == 0 && j == n) return key(On::edge, HalfedgeMesh::edge(m.prev(c)).idx);
+  if (j == 0) return key(On::half, c.idx, i);
+  if (i == 0) {
+    const Corner across = m.rotate_ccw(c);
+    return m.is_hole(across) ? key(On::boundary_half, c.idx, j) : key(On::half, across.idx, j);
+  }
+  if (i == n) return key(On::spoke, c.idx, j);
+  if (j == n) return key(On::spoke, m.prev(c).idx, i);
+  return key(On::interior, c.idx, i, j);
+}
+
+void add_triangle(TriangleSoup& soup, std::vector<char>& focus, int a, int b, int c, int source,
+                  bool focused) {
+  // A grid cell at a collapsed side repeats a vertex: no triangle (as triangulate does).
+  if (a == b || b == c || a == c) return;
+  soup.triangles.push_back({a, b, c});
+  soup.source.push_back(source);
+  focus.push_back(focused ? 1 : 0);
+}
+
+}  // namespace
+
+std::vector<Corner> patch_neighbourhood(const HalfedgeMesh& m, const std::vector<Corner>& changed) {
+  std::vector<Corner> out;
+  for (Corner c : changed) {
+    if (!has_patch(m, c)) continue;
+    out.push_back(c);
+    for (Halfedge h : m.face_loop(m.face(c))) out.push_back(h);
+    for (Halfedge h : m.vertex_fan(m.origin(c))) out.push_back(h);
+    // The patches across the corner's two edges touch it at their midpoints.
+    out.push_back(HalfedgeMesh::twin(c));
+    out.push_back(HalfedgeMesh::twin(m.prev(c)));
+  }
+  std::erase_if(out, [&](Corner c) { return !has_patch(m, c); });
+  sort_unique(out);
+  return out;
+}
+
+LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>& changed,
+                               const PatchGridSampler& sample, const LocalCheckOptions& options) {
+  const int n = options.resolution;
+  if (n < 1 || n > kMostResolution)
+    throw std::invalid_argument(
+        fmt::format("check_patches: the resolution must be in 1..{}, not {}", kMostResolution, n));
+  std::vector<Corner> focus_corners;
+  for (Corner c : changed)
+    if (has_patch(m, c)) focus_corners.push_back(c);
+  sort_unique(focus_corners);
+  const std::vector<Corner> local = patch_neighbourhood(m, focus_corners);
+
+  LocalCheckReport report;
+  report.changed_patches = static_cast<int>(focus_corners.size());
+  report.patches = static_cast<int>(local.size());
+  if (local.empty()) return report;
+
+  TriangleSoup soup;
+  std::vector<char> focus;
+  std::unordered_map<std::uint64_t, int> welded;
+  const int side = n + 1;
+  std::vector<int> grid(static_cast<size_t>(side) * side);
+  for (Corner c : local) {
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const auto [it, fresh] =
+            welded.emplace(sample_key(m, c, i, j, n), static_cast<int>(soup.positions.size()));
+        if (fresh) soup.positions.push_back(sample(c, i, j));
+        grid[i * side + j] = it->second;
+      }
+    const bool focused = std::binary_search(focus_corners.begin(), focus_corners.end(), c);
+    // The quads of tessellate() (counter-clockwise from the normal side), split as
+    // triangulate(SurfaceMesh) splits them, so the triangles are the whole check's.
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const int q0 = grid[i * side + j], q1 = grid[(i + 1) * side + j],
+                  q2 = grid[(i + 1) * side + j + 1], q3 = grid[i * side + j + 1];
+        add_triangle(soup, focus, q0, q1, q2, c.idx, focused);
+        add_triangle(soup, focus, q0, q2, q3, c.idx, focused);
+      }
+  }
+
+  SurfaceCheckOptions check = options.surface;
+  check.max_listed = std::numeric_limits<int>::max();
+  const SurfaceCheckReport r = check_surface(soup, focus, check);
+  report.triangles = r.triangles;
+  report.self_intersections = r.self_intersections;
+  report.folds = r.folds;
+  report.degenerate = r.degenerate;
+  for (const auto* pairs : {&r.intersecting_pairs, &r.folded_pairs})
+    for (const auto& p : *pairs) {
+      report.problem_corners.emplace_back(soup.source[p[0]]);
+      report.problem_corners.emplace_back(soup.source[p[1]]);
+    }
+  sort_unique(report.problem_corners);
+  return report;
+}
+
+LocalCheckReport check_patches(const HalfedgeMesh& mesh, const Surface& surface,
+                               const std::vector<Corner>& changed,
+                               const LocalCheckOptions& options) {
+  // Samples come patch after patch, which is the order the sampler keeps its splits for.
+  PatchSampler sampler(surface, options.resolution);
+  return check_patches(
+      mesh, changed,
+      [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
+}
+
+std::vector<Corner> patches_touched(const HalfedgeMesh& m, const std::vector<Vertex>& vertices,
+                                    const std::vector<Edge>& edges,
+                                    const std::vector<Face>& faces) {
+  // Faces whose loops or corner positions changed: their K-gons and the K-gons of their
+  // vertices, edges and the faces across (which read their normals) may change, and with them
+  // every net that reads one of those (the rule of the modeler's LiveSurface::update).
+  std::vector<Face> moved;
+  for (Edge e : edges) {
+    if (e.idx >= m.edge_capacity() || m.is_deleted(e)) continue;
+    for (int s = 0; s < 2; ++s) moved.push_back(m.face(HalfedgeMesh::halfedge(e, s)));
+  }
+  for (Vertex v : vertices) {
+    if (v.idx >= m.vertex_capacity() || m.is_deleted(v)) continue;
+    for (Halfedge h : m.vertex_fan(v)) moved.push_back(m.face(h));
+  }
+  for (Face f : faces)
+    if (f.idx < m.face_capacity() && !m.is_deleted(f)) moved.push_back(f);
+  sort_unique(moved);
+  std::vector<Face> kgon_faces = moved;
+  std::vector<Vertex> kgon_vertices;
+  std::vector<Edge> kgon_edges;
+  for (Face f : moved)
+    for (Halfedge h : m.face_loop(f)) {
+      kgon_vertices.push_back(m.origin(h));
+      kgon_edges.push_back(HalfedgeMesh::edge(h));
+      kgon_faces.push_back(m.face(HalfedgeMesh::twin(h)));
+    }
+  sort_unique(kgon_faces);
+  sort_unique(kgon_vertices);
+  sort_unique(kgon_edges);
+  // A net reads the K-gons of its face, its vertex, its edge and its previous edge.
+  std::vector<Corner> out;
+  for (Face f : kgon_faces)
+    for (Halfedge h : m.face_loop(f)) out.push_back(h);
+  for (Vertex v : kgon_vertices)
+    for (Halfedge h : m.vertex_fan(v)) out.push_back(h);
+  for (Edge e : kgon_edges)
+    for (int s = 0; s < 2; ++s) {
+      const Halfedge h = HalfedgeMesh::halfedge(e, s);
+      out.push_back(h);
+      out.push_back(m.next(h));
+    }
+  std::erase_if(out, [&](Corner c) { return m.is_hole(c); });
+  sort_unique(out);
+  return out;
+}
+
+std::vector<std::string> corner_names(const HalfedgeMesh& m, const std::vector<Corner>& corners,
+                                      bool as_written) {
+  std::vector<int> vertex_number, face_number;
+  if (as_written) {
+    // The writer's numbering (to_polygon_soup): ranks among live vertices and surface faces.
+    vertex_number.assign(static_cast<size_t>(m.vertex_capacity()), 0);
+    face_number.assign(static_cast<size_t>(m.face_capacity()), 0);
+    int next = 0;
+    for (Vertex v : m.vertices()) vertex_number[v.idx] = ++next;
+    next = 0;
+    for (Face f : m.surface_faces()) face_number[f.idx] = ++next;
+  }
+  std::vector<std::string> names;
+  for (Corner c : corners) {
+    const Vertex v = m.origin(c);
+    const Face f = m.face(c);
+    int occurrences = 0, k = 0;
+    for (Halfedge h : m.face_loop(f))
+      if (m.origin(h) == v) {
+        ++occurrences;
+        if (h == c) k = occurrences;
+      }
+    std::string name = fmt::format("{}@{}", as_written ? vertex_number[v.idx] : v.idx + 1,
+                                   as_written ? face_number[f.idx] : f.idx + 1);
+    if (occurrences > 1) name += fmt::format("#{}", k);
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
+}  // namespace stitch

@@ -1,0 +1,187 @@
+#include "stitch/project/project_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
+
+namespace stitch {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kFormat = "stitch-modeler-project";
+
+json vec_json(const Vec3& p) {
+  return json::array({p.x(), p.y(), p.z()});
+}
+
+Vec3 vec_from(const json& j, const std::string& what) {
+  if (!j.is_array() || j.size() != 3) throw MeshError(what + " must be an array of 3 numbers");
+  const Vec3 p(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+  limits::check_coordinates(p, what);
+  return p;
+}
+
+json control_json(const KgonControl& c) {
+  return {{"scale", c.scale},
+          {"rotate", c.rotate_deg},
+          {"offset", vec_json(c.offset)},
+          {"regularize", c.regularize}};
+}
+
+KgonControl control_from(const json& j, const std::string& what) {
+  KgonControl c;
+  c.scale = j.value("scale", 1.0);
+  c.rotate_deg = j.value("rotate", 0.0);
+  if (j.contains("offset")) c.offset = vec_from(j["offset"], what + " offset");
+  c.regularize = j.value("regularize", false);
+  // The same ranges as the command line's: a project file is input like any other.
+  limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, what + ": scale");
+  limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                      what + ": rotate");
+  return c;
+}
+
+}  // namespace
+
+bool is_project_path(const std::string& path) {
+  const std::string ext = file_extension(path);
+  return ext == ".stitch" || ext == ".json";
+}
+
+std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
+                               const std::map<std::string, std::string>& sections) {
+  // Saved numbers are ranks among the elements to_polygon_soup writes: live vertices, and live
+  // faces that are not holes (holes read back as boundaries, numbered after the faces).
+  std::vector<int> vertex_rank(m.vertex_capacity(), -1), face_rank(m.face_capacity(), -1);
+  int rank = 0;
+  for (Vertex v : m.vertices()) vertex_rank[v.idx] = rank++;
+  rank = 0;
+  for (Face f : m.surface_faces()) face_rank[f.idx] = rank++;
+
+  const PolygonSoup soup = to_polygon_soup(m);
+  json positions = json::array(), faces = json::array();
+  for (const Vec3& p : soup.positions) positions.push_back(vec_json(p));
+  for (const auto& f : soup.faces) faces.push_back(f);
+
+  json kf = json::array(), kv = json::array(), ke = json::array();
+  for (const auto& [f, c] : k.face) {
+    if (face_rank[f] < 0) continue;  // a hole has no K-gon
+    json j = control_json(c);
+    j["face"] = face_rank[f];
+    kf.push_back(j);
+  }
+  for (const auto& [v, c] : k.vertex) {
+    json j = control_json(c);
+    j["vertex"] = vertex_rank[v];
+    kv.push_back(j);
+  }
+  for (const auto& [e, c] : k.edge) {
+    // Named by a side on a face the file keeps: no edge has holes on both sides.
+    Halfedge h = HalfedgeMesh::halfedge(Edge(e), 0);
+    if (m.is_hole(h)) h = HalfedgeMesh::twin(h);
+    json j = control_json(c);
+    j["face"] = face_rank[m.face(h).idx];
+    j["corner"] = m.index_in_face(h);
+    ke.push_back(j);
+  }
+  // Sorted so the same project always gives the same file.
+  auto by = [](const char* key) {
+    return [key](const json& a, const json& b) {
+      return std::make_pair(a[key].get<int>(), a.value("corner", 0)) <
+             std::make_pair(b[key].get<int>(), b.value("corner", 0));
+    };
+  };
+  std::sort(kf.begin(), kf.end(), by("face"));
+  std::sort(kv.begin(), kv.end(), by("vertex"));
+  std::sort(ke.begin(), ke.end(), by("face"));
+
+  json j = {{"format", kFormat},
+            {"version", 1},
+            {"mesh", {{"positions", positions}, {"faces", faces}}},
+            {"kgons",
+             {{"global", control_json(k.global)}, {"faces", kf}, {"vertices", kv}, {"edges", ke}}}};
+  for (const auto& [name, text] : sections) j[name] = json::parse(text);
+  return j.dump(1) + "\n";
+}
+
+ProjectFile parse_project_json(const std::string& text, const std::string& source,
+                               BuildOptions build, BuildReport* report_out) {
+  try {
+    const json j = json::parse(text);
+    if (!j.is_object() || j.value("format", "") != kFormat)
+      throw MeshError(
+          fmt::format("not a stitch modeler project (\"format\" is not \"{}\")", kFormat));
+    if (j.value("version", 0) != 1)
+      throw MeshError(fmt::format("unsupported project version {}", j.value("version", 0)));
+    ProjectFile p;
+    PolygonSoup soup;
+    soup.source = source;
+    const json& mesh = j.at("mesh");
+    for (const json& q : mesh.at("positions")) soup.positions.push_back(vec_from(q, "a position"));
+    for (const json& f : mesh.at("faces")) soup.faces.push_back(f.get<std::vector<int>>());
+    build.allow_two_gons = true;
+    BuildReport local;
+    BuildReport& report = report_out ? *report_out : local;
+    p.mesh = build_mesh(soup, build, &report);
+    const HalfedgeMesh& m = p.mesh;
+
+    std::vector<int> vertex_of(soup.positions.size(), -1);
+    for (size_t v = 0; v < report.vertex_source.size(); ++v)
+      vertex_of[report.vertex_source[v]] = int(v);
+    const int soup_faces = static_cast<int>(soup.faces.size());  // holes come after them
+    const json& k = j.at("kgons");
+    p.kgons.global = control_from(k.at("global"), "the global K-gon control");
+    for (const json& c : k.at("faces")) {
+      const int f = c.at("face").get<int>();
+      if (f < 0 || f >= soup_faces)
+        throw MeshError(fmt::format("K-gon control of face {}: no such face", f));
+      p.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f));
+    }
+    for (const json& c : k.at("vertices")) {
+      const int v = c.at("vertex").get<int>();
+      if (v < 0 || v >= int(vertex_of.size()) || vertex_of[v] < 0)
+        throw MeshError(fmt::format("K-gon control of vertex {}: no such vertex", v));
+      p.kgons.vertex[vertex_of[v]] = control_from(c, fmt::format("K-gon control of vertex {}", v));
+    }
+    for (const json& c : k.at("edges")) {
+      const int f = c.at("face").get<int>(), i = c.at("corner").get<int>();
+      if (f < 0 || f >= soup_faces || i < 0 || i >= m.degree(Face(f)))
+        throw MeshError(
+            fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
+      const Halfedge h = m.face_loop(Face(f))[i];
+      p.kgons.edge[HalfedgeMesh::edge(h).idx] =
+          control_from(c, fmt::format("K-gon control of the edge at corner {} of face {}", i, f));
+    }
+    if (j.contains("display") && j["display"].contains("method")) {
+      try {
+        p.method = parse_method(j["display"]["method"].get<std::string>());
+      } catch (const std::invalid_argument& e) {
+        throw MeshError(fmt::format("display: {}", e.what()));
+      }
+    }
+    for (const auto& [name, value] : j.items())
+      if (name != "format" && name != "version" && name != "mesh" && name != "kgons")
+        p.sections[name] = value.dump();
+    return p;
+  } catch (const MeshError& e) {
+    const std::string msg = e.what();
+    if (msg.rfind(source, 0) == 0) throw;
+    throw MeshError(fmt::format("{}: {}", source, msg));
+  } catch (const std::exception& e) {  // JSON syntax and type errors, missing members
+    throw MeshError(fmt::format("{}: {}", source, e.what()));
+  }
+}
+
+ProjectFile read_project_file(const std::string& path, const BuildOptions& build,
+                              BuildReport* report) {
+  return parse_project_json(read_regular_file(path), path, build, report);
+}
+
+}  // namespace stitch

@@ -1,0 +1,124 @@
+// The session checks the patches a topology edit changed for folds and self-intersections, and
+// forgets them when an undo takes the edit back.
+#include "stitch/modeler/surface_health.hpp"
+
+#include <gtest/gtest.h>
+
+#include "stitch/modeler/session.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "stitch/topology/remesh.hpp"
+
+namespace stitch::modeler {
+namespace {
+
+struct Printed {
+  std::vector<std::string> lines;
+  ScriptHooks hooks() {
+    ScriptHooks h;
+    h.print = [this](const std::string& t) { lines.push_back(t); };
+    return h;
+  }
+};
+
+/// The problem patches of the whole surface, from the library's check of every patch.
+std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method method) {
+  return check_patches(mesh, Surface(mesh, method), mesh.patch_corners()).problem_corners;
+}
+
+TEST(SurfaceHealth, TheHalfTwistIsReportedAndUndoClearsIt) {
+  Session s(make_cube());
+  EXPECT_TRUE(s.surface_problems().empty());
+  Printed printed;
+  const ScriptResult r = run_script_line(s, "insert-edge 1@1 7@2", printed.hooks());
+  const SurfaceProblems& p = s.surface_problems();
+  ASSERT_FALSE(p.empty());
+  EXPECT_GT(p.folds, 0);
+  EXPECT_EQ(p.summary(), "surface folds at 4 patches");
+  EXPECT_EQ(p.corners, whole_surface_problems(s.document.mesh(), Method::mdc));
+  EXPECT_GT(p.checked_patches, 0);
+  EXPECT_EQ(p.checked_patches, s.last_update.recomputed_patches);
+  EXPECT_NE(r.message.find("; surface folds at 4 patches"), std::string::npos) << r.message;
+  ASSERT_EQ(printed.lines.size(), 2u);
+  EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 4 patches (corners 1@1#1, ", 0), 0u)
+      << printed.lines[1];
+
+  ASSERT_FALSE(run_script(s, {"undo"}, {}));
+  EXPECT_TRUE(s.surface_problems().empty());
+  EXPECT_GT(s.surface_problems().checked_patches, 0);  // checked, not just forgotten
+  ASSERT_FALSE(run_script(s, {"redo"}, {}));
+  EXPECT_EQ(s.surface_problems().corners, p.corners);
+}
+
+TEST(SurfaceHealth, TheStraightTubeIsClean) {
+  Session s(make_cube());  // displayed at resolution 8, where the tube's tight bend looks folded
+  Printed printed;
+  run_script_line(s, "insert-edge 1@1 5@2", printed.hooks());
+  EXPECT_TRUE(s.surface_problems().empty());
+  EXPECT_GT(s.surface_problems().triangles, 0);
+  EXPECT_EQ(printed.lines.size(), 1u);
+  EXPECT_TRUE(whole_surface_problems(s.document.mesh(), Method::mdc).empty());
+}
+
+TEST(SurfaceHealth, DisplayResolutionAndMethodChangesKeepTheAnswer) {
+  // At resolution 16 the check reads the drawn tessellation instead of evaluating the nets.
+  Session s(make_cube());
+  ASSERT_FALSE(run_script(s, {"resolution 16", "insert-edge 1@1 7@2"}, {}));
+  const std::vector<Corner> found = s.surface_problems().corners;
+  EXPECT_EQ(found, whole_surface_problems(s.document.mesh(), Method::mdc));
+  ASSERT_FALSE(run_script(s, {"method asc"}, {}));
+  EXPECT_EQ(s.surface_problems().corners, whole_surface_problems(s.document.mesh(), Method::asc));
+  ASSERT_FALSE(run_script(s, {"method cc"}, {}));
+  EXPECT_TRUE(s.surface_problems().empty());  // not checked: no Bezier patches
+  EXPECT_TRUE(run_script(s, {"check"}, {}));  // refused, saying why
+}
+
+TEST(SurfaceHealth, CheckCommandLooksAtTheWholeSurface) {
+  Session s(make_cube());
+  Printed printed;
+  ASSERT_FALSE(run_script(s, {"check"}, printed.hooks()));
+  ASSERT_EQ(printed.lines.size(), 1u);
+  EXPECT_EQ(printed.lines[0].rfind("check: no folds or self-intersections (24 patches", 0), 0u)
+      << printed.lines[0];
+  // A remeshing is a full rebuild: not checked until asked.
+  ASSERT_FALSE(run_script(s, {"insert-edge 1@1 7@2", "catmull-clark"}, {}));
+  EXPECT_TRUE(s.surface_problems().empty());
+  ASSERT_FALSE(run_script(s, {"check"}, printed.hooks()));
+  EXPECT_FALSE(s.surface_problems().empty());
+  // Refined, the twisted tube passes through itself.
+  EXPECT_EQ(printed.lines.back().rfind("check: surface intersects itself at ", 0), 0u)
+      << printed.lines.back();
+}
+
+TEST(SurfaceHealth, MovesRecheckOnlyTheProblemsFound) {
+  Session s(make_cube());
+  ASSERT_FALSE(run_script(s, {"insert-edge 1@1 7@2"}, {}));
+  const std::vector<Corner> before = s.surface_problems().corners;
+  ASSERT_FALSE(before.empty());
+  // A small move of a vertex away from the new edge: the folds stay, and only the patches
+  // already found were checked again (with their neighbours).
+  ASSERT_FALSE(run_script(s, {"translate-vertex 3 0 0 0.01"}, {}));
+  EXPECT_EQ(s.surface_problems().corners, before);
+  EXPECT_EQ(s.surface_problems().checked_patches, static_cast<int>(before.size()));
+  // Without problems, a move checks nothing.
+  ASSERT_FALSE(run_script(s, {"undo", "undo", "translate-vertex 3 0 0 0.01"}, {}));
+  EXPECT_TRUE(s.surface_problems().empty());
+}
+
+TEST(SurfaceHealth, WorkFollowsTheEditNotTheMesh) {
+  // The twisted edge on the cube refined 3 and 5 times (docs/editing.md numbers the faces).
+  std::vector<SurfaceProblems> found;
+  for (const auto& [steps, op] :
+       {std::pair{3, "insert-edge 1@1 7@97"}, std::pair{5, "insert-edge 1@1 7@1537"}}) {
+    HalfedgeMesh mesh = make_cube();
+    for (int i = 0; i < steps; ++i) mesh = catmull_clark_step(mesh);
+    Session s(std::move(mesh));
+    ASSERT_FALSE(run_script(s, {op}, {}));
+    found.push_back(s.surface_problems());
+    EXPECT_FALSE(found.back().empty());
+  }
+  EXPECT_EQ(found[0].checked_patches, found[1].checked_patches);
+  EXPECT_EQ(found[0].triangles, found[1].triangles);
+}
+
+}  // namespace
+}  // namespace stitch::modeler

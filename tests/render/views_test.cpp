@@ -1,0 +1,120 @@
+// The named views follow the one up-axis convention of stitch: z is up (the cube's faces 1 and
+// 2 are its bottom z = -1 and top z = 1, face 3 its front y = -1).
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "../temp_folder.hpp"
+#include "stitch/render/camera.hpp"
+#include "test_helpers.hpp"
+
+namespace stitch {
+namespace {
+
+using stitch::testing::read_file;
+using stitch::testing::TempFolder;
+
+struct Expected {
+  View view;
+  Vec3 from, right, up;  ///< towards the eye; the world directions shown right and up
+};
+
+const Expected kViews[] = {
+    {View::front, -Vec3::UnitY(), Vec3::UnitX(), Vec3::UnitZ()},
+    {View::back, Vec3::UnitY(), -Vec3::UnitX(), Vec3::UnitZ()},
+    {View::left, -Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitZ()},
+    {View::right, Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()},
+    {View::top, Vec3::UnitZ(), Vec3::UnitX(), Vec3::UnitY()},
+    {View::bottom, -Vec3::UnitZ(), -Vec3::UnitX(), Vec3::UnitY()},
+};
+
+TEST(Views, ZIsUpAndEachViewFacesItsSideOfTheCube) {
+  BoundingBox box;
+  box.extend(Vec3(-1, -1, -1));
+  box.extend(Vec3(1, 1, 1));
+  for (const Expected& e : kViews) {
+    SCOPED_TRACE(to_string(e.view));
+    const Camera c = frame_view(e.view, box, 1.0);
+    EXPECT_LT(((c.eye - c.target).normalized() - e.from).norm(), 1e-12);
+    // Where the image shows world points: right of the centre along `right`, above along `up`.
+    const Eigen::Matrix4f m = projection_matrix(c, 1.0) * view_matrix(c);
+    auto ndc = [&](const Vec3& p) {
+      const Eigen::Vector4f q = m * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
+      return Eigen::Vector2f(q.x() / q.w(), q.y() / q.w());
+    };
+    EXPECT_GT(ndc(0.5 * e.right).x(), 0.1f);
+    EXPECT_NEAR(ndc(0.5 * e.right).y(), 0.0f, 1e-6f);
+    EXPECT_GT(ndc(0.5 * e.up).y(), 0.1f);
+    EXPECT_NEAR(ndc(0.5 * e.up).x(), 0.0f, 1e-6f);
+    EXPECT_EQ(view_direction(e.view).from, e.from);
+  }
+  // iso: from (1, 1, 1), z up in the image.
+  const ViewDirection iso = view_direction(View::iso);
+  EXPECT_LT((iso.from - Vec3(1, 1, 1).normalized()).norm(), 1e-15);
+  EXPECT_NEAR(iso.up.dot(iso.from), 0.0, 1e-15);
+  EXPECT_GT(iso.up.z(), 0.8);
+}
+
+int run_stitch(const TempFolder& folder, const std::string& args) {
+  const std::string command = "'" + std::string(STITCH_CLI) + "' " + args + " > '" +
+                              folder.file("stdout.txt") + "' 2> '" + folder.file("stderr.txt") +
+                              "'";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The centre of the drawn pixels relative to the image's centre, image y pointing up; in
+/// pixels.
+Eigen::Vector2d drawn_centre(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (pixels == nullptr) return Eigen::Vector2d::Constant(1e9);
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  int count = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const unsigned char* p = pixels + 4 * (static_cast<size_t>(y) * w + x);
+      if (p[0] < 240 || p[1] < 240 || p[2] < 240) {
+        sum += Eigen::Vector2d(x + 0.5 - w / 2.0, h / 2.0 - (y + 0.5));
+        ++count;
+      }
+    }
+  stbi_image_free(pixels);
+  return count > 0 ? Eigen::Vector2d(sum / count) : Eigen::Vector2d::Constant(1e9);
+}
+
+TEST(Views, RenderedCubeWithTowersShowsEachTowerWhereTheViewPutsIt) {
+  // Thin towers on the top (+z, the longest), the right side (+x) and the back (+y): the heavy
+  // cube lies opposite the towers that stick out sideways in the image, so the drawn pixels'
+  // centre tells which way each axis points.
+  TempFolder folder;
+  const std::string cube = folder.file("cube.obj"), towers = folder.file("towers.obj");
+  ASSERT_EQ(run_stitch(folder, "primitive cube -o '" + cube + "'"), 0);
+  ASSERT_EQ(run_stitch(folder, "edit '" + cube +
+                                   "' --op 'extrude-face 2 2 0.4' --op 'extrude-face 4 1.5 0.4' "
+                                   "--op 'extrude-face 5 1.5 0.4' -o '" +
+                                   towers + "'"),
+            0)
+      << read_file(folder.file("stderr.txt"));
+  for (const Expected& e : kViews) {
+    SCOPED_TRACE(to_string(e.view));
+    const std::string png = folder.file(to_string(e.view) + ".png");
+    ASSERT_EQ(run_stitch(folder, "render '" + towers + "' -o '" + png + "' --view " +
+                                     to_string(e.view) + " --draw input --size 160x160"),
+              0)
+        << read_file(folder.file("stderr.txt"));
+    const Eigen::Vector2d c = drawn_centre(png);
+    // The bounding box is centred, and the towers are thin: the cube's pixels lie on the side
+    // the towers do not point to, in each image direction.
+    const Vec3 towers_direction(1, 1, 1);
+    const double right = towers_direction.dot(e.right), up = towers_direction.dot(e.up);
+    EXPECT_GT(-right * c.x(), 3.0) << c.transpose();
+    EXPECT_GT(-up * c.y(), 3.0) << c.transpose();
+  }
+}
+
+}  // namespace
+}  // namespace stitch
