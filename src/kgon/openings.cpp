@@ -126,25 +126,15 @@ constexpr double kNoTwist = 1e-6;
 
 namespace {
 
-/// The face K-gon of a twisted tube: a regular K-gon on the wall opposite the middle of the
-/// bridge's helix, halfway up, in the wall's tangent plane, turned so that the middle of the
-/// first opening's corners faces that opening.
-std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const Tube& tube,
-                                          const TwoOpenings& openings,
-                                          const std::vector<Vec3>& corner_point) {
-  const auto loop = m.face_loop(f);
+/// A regular K-gon over the face's loop in the plane (centre; e1, e2), e1 pointing from the
+/// first opening towards the second, turned so that the middle of the first opening's corners
+/// faces that opening. Size: half the mean distance to the corner points, as section 2 gives a
+/// regular polygon (each Doo-Sabin shrink halves its first harmonic: corner points at 1/2 of the
+/// vertices' radius, K-gon points at 1/4).
+Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings,
+                       const Vec3& centre, const Vec3& normal, const Vec3& e1, const Vec3& e2,
+                       const std::vector<Vec3>& corner_point) {
   const int k = static_cast<int>(loop.size());
-  double radius_sum = 0, height_a = 0, height_b = 0;
-  for (Corner c : loop) radius_sum += tube.radius_of(corner_point[c.idx]);
-  for (Corner c : openings.first) height_a += tube.height_of(corner_point[c.idx]);
-  for (Corner c : openings.second) height_b += tube.height_of(corner_point[c.idx]);
-  height_a /= static_cast<double>(openings.first.size());
-  height_b /= static_cast<double>(openings.second.size());
-  const double angle = tube.twist / 2 + std::numbers::pi;
-  const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius_sum / k);
-  const Vec3 normal = tube.normal(angle);
-  const Vec3 e1 = tube.axis;  // towards the second opening
-  const Vec3 e2 = normal.cross(e1);
   double s = 0, c = 0;
   for (int i = 0; i < k; ++i)
     for (Corner a : openings.first)
@@ -165,6 +155,27 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
     g.points.push_back(centre + radius * (std::cos(t) * e1 + std::sin(t) * e2));
   }
   return g;
+}
+
+/// The face K-gon of a twisted tube: a regular K-gon on the wall opposite the middle of the
+/// bridge's helix, halfway up, in the wall's tangent plane, turned so that the middle of the
+/// first opening's corners faces that opening.
+std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const Tube& tube,
+                                          const TwoOpenings& openings,
+                                          const std::vector<Vec3>& corner_point) {
+  const auto loop = m.face_loop(f);
+  const int k = static_cast<int>(loop.size());
+  double radius_sum = 0, height_a = 0, height_b = 0;
+  for (Corner c : loop) radius_sum += tube.radius_of(corner_point[c.idx]);
+  for (Corner c : openings.first) height_a += tube.height_of(corner_point[c.idx]);
+  for (Corner c : openings.second) height_b += tube.height_of(corner_point[c.idx]);
+  height_a /= static_cast<double>(openings.first.size());
+  height_b /= static_cast<double>(openings.second.size());
+  const double angle = tube.twist / 2 + std::numbers::pi;
+  const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius_sum / k);
+  const Vec3 normal = tube.normal(angle);
+  const Vec3 e1 = tube.axis;  // towards the second opening
+  return regular_tube_kgon(loop, openings, centre, normal, e1, normal.cross(e1), corner_point);
 }
 
 }  // namespace
@@ -275,33 +286,7 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // does at the far point; otherwise the tube is too twisted for this placement.
   if (far_a->tangent.dot(-e2) <= 0) return std::nullopt;
 
-  const auto loop = m.face_loop(f);
-  const int k = static_cast<int>(loop.size());
-  // Turn the polygon so that the middle of the first opening's corners faces that opening.
-  double s = 0, c = 0;
-  for (int i = 0; i < k; ++i)
-    for (Corner a : openings.first)
-      if (loop[i] == a) {
-        s += std::sin(2 * std::numbers::pi * i / k);
-        c += std::cos(2 * std::numbers::pi * i / k);
-      }
-  const double phase = std::numbers::pi - std::atan2(s, c);
-  // Size: half the mean distance to the corner points, as section 2 gives a regular polygon
-  // (each Doo-Sabin shrink halves its first harmonic: corner points at 1/2 of the vertices'
-  // radius, K-gon points at 1/4).
-  double radius = 0;
-  for (Corner cn : loop) radius += (corner_point[cn.idx] - centre).norm();
-  radius *= 0.5 / k;
-
-  Kgon g;
-  g.corners = loop;
-  g.centroid = centre;
-  g.normal = normal;
-  for (int i = 0; i < k; ++i) {
-    const double t = phase + 2 * std::numbers::pi * i / k;
-    g.points.push_back(centre + radius * (std::cos(t) * e1 + std::sin(t) * e2));
-  }
-  return g;
+  return regular_tube_kgon(m.face_loop(f), openings, centre, normal, e1, e2, corner_point);
 }
 
 }  // namespace stitch::detail
