@@ -176,3 +176,29 @@ TEST(CliSmooth, ShowsPercentagesOnATerminalAndNothingElsewhere) {
 
 }  // namespace
 }  // namespace stitch
+
+namespace stitch {
+namespace {
+
+// --check warns about folds and self-intersections of what was written, and stays quiet on a
+// clean surface (issue 13, item 4). The half twist through a cube folds near its bridge
+// (docs/method.md).
+TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
+  testing::TempFolder folder;
+  auto r = testing::stitch_cli(folder, "primitive cube -o cube.obj");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const std::string name : {"straight", "half"}) {
+    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 7@2";
+    r = testing::stitch_cli(folder, "edit cube.obj --op \"" + op + "\" -o " + name + ".obj");
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = testing::stitch_cli(folder, "smooth " + name + ".obj -o s.ply --resolution 16 --check");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("not clean") != std::string::npos, name == "half") << r.err;
+    if (name == "half") {
+      EXPECT_NE(r.err.find("folded"), std::string::npos) << r.err;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace stitch

@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "exact_output.hpp"
 #include "options.hpp"
+#include "stitch/analysis/surface_check.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/adaptive.hpp"
@@ -29,6 +30,7 @@ struct SmoothArgs {
   bool single_precision = false;
   std::string uv;            ///< smooth, linear or none; empty: smooth when the input has UVs
   double max_memory_gb = 0;  ///< 0: the memory the machine has available
+  bool check = false;        ///< check the written surface for folds and self-intersections
   ProgressFlags progress;
   KgonCliOptions kgon;
   ExactOutputOptions exact;
@@ -168,6 +170,17 @@ void run_smooth(const SmoothArgs& a) {
     written = write_smooth_surface(a.out, mesh, surface, a.resolution, file);
   }
   stage.end();
+  if (a.check) {
+    // The same tessellation as written, checked whole (as stitch check-surface would check the
+    // file); a warning, not a failure: the file is what was asked for.
+    stage.begin("checking the surface");
+    const TriangleSoup tris = triangulate(tessellate(mesh, surface, {a.resolution, true, false}));
+    const SurfaceCheckReport r = check_surface(tris);
+    stage.end();
+    if (!r.clean())
+      fmt::print(stderr, "stitch: warning: {}: the surface is not clean at resolution {}:\n{}\n",
+                 a.out, a.resolution, r.describe(tris));
+  }
   fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {}{})\n", a.out,
              written.vertices, written.quads, static_cast<int>(mesh.patch_corners().size()),
              a.method == "cc" ? "sub-patches" : "bicubic patches", a.method, a.resolution,
@@ -209,6 +222,10 @@ void add_smooth_command(CLI::App& app) {
                   "refuse up front a run estimated to need more memory than this many GB "
                   "(default: the memory available)")
       ->check(CLI::Range(0.0, 1e6));
+  cmd->add_flag("--check", args->check,
+                "after writing, check the surface at the written resolution for folded, "
+                "self-intersecting and degenerate triangles (as stitch check-surface does) and "
+                "warn on stderr; the exit status stays 0");
   add_kgon_options(cmd, args->kgon, &args->in);
   add_exact_output_options(cmd, args->exact);
   add_progress_option(cmd, args->progress);
