@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../temp_folder.hpp"
+#include "cli_helpers.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/render/gl_context.hpp"
@@ -23,6 +24,8 @@ namespace {
 
 using stitch::testing::read_file;
 using stitch::testing::TempFolder;
+using test::load_png;
+using test::run_stitch;
 
 const std::string kCubeUv = std::string(STITCH_EXAMPLES_DIR) + "/cube_uv.obj";
 const std::string kCube = std::string(STITCH_EXAMPLES_DIR) + "/cube.obj";
@@ -161,24 +164,6 @@ TEST_F(CheckerTest, TexcoordsMustMatchTheSurfaceAndGoWithIt) {
   // A new surface drops them, and a surface without them is drawn as in shaded.
   renderer_->set_surface(scene_.surface);
   EXPECT_EQ(test::mean_difference(render(ShadingMode::checker), render(ShadingMode::shaded)), 0.0);
-}
-
-int run_stitch(const TempFolder& folder, const std::string& args) {
-  const std::string command = "'" + std::string(STITCH_CLI) + "' " + args + " > '" +
-                              folder.file("stdout.txt") + "' 2> '" + folder.file("stderr.txt") +
-                              "'";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-Image load_png(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (pixels == nullptr) return {};
-  Image im(w, h);
-  im.rgba.assign(pixels, pixels + static_cast<size_t>(w) * h * 4);
-  stbi_image_free(pixels);
-  return im;
 }
 
 TEST(CliChecker, RefusesAMeshWithoutTextureCoordinates) {

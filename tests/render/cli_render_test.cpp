@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../temp_folder.hpp"
+#include "cli_helpers.hpp"
 #include "test_helpers.hpp"
 
 namespace stitch {
@@ -16,29 +17,11 @@ namespace {
 
 using stitch::testing::read_file;
 using stitch::testing::TempFolder;
+using test::load_png;
+using test::run_stitch;
 
 const std::string kCube = std::string(STITCH_EXAMPLES_DIR) + "/cube.obj";
 const std::string kTetrahedron = std::string(STITCH_EXAMPLES_DIR) + "/tetrahedron.obj";
-
-/// Runs `stitch ARGS` (stdout and stderr to files in `folder`) and returns the exit status.
-int run_stitch(const TempFolder& folder, const std::string& args,
-               const std::string& environment = "") {
-  const std::string command = environment + " '" + STITCH_CLI + "' " + args + " > '" +
-                              folder.file("stdout.txt") + "' 2> '" + folder.file("stderr.txt") +
-                              "'";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-Image load_png(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (pixels == nullptr) return {};
-  Image im(w, h);
-  im.rgba.assign(pixels, pixels + static_cast<size_t>(w) * h * 4);
-  stbi_image_free(pixels);
-  return im;
-}
 
 TEST(CliRender, WritesAPngOfTheRequestedSizeAndNothingElse) {
   TempFolder folder;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../temp_folder.hpp"
+#include "cli_helpers.hpp"
 #include "stitch/render/camera.hpp"
 #include "test_helpers.hpp"
 
@@ -16,6 +17,8 @@ namespace {
 
 using stitch::testing::read_file;
 using stitch::testing::TempFolder;
+using test::load_png;
+using test::run_stitch;
 
 struct Expected {
   View view;
@@ -56,14 +59,6 @@ TEST(Views, ZIsUpAndEachViewFacesItsSideOfTheCube) {
   EXPECT_LT((iso.from - Vec3(1, 1, 1).normalized()).norm(), 1e-15);
   EXPECT_NEAR(iso.up.dot(iso.from), 0.0, 1e-15);
   EXPECT_GT(iso.up.z(), 0.8);
-}
-
-int run_stitch(const TempFolder& folder, const std::string& args) {
-  const std::string command = "'" + std::string(STITCH_CLI) + "' " + args + " > '" +
-                              folder.file("stdout.txt") + "' 2> '" + folder.file("stderr.txt") +
-                              "'";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 /// The centre of the drawn pixels relative to the image's centre, image y pointing up; in
