@@ -12,6 +12,7 @@
 #include "../mesh/mesh_writer.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/adaptive.hpp"
+#include "write_stream.hpp"
 
 namespace stitch {
 
@@ -317,22 +318,8 @@ void write_adaptive_mesh(const std::string& path, const AdaptiveMesh& mesh,
   const bool normals = ext == ".obj" || ext == ".ply";
   const MeshStream stream =
       stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.triangles);
-  constexpr std::string_view comment =
-      "stitch surface (bicubic Bezier patches, adaptive tessellation)";
-  const bool binary = ext == ".stl" || (ext == ".ply" && !options.ascii_ply);
-  write_mesh_file(path, binary, [&](std::ostream& out) {
-    if (ext == ".obj")
-      write_obj(out, stream, comment, options.progress);
-    else if (ext == ".ply")
-      write_ply(out, stream,
-                options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian,
-                options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision,
-                comment, options.progress);
-    else if (ext == ".off")
-      write_off(out, stream, comment, options.progress);
-    else
-      write_stl(out, stream, mesh.positions, comment, options.progress);
-  });
+  detail::write_stream(path, stream, mesh.positions, options,
+                       "stitch surface (bicubic Bezier patches, adaptive tessellation)");
 }
 
 }  // namespace stitch

@@ -17,6 +17,7 @@
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "tess/gltf.hpp"
+#include "write_stream.hpp"
 
 namespace stitch {
 
@@ -50,28 +51,6 @@ void check_extension(const std::string& path) {
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
     throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
                                 ext, kSurfaceMeshExtensions));
-}
-
-/// Writes `stream` to `path` in the format its extension names. `positions` are needed for .stl
-/// only.
-void write_stream(const std::string& path, const io_detail::MeshStream& stream,
-                  const std::vector<Vec3>& positions, const SurfaceFileOptions& options) {
-  using namespace io_detail;
-  const std::string ext = file_extension(path);
-  const bool binary = ext == ".stl" || (ext == ".ply" && !options.ascii_ply);
-  write_mesh_file(path, binary, [&](std::ostream& out) {
-    if (ext == ".obj")
-      write_obj(out, stream, kComment, options.progress);
-    else if (ext == ".ply")
-      write_ply(out, stream,
-                options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian,
-                options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision,
-                kComment, options.progress);
-    else if (ext == ".off")
-      write_off(out, stream, kComment, options.progress);
-    else
-      write_stl(out, stream, positions, kComment, options.progress);
-  });
 }
 
 /// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.
@@ -139,6 +118,27 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
 
 }  // namespace
 
+void detail::write_stream(const std::string& path, const io_detail::MeshStream& stream,
+                          const std::vector<Vec3>& positions, const SurfaceFileOptions& options,
+                          std::string_view comment) {
+  using namespace io_detail;
+  const std::string ext = file_extension(path);
+  const bool binary = ext == ".stl" || (ext == ".ply" && !options.ascii_ply);
+  write_mesh_file(path, binary, [&](std::ostream& out) {
+    if (ext == ".obj")
+      write_obj(out, stream, comment, options.progress);
+    else if (ext == ".ply")
+      write_ply(out, stream,
+                options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian,
+                options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision,
+                comment, options.progress);
+    else if (ext == ".off")
+      write_off(out, stream, comment, options.progress);
+    else
+      write_stl(out, stream, positions, comment, options.progress);
+  });
+}
+
 bool surface_file_takes_uvs(const std::string& path) {
   return file_extension(path) == ".obj" || is_gltf(path);
 }
@@ -153,9 +153,9 @@ void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
   check_extension(path);
   check_surface(path, mesh);
   const bool normals = file_extension(path) != ".off" && file_extension(path) != ".stl";
-  write_stream(
+  detail::write_stream(
       path, io_detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
-      mesh.positions, options);
+      mesh.positions, options, kComment);
 }
 
 SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
@@ -260,7 +260,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
                         evaluate(r.begin(), r.end(), positions.data() + r.begin(), normals.data());
                       });
   }
-  write_stream(path, stream, positions, options);
+  detail::write_stream(path, stream, positions, options, kComment);
   return {layout.num_vertices(), layout.num_quads(), stream.num_texcoords};
 }
 
