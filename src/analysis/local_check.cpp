@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "eval/patch_sampler.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
@@ -25,7 +26,7 @@ bool has_patch(const HalfedgeMesh& m, Corner c) {
 }
 
 // Grid indices get 14 bits each in a weld key, element numbers 32.
-constexpr int kMostResolution = (1 << 14) - 1;
+static_assert(limits::max_resolution < (1 << 14));
 
 /// What a grid sample lies on, so that every patch sharing it finds the same key (the rules of
 /// TessellationLayout::vertex, which numbers the welded tessellation the same way).
@@ -86,9 +87,7 @@ std::vector<Corner> patch_neighbourhood(const HalfedgeMesh& m, const std::vector
 LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>& changed,
                                const PatchGridSampler& sample, const LocalCheckOptions& options) {
   const int n = options.resolution;
-  if (n < 1 || n > kMostResolution)
-    throw std::invalid_argument(
-        fmt::format("check_patches: the resolution must be in 1..{}, not {}", kMostResolution, n));
+  limits::check_resolution(n, "check_patches: the resolution");
   std::vector<Corner> focus_corners;
   for (Corner c : changed)
     if (has_patch(m, c)) focus_corners.push_back(c);

@@ -9,14 +9,14 @@ namespace stitch {
 
 namespace td = topology_detail;
 
-ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) {
-  td::check_face(mesh, f, "connect-faces");
-  td::check_face(mesh, g, "connect-faces");
-  if (f == g) throw MeshError(fmt::format("connect-faces: face {} given twice", f.idx + 1));
+Verdict can_connect_faces(const HalfedgeMesh& mesh, Face f, Face g, int twist) {
+  for (Face x : {f, g})
+    if (Verdict v = td::exists(mesh, x, "connect-faces"); !v) return v;
+  if (f == g) return Verdict::refused(fmt::format("connect-faces: face {} given twice", f.idx + 1));
   const std::vector<Halfedge> lf = mesh.face_loop(f), lg = mesh.face_loop(g);
   const int k = static_cast<int>(lf.size());
   if (static_cast<int>(lg.size()) != k)
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "connect-faces: face {} has {} sides but face {} has {}; they must match (subdivide-edge "
         "or insert-edge first)",
         f.idx + 1, k, g.idx + 1, lg.size()));
@@ -26,7 +26,7 @@ ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) 
   auto partner = [&](int i) { return lg[partner_index(i)]; };
   for (int i = 0; i < k; ++i)
     if (mesh.origin(lf[i]) == mesh.origin(partner(i)))
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "connect-faces: corner {} of face {} and corner {} of face {} are both vertex {}; the "
           "edge joining them would be a loop",
           i + 1, f.idx + 1, partner_index(i) + 1, g.idx + 1, mesh.origin(lf[i]).idx + 1));
@@ -42,11 +42,20 @@ ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) 
     for (Edge y : td::edges_between(mesh, u, v))
       if (stays_boundary(HalfedgeMesh::halfedge(y, 0)) ||
           stays_boundary(HalfedgeMesh::halfedge(y, 1)))
-        throw MeshError(fmt::format(
+        return Verdict::refused(fmt::format(
             "connect-faces: vertices {} and {} are joined by boundary edge {}; a tube edge beside "
             "it would not read back ({})",
             u.idx + 1, v.idx + 1, y.idx + 1, td::kBesideBoundary));
   }
+  return {};
+}
+
+ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist) {
+  can_connect_faces(mesh, f, g, twist).throw_if_refused();
+  const std::vector<Halfedge> lf = mesh.face_loop(f), lg = mesh.face_loop(g);
+  const int k = static_cast<int>(lf.size());
+  const int turn = (twist % k + k) % k;
+  auto partner = [&](int i) { return lg[(turn - i + k) % k]; };
 
   ConnectFacesResult result;
   result.degree = k;

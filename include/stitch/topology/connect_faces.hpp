@@ -2,6 +2,7 @@
 #pragma once
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -24,5 +25,7 @@ struct ConnectFacesResult {
 /// their sharpness. Refused too when a tube edge would join the ends of an edge that stays on
 /// the boundary (a file could not tell the two apart).
 ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, int twist = 0);
+/// Whether connect_faces(mesh, f, g, twist) applies, without changing anything.
+Verdict can_connect_faces(const HalfedgeMesh& mesh, Face f, Face g, int twist = 0);
 
 }  // namespace stitch

@@ -105,7 +105,7 @@ struct ScriptResult {
   std::string message;  ///< what happened, for the status bar / log
 };
 
-/// Runs one line. Throws MeshError (or std::invalid_argument) saying what is wrong; the session
+/// Runs one line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the session
 /// is unchanged by a refused line.
 ScriptResult run_script_line(Session& session, std::string_view line, const ScriptHooks& hooks);
 
