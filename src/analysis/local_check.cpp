@@ -155,7 +155,7 @@ std::vector<Corner> patches_touched(const HalfedgeMesh& m, const std::vector<Ver
                                     const std::vector<Face>& faces) {
   // Faces whose loops or corner positions changed: their K-gons and the K-gons of their
   // vertices, edges and the faces across (which read their normals) may change, and with them
-  // every net that reads one of those (the rule of the modeler's LiveSurface::update).
+  // every net that reads one of those (kgons_reading and nets_reading).
   std::vector<Face> moved;
   for (Edge e : edges) {
     if (e.idx >= m.edge_capacity() || m.is_deleted(e)) continue;
@@ -167,34 +167,7 @@ std::vector<Corner> patches_touched(const HalfedgeMesh& m, const std::vector<Ver
   }
   for (Face f : faces)
     if (f.idx < m.face_capacity() && !m.is_deleted(f)) moved.push_back(f);
-  sort_unique(moved);
-  std::vector<Face> kgon_faces = moved;
-  std::vector<Vertex> kgon_vertices;
-  std::vector<Edge> kgon_edges;
-  for (Face f : moved)
-    for (Halfedge h : m.face_loop(f)) {
-      kgon_vertices.push_back(m.origin(h));
-      kgon_edges.push_back(HalfedgeMesh::edge(h));
-      kgon_faces.push_back(m.face(HalfedgeMesh::twin(h)));
-    }
-  sort_unique(kgon_faces);
-  sort_unique(kgon_vertices);
-  sort_unique(kgon_edges);
-  // A net reads the K-gons of its face, its vertex, its edge and its previous edge.
-  std::vector<Corner> out;
-  for (Face f : kgon_faces)
-    for (Halfedge h : m.face_loop(f)) out.push_back(h);
-  for (Vertex v : kgon_vertices)
-    for (Halfedge h : m.vertex_fan(v)) out.push_back(h);
-  for (Edge e : kgon_edges)
-    for (int s = 0; s < 2; ++s) {
-      const Halfedge h = HalfedgeMesh::halfedge(e, s);
-      out.push_back(h);
-      out.push_back(m.next(h));
-    }
-  std::erase_if(out, [&](Corner c) { return m.is_hole(c); });
-  sort_unique(out);
-  return out;
+  return nets_reading(m, kgons_reading(m, std::move(moved)));
 }
 
 std::vector<std::string> corner_names(const HalfedgeMesh& m, const std::vector<Corner>& corners,
