@@ -182,7 +182,8 @@ void add_edit_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "edit",
       "apply topology operations (insert-edge V@F V@F, delete-edge V W[@F], subdivide-edge V W, "
-      "collapse-edge V W, extrude-face F DIST [SCALE], connect-faces F G [TWIST], delete-face F, "
+      "collapse-edge V W, extrude-face F DIST [SCALE], connect-faces F G [TWIST|auto] [SEGMENTS "
+      "[WAIST]], delete-face F, "
       "open-face F, fill-hole F, crease V W SHARPNESS, corner V SHARPNESS, doo-sabin, "
       "vertex-insertion, catmull-clark, dual); vertices and faces are numbered from 1 "
       "in file order; see docs/editing.md");

@@ -168,13 +168,25 @@ OperationReport run(HalfedgeMesh& mesh, const std::vector<std::string_view>& w, 
                               f.idx + 1, r.first_vertex + 1, r.first_vertex + r.degree,
                               r.first_face + 1, r.first_face + r.degree);
   } else if (op == "connect-faces") {
-    expect_args(w, 2, 3, "two faces and an optional twist: connect-faces F G [TWIST]");
+    expect_args(w, 2, 5,
+                "two faces, an optional twist (a number or auto), segments and waist: "
+                "connect-faces F G [TWIST|auto] [SEGMENTS [WAIST]]");
     const Face f = face_arg(mesh, w[1]), g = face_arg(mesh, w[2]);
-    const int twist = w.size() > 3 ? parse_int(w[3], "twist") : 0;
-    const ConnectFacesResult r = connect_faces(mesh, f, g, twist);
-    report.what =
-        fmt::format("faces {} and {} joined by a tube of {} quads, new edges {}-{}", f.idx + 1,
-                    g.idx + 1, r.degree, r.first_edge + 1, r.first_edge + r.degree);
+    HandleOptions handle;
+    if (w.size() > 3 && w[3] != "auto") handle.twist = parse_int(w[3], "twist");
+    if (w.size() > 4) {
+      handle.segments = parse_number(w[4], "segments");
+      if (handle.segments > limits::max_handle_segments)
+        throw MeshError(fmt::format("connect-faces: at most {} segments, got {}",
+                                    limits::max_handle_segments, handle.segments));
+    }
+    if (w.size() > 5) handle.waist = parse_double(w[5], "waist");
+    const ConnectFacesResult r = connect_faces(mesh, f, g, handle);
+    report.what = fmt::format(
+        "faces {} and {} joined by a tube of {} quads{} (twist {}), new edges {}-{}", f.idx + 1,
+        g.idx + 1, r.degree * handle.segments,
+        handle.segments > 1 ? fmt::format(" in {} rings", handle.segments) : std::string(), r.twist,
+        r.first_edge + 1, r.first_edge + r.degree);
   } else if (op == "delete-face") {
     expect_args(w, 1, 1, "a face: delete-face F");
     const Face f = face_arg(mesh, w[1]);
@@ -375,7 +387,7 @@ std::vector<std::string> operation_synopsis() {
           "subdivide-edge V W[@F]",
           "collapse-edge V W[@F]",
           "extrude-face F DIST [SCALE]",
-          "connect-faces F G [TWIST]",
+          "connect-faces F G [TWIST|auto] [SEGMENTS [WAIST]]",
           "delete-face F",
           "open-face F",
           "fill-hole F",
