@@ -214,13 +214,11 @@ ConnectFacesResult connect_faces(HalfedgeMesh& mesh, Face f, Face g, const Handl
 
   const std::vector<Halfedge> lf = mesh.face_loop(f), lg = mesh.face_loop(g);
   refuse_loops(mesh, f, g, lf, lg, turn);
-  for (int i = 0; i < k; ++i)
-    for (int j = i + 1; j < k; ++j)
-      if (mesh.origin(lf[i]) == mesh.origin(lf[j]))
-        throw MeshError(fmt::format(
-            "connect-faces: face {} visits vertex {} twice; a handle with segments starts from "
-            "one new vertex per corner",
-            f.idx + 1, mesh.origin(lf[i]).idx + 1));
+  if (const Vertex twice = td::vertex_visited_twice(mesh, f); twice.valid())
+    throw MeshError(
+        fmt::format("connect-faces: face {} visits vertex {} twice; a handle with segments starts "
+                    "from one new vertex per corner",
+                    f.idx + 1, twice.idx + 1));
   // Everything that can be refused is checked before the first change.
   const std::vector<std::vector<Vec3>> rings = handle_rings(mesh, f, g, turn, options);
   for (const std::vector<Vec3>& ring : rings) {
