@@ -118,8 +118,13 @@ Operation random_typed_operation(const HalfedgeMesh& m, std::mt19937& rng) {
     }
     case 6:
       return ops::ExtrudeFace{pick_face(), 0.25, rng() % 2 ? 1.0 : 0.5};
-    case 7:
-      return ops::ConnectFaces{pick_face(), pick_face(), static_cast<int>(rng() % 5) - 2};
+    case 7: {
+      HandleOptions handle;
+      if (rng() % 4) handle.twist = static_cast<int>(rng() % 5) - 2;  // else the least twist
+      if (rng() % 3 == 0) handle.segments = 2 + static_cast<int>(rng() % 2);
+      if (rng() % 4 == 0) handle.waist = 0.75;
+      return ops::ConnectFaces{pick_face(), pick_face(), handle};
+    }
     case 8:
       return ops::DeleteFace{pick_face()};
     case 9:

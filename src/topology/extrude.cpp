@@ -32,13 +32,11 @@ Verdict can_extrude_face(const HalfedgeMesh& mesh, Face f, double distance, doub
   const int k = static_cast<int>(loop.size());
   // Every corner gets its own new vertex, so a loop that visits a vertex twice would put two
   // new vertices at the same point: a degenerate surface.
-  for (int i = 0; i < k; ++i)
-    for (int j = i + 1; j < k; ++j)
-      if (mesh.origin(loop[i]) == mesh.origin(loop[j]))
-        return Verdict::refused(fmt::format(
-            "extrude-face: face {} visits vertex {} twice (its loop touches itself); its "
-            "extruded top would have two vertices at the same point",
-            f.idx + 1, mesh.origin(loop[i]).idx + 1));
+  if (const Vertex twice = td::vertex_visited_twice(mesh, f); twice.valid())
+    return Verdict::refused(fmt::format(
+        "extrude-face: face {} visits vertex {} twice (its loop touches itself); its extruded "
+        "top would have two vertices at the same point",
+        f.idx + 1, twice.idx + 1));
   // Checked before the mesh changes, so a refused extrusion leaves it as it was.
   const Vec3 centre = td::face_centroid(mesh, f);
   for (int i = 0; i < k; ++i) {

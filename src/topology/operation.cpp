@@ -136,8 +136,9 @@ constexpr std::array<OperationInfo, 15> kTable{{
      "merge W into V at the edge's midpoint", false},
     {"extrude-face", "extrude-face F DIST [SCALE]", "a face, a distance and an optional scale",
      "move a face out along its normal, with a quad on every side", false},
-    {"connect-faces", "connect-faces F G [TWIST]", "two faces and an optional twist",
-     "join two faces by a tube of quads", false},
+    {"connect-faces", "connect-faces F G [TWIST|auto] [SEGMENTS [WAIST]]",
+     "two faces, an optional twist (a number or auto), segments and waist",
+     "join two faces by a tube of quads (a handle)", false},
     {"delete-face", "delete-face F", "a face", "merge a face into the faces around it", false},
     {"open-face", "open-face F", "a face", "make a face a hole (a boundary of the surface)", false},
     {"fill-hole", "fill-hole F", "a hole face", "make a hole a face again", false},
@@ -179,10 +180,19 @@ Operation parse_words(const HalfedgeMesh& mesh, const std::vector<std::string_vi
       expect_args(w, 2, 3, *info);
       return ops::ExtrudeFace{face_arg(mesh, w[1]), parse_double(w[2], "distance"),
                               w.size() > 3 ? parse_double(w[3], "scale") : 1.0};
-    case 5:
-      expect_args(w, 2, 3, *info);
-      return ops::ConnectFaces{face_arg(mesh, w[1]), face_arg(mesh, w[2]),
-                               w.size() > 3 ? parse_int(w[3], "twist") : 0};
+    case 5: {
+      expect_args(w, 2, 5, *info);
+      ops::ConnectFaces op{face_arg(mesh, w[1]), face_arg(mesh, w[2]), {}};
+      if (w.size() > 3 && w[3] != "auto") op.handle.twist = parse_int(w[3], "twist");
+      if (w.size() > 4) {
+        op.handle.segments = parse_number(w[4], "segments");
+        if (op.handle.segments > limits::max_handle_segments)
+          throw UsageError(fmt::format("at most {} segments, got {}", limits::max_handle_segments,
+                                       op.handle.segments));
+      }
+      if (w.size() > 5) op.handle.waist = parse_double(w[5], "waist");
+      return op;
+    }
     case 6:
       expect_args(w, 1, 1, *info);
       return ops::DeleteFace{face_arg(mesh, w[1])};
@@ -250,10 +260,13 @@ std::string carry_out(HalfedgeMesh& mesh, const Operation& operation) {
                              number(op.face), r.first_vertex + 1, r.first_vertex + r.degree,
                              r.first_face + 1, r.first_face + r.degree);
         } else if constexpr (std::is_same_v<T, ops::ConnectFaces>) {
-          const ConnectFacesResult r = connect_faces(mesh, op.f, op.g, op.twist);
-          return fmt::format("faces {} and {} joined by a tube of {} quads, new edges {}-{}",
-                             number(op.f), number(op.g), r.degree, r.first_edge + 1,
-                             r.first_edge + r.degree);
+          const ConnectFacesResult r = connect_faces(mesh, op.f, op.g, op.handle);
+          const int segments = op.handle.segments;
+          return fmt::format(
+              "faces {} and {} joined by a tube of {} quads{} (twist {}), new edges {}-{}",
+              number(op.f), number(op.g), r.degree * segments,
+              segments > 1 ? fmt::format(" in {} rings", segments) : std::string(), r.twist,
+              r.first_edge + 1, r.first_edge + r.degree);
         } else if constexpr (std::is_same_v<T, ops::DeleteFace>) {
           const TopologyStats before = topology_stats(mesh);
           delete_face(mesh, op.face);
@@ -395,7 +408,13 @@ std::string format_operation(const HalfedgeMesh& mesh, const Operation& operatio
         } else if constexpr (std::is_same_v<T, ops::ExtrudeFace>) {
           return fmt::format(" {} {} {}", number(op.face), op.distance, op.scale);
         } else if constexpr (std::is_same_v<T, ops::ConnectFaces>) {
-          return fmt::format(" {} {} {}", number(op.f), number(op.g), op.twist);
+          const HandleOptions& h = op.handle;
+          std::string text = fmt::format(" {} {} {}", number(op.f), number(op.g),
+                                         h.twist ? std::to_string(*h.twist) : "auto");
+          const bool waist = h.waist != HandleOptions{}.waist;
+          if (waist || h.segments != 1) text += fmt::format(" {}", h.segments);
+          if (waist) text += fmt::format(" {}", h.waist);
+          return text;
         } else if constexpr (std::is_same_v<T, ops::DeleteFace> ||
                              std::is_same_v<T, ops::OpenFace> || std::is_same_v<T, ops::FillHole>) {
           return fmt::format(" {}", number(op.face));
@@ -426,7 +445,7 @@ Verdict can_apply(const HalfedgeMesh& mesh, const Operation& operation) {
         } else if constexpr (std::is_same_v<T, ops::ExtrudeFace>) {
           return can_extrude_face(mesh, op.face, op.distance, op.scale);
         } else if constexpr (std::is_same_v<T, ops::ConnectFaces>) {
-          return can_connect_faces(mesh, op.f, op.g, op.twist);
+          return can_connect_faces(mesh, op.f, op.g, op.handle);
         } else if constexpr (std::is_same_v<T, ops::DeleteFace>) {
           return can_delete_face(mesh, op.face);
         } else if constexpr (std::is_same_v<T, ops::OpenFace>) {

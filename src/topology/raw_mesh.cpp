@@ -35,6 +35,14 @@ HalfedgeMesh compacted(const HalfedgeMesh& mesh) {
   return copy;
 }
 
+Vertex vertex_visited_twice(const HalfedgeMesh& mesh, Face f) {
+  const std::vector<Halfedge> loop = mesh.face_loop(f);
+  for (size_t i = 0; i < loop.size(); ++i)
+    for (size_t j = i + 1; j < loop.size(); ++j)
+      if (mesh.origin(loop[i]) == mesh.origin(loop[j])) return mesh.origin(loop[i]);
+  return Vertex();
+}
+
 Vec3 face_centroid(const HalfedgeMesh& mesh, Face f) {
   Vec3 sum = Vec3::Zero();
   int n = 0;

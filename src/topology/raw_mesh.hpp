@@ -29,6 +29,9 @@ HalfedgeMesh compacted(const HalfedgeMesh& mesh);
 /// Mean of the corner positions of the face.
 Vec3 face_centroid(const HalfedgeMesh& mesh, Face f);
 
+/// The first vertex a face's loop visits twice (a loop that touches itself), or an invalid one.
+Vertex vertex_visited_twice(const HalfedgeMesh& mesh, Face f);
+
 /// The live edges joining a and b.
 std::vector<Edge> edges_between(const HalfedgeMesh& mesh, Vertex a, Vertex b);
 

@@ -32,6 +32,9 @@ inline constexpr double min_kgon_scale = 1e-6;
 inline constexpr double max_kgon_scale = 1e6;
 inline constexpr double max_rotation_deg = 3600;
 
+/// Most segments of a handle made by connect-faces (each adds a ring of vertices and quads).
+inline constexpr int max_handle_segments = 1000;
+
 /// Characters of an offending token quoted in an error message; longer tokens are cut.
 inline constexpr size_t max_quoted = 60;
 

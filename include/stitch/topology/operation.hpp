@@ -13,6 +13,7 @@
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/topology/connect_faces.hpp"
 #include "stitch/topology/remesh.hpp"
 #include "stitch/topology/verdict.hpp"
 
@@ -67,7 +68,7 @@ struct ExtrudeFace {
 };
 struct ConnectFaces {
   Face f, g;
-  int twist = 0;
+  HandleOptions handle;  ///< twist (none: the least), segments, waist
   bool operator==(const ConnectFaces&) const = default;
 };
 struct DeleteFace {
