@@ -227,11 +227,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   stream.faces = [&](std::int64_t begin, std::int64_t end, io_detail::FaceBlock& block) {
     block.sizes.assign(static_cast<size_t>(end - begin), 4);
     block.indices.resize(4 * block.sizes.size());
-    for (std::int64_t q = begin; q < end; ++q) {
-      const auto quad = layout.quad(q);
-      for (int k = 0; k < 4; ++k)
-        block.indices[4 * static_cast<size_t>(q - begin) + k] = static_cast<int>(quad[k]);
-    }
+    layout.quads(begin, end, block.indices.data());
     if (!texcoords) return;
     block.texcoords.resize(block.indices.size());
     const std::int64_t cells = static_cast<std::int64_t>(n) * n;
