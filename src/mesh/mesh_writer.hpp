@@ -84,33 +84,20 @@ class OutputBuffer {
   [[nodiscard]] size_t size() const { return size_; }
   void clear() { size_ = 0; }
   void reserve(size_t capacity);
-  /// Makes room for n more bytes and returns where they go.
-  char* extend(size_t n) {
-    if (size_ + n > capacity_) reserve(std::max(2 * capacity_, size_ + n));
-    char* at = data_.get() + size_;
-    size_ += n;
-    return at;
-  }
   /// Room for at most n more bytes, written from the pointer returned and ended by commit():
   /// numbers go straight into the buffer, with no size check each.
   char* claim(size_t n) {
     if (size_ + n > capacity_) reserve(std::max(2 * capacity_, size_ + n));
     return data_.get() + size_;
   }
+  /// Makes room for exactly n more bytes and returns where they go.
+  char* extend(size_t n) {
+    char* at = claim(n);
+    size_ += n;
+    return at;
+  }
   /// Ends what was written since claim() at `end`.
   void commit(const char* end) { size_ = static_cast<size_t>(end - data_.get()); }
-  void append(const char* first, const char* last) {
-    std::memcpy(extend(static_cast<size_t>(last - first)), first,
-                static_cast<size_t>(last - first));
-  }
-  OutputBuffer& operator+=(char c) {
-    *extend(1) = c;
-    return *this;
-  }
-  OutputBuffer& operator+=(std::string_view text) {
-    append(text.data(), text.data() + text.size());
-    return *this;
-  }
 
  private:
   std::unique_ptr<char[]> data_;
