@@ -1,10 +1,12 @@
 // Writing the smooth surface: the streamed writer gives the same bytes as tessellating first, the
 // bytes do not depend on the number of threads, and every format reads back.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <string>
 
@@ -197,6 +199,32 @@ TEST(SmoothSurfaceFile, WriteErrorsNameTheFileAndLeaveNothing) {
   const std::string bad = folder.file("surface.dae");
   const std::string unknown = test::error_of([&] { write_smooth_surface(bad, mesh, surface, 8); });
   EXPECT_NE(unknown.find(kSurfaceMeshExtensions), std::string::npos) << unknown;
+  EXPECT_TRUE(std::filesystem::is_empty(folder.path()));
+}
+
+TEST(SmoothSurfaceFile, AFileThatCannotGrowIsAClearErrorAndLeavesNothing) {
+  // A file size limit (RLIMIT_FSIZE, with SIGXFSZ ignored so that write() fails with EFBIG)
+  // stops the writers mid-file as a full disk would, in an ordinary folder.
+  const HalfedgeMesh mesh = make_cube();
+  const Surface surface(mesh, Method::mdc);
+  TempFolder folder;
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto saved_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limit = saved;
+  limit.rlim_cur = 64 * 1024;  // the files below are 0.5 to 3 MB
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+  std::vector<std::string> messages;
+  for (const char* ext : {".ply", ".obj", ".stl", ".off"}) {
+    const std::string path = folder.file(std::string("surface") + ext);
+    messages.push_back(test::error_of([&] { write_smooth_surface(path, mesh, surface, 32); }));
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, saved_handler);
+  for (const std::string& message : messages) {
+    EXPECT_NE(message.find(folder.file("surface")), std::string::npos) << message;
+    EXPECT_NE(message.find("write error: File too large"), std::string::npos) << message;
+  }
   EXPECT_TRUE(std::filesystem::is_empty(folder.path()));
 }
 

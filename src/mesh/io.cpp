@@ -115,7 +115,7 @@ constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
 /// line per element so a diff shows which changed); the OBJ reader reads them back.
-void write_obj_tags(std::ostream& out, const PolygonSoup& soup) {
+void write_obj_tags(io_detail::OutputFile& out, const PolygonSoup& soup) {
   for (const SoupCrease& c : soup.creases)
     out << fmt::format("t crease 2/1/0 {} {} {}\n", c.a, c.b, c.sharpness);
   for (const SoupCorner& c : soup.corners)
@@ -241,19 +241,19 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
   // Only OBJ has a place for the crease and corner tags (OpenSubdiv's `t` lines); the other
   // formats have no standard one, so they are written without them (docs/formats.md).
   if (ext == ".obj")
-    write_mesh_file(path, false, [&](std::ostream& out) {
+    write_mesh_file(path, [&](OutputFile& out) {
       write_obj(out, stream, kComment);
       write_obj_tags(out, soup);
     });
   else if (ext == ".off")
-    write_mesh_file(path, false, [&](std::ostream& out) { write_off(out, stream, kComment); });
+    write_mesh_file(path, [&](OutputFile& out) { write_off(out, stream, kComment); });
   else if (ext == ".ply")  // ASCII: edited meshes are small, and people read them
-    write_mesh_file(path, false, [&](std::ostream& out) {
+    write_mesh_file(path, [&](OutputFile& out) {
       write_ply(out, stream, PlyEncoding::ascii, PlyPrecision::double_precision, kComment);
     });
   else if (ext == ".stl")
-    write_mesh_file(path, true,
-                    [&](std::ostream& out) { write_stl(out, stream, soup.positions, kComment); });
+    write_mesh_file(path,
+                    [&](OutputFile& out) { write_stl(out, stream, soup.positions, kComment); });
   else
     throw OutputError(fmt::format(
         "cannot write {}: unknown extension '{}' (supported: .obj, .off, .ply, .stl)", path, ext));

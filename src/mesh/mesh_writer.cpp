@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <tbb/concurrent_queue.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <limits>
 
+#include "number_text.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
 
@@ -24,34 +26,37 @@ namespace {
 constexpr std::int64_t kVerticesPerBlock = 16384;
 constexpr std::int64_t kFacesPerBlock = 32768;
 
-void put(OutputBuffer& s, double x) {
-  std::array<char, 32> digits;
-  const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), x);
-  s.append(digits.data(), result.ptr);
+/// Bytes of one text line of `count` numbers after a prefix of at most `prefix` bytes.
+constexpr size_t line_room(size_t prefix, size_t count) {
+  return prefix + count * (kMaxDoubleChars + 1) + 1;
 }
 
-void put(OutputBuffer& s, std::int64_t x) {
-  std::array<char, 24> digits;
-  const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), x);
-  s.append(digits.data(), result.ptr);
+/// Writes `text` at `at`; returns the end.
+char* put(char* at, std::string_view text) {
+  std::memcpy(at, text.data(), text.size());
+  return at + text.size();
 }
 
-void put(OutputBuffer& s, float x) {
-  std::array<char, 24> digits;
-  const auto result = std::to_chars(digits.data(), digits.data() + digits.size(), x);
-  s.append(digits.data(), result.ptr);
+/// The shortest text of x that reads back as x (a float's when `single`: rounded to the nearest
+/// float, std::to_chars's text).
+char* put(char* at, double x, bool single) {
+  if (single) return std::to_chars(at, at + kMaxDoubleChars, static_cast<float>(x)).ptr;
+  return write_shortest(at, x);
 }
 
-/// `prefix` and the three coordinates, as floats when `single` (rounded to the nearest float).
-void put_xyz(OutputBuffer& s, const char* prefix, const Vec3& p, bool single = false) {
-  s += std::string_view(prefix);
-  for (int k = 0; k < 3; ++k) {
-    if (k > 0) s += ' ';
-    if (single)
-      put(s, static_cast<float>(p[k]));
-    else
-      put(s, p[k]);
-  }
+/// `prefix` and the three coordinates, space-separated.
+char* put_xyz(char* at, std::string_view prefix, const Vec3& p, bool single = false) {
+  at = put(at, prefix);
+  at = put(at, p.x(), single);
+  *at++ = ' ';
+  at = put(at, p.y(), single);
+  *at++ = ' ';
+  return put(at, p.z(), single);
+}
+
+/// A 0-based index as `base`-based text.
+char* put_index(char* at, int index, int base) {
+  return write_decimal(at, static_cast<std::uint64_t>(std::int64_t{index} + base));
 }
 
 /// Where the writing stands, for the progress callback: items (vertices, then faces) written.
@@ -76,26 +81,29 @@ using FaceFormat = std::function<void(const FaceBlock&, OutputBuffer&)>;
 
 /// Blocks of `count` records, filled by fill(begin, end, block) and formatted by `format`.
 template <class Block>
-void write_records(std::ostream& out, std::int64_t count, std::int64_t per_block,
+void write_records(OutputFile& out, std::int64_t count, std::int64_t per_block,
                    const std::function<void(std::int64_t, std::int64_t, Block&)>& fill,
                    const std::function<void(const Block&, OutputBuffer&)>& format,
                    Progress& progress) {
+  // One block per thread, refilled: allocating (and page-faulting) a few hundred kilobytes per
+  // block cost more than filling them.
+  tbb::enumerable_thread_specific<Block> blocks;
   write_blocks(
       out, count, per_block,
       [&](std::int64_t begin, std::int64_t end, OutputBuffer& text) {
-        Block block;
+        Block& block = blocks.local();
         fill(begin, end, block);
         format(block, text);
       },
       std::ref(progress));
 }
 
-void write_vertices(std::ostream& out, const MeshStream& mesh, const VertexFormat& format,
+void write_vertices(OutputFile& out, const MeshStream& mesh, const VertexFormat& format,
                     Progress& progress) {
   write_records(out, mesh.num_vertices, kVerticesPerBlock, mesh.vertices, format, progress);
 }
 
-void write_faces(std::ostream& out, const MeshStream& mesh, const FaceFormat& format,
+void write_faces(OutputFile& out, const MeshStream& mesh, const FaceFormat& format,
                  Progress& progress) {
   write_records(out, mesh.num_faces, kFacesPerBlock, mesh.faces, format, progress);
 }
@@ -114,50 +122,60 @@ void for_each_face(const FaceBlock& block, Visit&& visit) {
 /// from text_faces so that files without them take no branch per corner.
 FaceFormat obj_textured_faces(bool normals) {
   return [=](const FaceBlock& block, OutputBuffer& text) {
-    text.reserve(block.indices.size() * 24 + block.sizes.size() * 4);
+    char* at = text.claim(block.indices.size() * (3 * (kMaxDecimalChars + 1) + 1) +
+                          block.sizes.size() * 3);
     const int* uv = block.texcoords.data();
     for_each_face(block, [&](int size, const int* loop) {
-      text += 'f';
+      *at++ = 'f';
       for (int k = 0; k < size; ++k) {
-        text += ' ';
-        const std::int64_t index = std::int64_t{loop[k]} + 1;
-        put(text, index);
-        text += '/';
-        put(text, std::int64_t{*uv++} + 1);
+        *at++ = ' ';
+        char* const index = at;
+        at = put_index(at, loop[k], 1);
+        const size_t length = static_cast<size_t>(at - index);
+        *at++ = '/';
+        at = put_index(at, *uv++, 1);
         if (normals) {
-          text += '/';
-          put(text, index);
+          *at++ = '/';
+          std::memmove(at, index, length);  // the same number again
+          at += length;
         }
       }
-      text += '\n';
+      *at++ = '\n';
     });
+    text.commit(at);
   };
 }
 
-/// Faces as text lines `prefix[count] i0 i1 ...` with indices shifted by `base` (1 for OBJ).
-FaceFormat text_faces(const char* prefix, bool with_count, int base, bool obj_normals) {
+/// Faces as text lines `prefix[count] i0 i1 ...` with indices shifted by `base` (1 for OBJ),
+/// each index twice (`a//a`) with OBJ normals.
+FaceFormat text_faces(std::string_view prefix, bool with_count, int base, bool obj_normals) {
   return [=](const FaceBlock& block, OutputBuffer& text) {
-    text.reserve(block.indices.size() * 10 + block.sizes.size() * 4);
+    char* at = text.claim(block.indices.size() * (2 * kMaxDecimalChars + 3) +
+                          block.sizes.size() * (prefix.size() + kMaxDecimalChars + 1));
     for_each_face(block, [&](int size, const int* loop) {
-      text += std::string_view(prefix);
-      if (with_count) put(text, std::int64_t{size});
+      at = put(at, prefix);
+      if (with_count) at = write_decimal(at, static_cast<std::uint64_t>(size));
       for (int k = 0; k < size; ++k) {
-        text += ' ';
-        const std::int64_t index = std::int64_t{loop[k]} + base;
-        put(text, index);
+        *at++ = ' ';
+        char* const index = at;
+        at = put_index(at, loop[k], base);
         if (obj_normals) {
-          text += std::string_view("//");
-          put(text, index);
+          const size_t length = static_cast<size_t>(at - index);
+          *at++ = '/';
+          *at++ = '/';
+          std::memmove(at, index, length);  // the same number again, not formatted twice
+          at += length;
         }
       }
-      text += '\n';
+      *at++ = '\n';
     });
+    text.commit(at);
   };
 }
 
 }  // namespace
 
-void write_blocks(std::ostream& out, std::int64_t count, std::int64_t block,
+void write_blocks(OutputFile& out, std::int64_t count, std::int64_t block,
                   const std::function<void(std::int64_t, std::int64_t, OutputBuffer&)>& format,
                   const std::function<void(std::int64_t)>& written) {
   struct Chunk {
@@ -188,9 +206,8 @@ void write_blocks(std::ostream& out, std::int64_t count, std::int64_t block,
                                            return chunk;
                                          }) &
           tbb::make_filter<Chunk, void>(tbb::filter_mode::serial_in_order, [&](const Chunk& chunk) {
-            out.write(chunk.text->data(), static_cast<std::streamsize>(chunk.text->size()));
-            // Stop at once: the rest would be computed for nothing (e.g. on a full disk).
-            if (!out) throw MeshError("write error (disk full?)");
+            // Throws at once (e.g. on a full disk): the rest would be computed for nothing.
+            out.write(chunk.text->data(), chunk.text->size());
             chunk.text->clear();
             free.push(chunk.text);
             if (written) written(chunk.end - chunk.begin);
@@ -206,23 +223,24 @@ void OutputBuffer::reserve(size_t capacity) {
   capacity_ = capacity;
 }
 
-void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+void write_obj(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& report) {
   Progress progress(report, mesh.num_vertices + mesh.num_texcoords + mesh.num_faces);
   out << "# " << comment << '\n';
   write_vertices(
       out, mesh,
       [&](const VertexBlock& block, OutputBuffer& text) {
-        text.reserve(block.positions.size() * (mesh.has_normals ? 150 : 75));
+        char* at = text.claim((block.positions.size() + block.normals.size()) * line_room(3, 3));
         for (const Vec3& p : block.positions) {
-          put_xyz(text, "v ", p);
-          text += '\n';
+          at = put_xyz(at, "v ", p);
+          *at++ = '\n';
         }
         // OBJ numbers `vn` lines separately from `v` lines, so they may follow block by block.
         for (const Vec3& n : block.normals) {
-          put_xyz(text, "vn ", n);
-          text += '\n';
+          at = put_xyz(at, "vn ", n);
+          *at++ = '\n';
         }
+        text.commit(at);
       },
       progress);
   if (mesh.num_texcoords == 0) {
@@ -232,37 +250,39 @@ void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comme
   write_records<std::vector<Eigen::Vector2d>>(
       out, mesh.num_texcoords, kVerticesPerBlock, mesh.texcoords,
       [](const std::vector<Eigen::Vector2d>& block, OutputBuffer& text) {
-        text.reserve(block.size() * 52);
+        char* at = text.claim(block.size() * line_room(3, 2));
         for (const Eigen::Vector2d& t : block) {
-          text += std::string_view("vt ");
-          put(text, t.x());
-          text += ' ';
-          put(text, t.y());
-          text += '\n';
+          at = put(at, "vt ");
+          at = put(at, t.x(), false);
+          *at++ = ' ';
+          at = put(at, t.y(), false);
+          *at++ = '\n';
         }
+        text.commit(at);
       },
       progress);
   write_faces(out, mesh, obj_textured_faces(mesh.has_normals), progress);
 }
 
-void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+void write_off(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& report) {
   Progress progress(report, mesh.num_vertices + mesh.num_faces);
   out << "OFF\n# " << comment << '\n' << mesh.num_vertices << ' ' << mesh.num_faces << " 0\n";
   write_vertices(
       out, mesh,
       [](const VertexBlock& block, OutputBuffer& text) {
-        text.reserve(block.positions.size() * 75);
+        char* at = text.claim(block.positions.size() * line_room(0, 3));
         for (const Vec3& p : block.positions) {
-          put_xyz(text, "", p);
-          text += '\n';
+          at = put_xyz(at, "", p);
+          *at++ = '\n';
         }
+        text.commit(at);
       },
       progress);
   write_faces(out, mesh, text_faces("", true, 0, false), progress);
 }
 
-void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
+void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
                PlyPrecision precision, std::string_view comment, const WriteProgress& report) {
   Progress progress(report, mesh.num_vertices + mesh.num_faces);
   const bool binary = encoding == PlyEncoding::binary_little_endian;
@@ -315,18 +335,19 @@ void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
   write_vertices(
       out, mesh,
       [&](const VertexBlock& block, OutputBuffer& text) {
-        text.reserve(block.positions.size() * (mesh.has_normals ? 150 : 75));
+        char* at = text.claim(block.positions.size() * line_room(1, 6));
         for (size_t i = 0; i < block.positions.size(); ++i) {
-          put_xyz(text, "", block.positions[i], single);
-          if (mesh.has_normals) put_xyz(text, " ", block.normals[i], single);
-          text += '\n';
+          at = put_xyz(at, "", block.positions[i], single);
+          if (mesh.has_normals) at = put_xyz(at, " ", block.normals[i], single);
+          *at++ = '\n';
         }
+        text.commit(at);
       },
       progress);
   write_faces(out, mesh, text_faces("", true, 0, false), progress);
 }
 
-void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
                std::string_view comment, const WriteProgress& report) {
   if (mesh.triangles > std::numeric_limits<std::uint32_t>::max())
     throw MeshError(
@@ -337,7 +358,7 @@ void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3
   out.write(header.data(), header.size());
   OutputBuffer count;
   LittleEndianWriter(count, 4).put(static_cast<std::uint32_t>(mesh.triangles));
-  out.write(count.data(), static_cast<std::streamsize>(count.size()));
+  out.write(count.data(), count.size());
   write_faces(
       out, mesh,
       [&](const FaceBlock& block, OutputBuffer& bytes) {
@@ -359,20 +380,18 @@ void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3
       progress);
 }
 
-void write_mesh_file(const std::string& path, bool binary,
-                     const std::function<void(std::ostream&)>& write) {
-  write_file_atomically(
-      path,
-      [&](std::ostream& out) {
-        try {
-          write(out);
-        } catch (const MeshError& e) {
-          // The writers do not know the file's name; every message about a file names it.
-          if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
-          throw MeshError(fmt::format("cannot write {}: {}", path, e.what()));
-        }
-      },
-      binary);
+void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write) {
+  write_file_atomically_at(path, [&](const std::string& temporary) {
+    OutputFile out(temporary);
+    try {
+      write(out);
+      out.close();
+    } catch (const MeshError& e) {
+      // The writers do not know the file's name; every message about a file names it.
+      if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
+      throw MeshError(fmt::format("cannot write {}: {}", path, e.what()));
+    }
+  });
 }
 
 }  // namespace stitch::io_detail

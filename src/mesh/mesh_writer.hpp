@@ -12,11 +12,11 @@
 #include <cstring>
 #include <functional>
 #include <memory>
-#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "output_file.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch::io_detail {
@@ -61,18 +61,18 @@ enum class PlyPrecision { double_precision, single };
 
 /// OBJ: `v` (and `vn`) lines block by block, the `vt` lines, then 1-based faces (`a//a` with
 /// normals, `a/t/a` with texture coordinates too, `a/t` with texture coordinates only).
-void write_obj(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+void write_obj(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
 /// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals.
-void write_off(std::ostream& out, const MeshStream& mesh, std::string_view comment,
+void write_off(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
 /// PLY with x y z (and nx ny nz) as double (an exact round trip in either encoding) or float.
-void write_ply(std::ostream& out, const MeshStream& mesh, PlyEncoding encoding,
+void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
                PlyPrecision precision, std::string_view comment,
                const WriteProgress& progress = {});
 /// Binary STL; every polygon is fanned from its first vertex into triangles, whose corners are
 /// looked up in `positions` (STL repeats them per triangle, so they must be at hand).
-void write_stl(std::ostream& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
                std::string_view comment, const WriteProgress& progress = {});
 
 /// Bytes a block is formatted into. Unlike std::string it neither zero-fills what it is about to
@@ -84,25 +84,20 @@ class OutputBuffer {
   [[nodiscard]] size_t size() const { return size_; }
   void clear() { size_ = 0; }
   void reserve(size_t capacity);
-  /// Makes room for n more bytes and returns where they go.
-  char* extend(size_t n) {
+  /// Room for at most n more bytes, written from the pointer returned and ended by commit():
+  /// numbers go straight into the buffer, with no size check each.
+  char* claim(size_t n) {
     if (size_ + n > capacity_) reserve(std::max(2 * capacity_, size_ + n));
-    char* at = data_.get() + size_;
+    return data_.get() + size_;
+  }
+  /// Makes room for exactly n more bytes and returns where they go.
+  char* extend(size_t n) {
+    char* at = claim(n);
     size_ += n;
     return at;
   }
-  void append(const char* first, const char* last) {
-    std::memcpy(extend(static_cast<size_t>(last - first)), first,
-                static_cast<size_t>(last - first));
-  }
-  OutputBuffer& operator+=(char c) {
-    *extend(1) = c;
-    return *this;
-  }
-  OutputBuffer& operator+=(std::string_view text) {
-    append(text.data(), text.data() + text.size());
-    return *this;
-  }
+  /// Ends what was written since claim() at `end`.
+  void commit(const char* end) { size_ = static_cast<size_t>(end - data_.get()); }
 
  private:
   std::unique_ptr<char[]> data_;
@@ -111,8 +106,8 @@ class OutputBuffer {
 
 /// Formats [0, count) in blocks of `block` items, format(begin, end, text) for several blocks at
 /// once on all cores, and writes the texts to `out` in block order; written(items) after each.
-/// Throws MeshError when the stream fails.
-void write_blocks(std::ostream& out, std::int64_t count, std::int64_t block,
+/// Throws MeshError when the file cannot take them.
+void write_blocks(OutputFile& out, std::int64_t count, std::int64_t block,
                   const std::function<void(std::int64_t, std::int64_t, OutputBuffer&)>& format,
                   const std::function<void(std::int64_t)>& written = {});
 
@@ -141,9 +136,9 @@ class LittleEndianWriter {
   char* at_;
 };
 
-/// write_file_atomically with a message naming `path` when a writer fails.
-void write_mesh_file(const std::string& path, bool binary,
-                     const std::function<void(std::ostream&)>& write);
+/// Runs `write` on a temporary file that replaces `path` when it returns
+/// (write_file_atomically_at), with a message naming `path` when it fails.
+void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write);
 
 /// A stream over vertex and face arrays held in memory (`normals` may be null). Faces is any
 /// container of index loops (std::vector<int>, std::array<int, 4>, ...).

@@ -123,8 +123,7 @@ void detail::write_stream(const std::string& path, const io_detail::MeshStream& 
                           std::string_view comment) {
   using namespace io_detail;
   const std::string ext = file_extension(path);
-  const bool binary = ext == ".stl" || (ext == ".ply" && !options.ascii_ply);
-  write_mesh_file(path, binary, [&](std::ostream& out) {
+  write_mesh_file(path, [&](OutputFile& out) {
     if (ext == ".obj")
       write_obj(out, stream, comment, options.progress);
     else if (ext == ".ply")
@@ -228,11 +227,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   stream.faces = [&](std::int64_t begin, std::int64_t end, io_detail::FaceBlock& block) {
     block.sizes.assign(static_cast<size_t>(end - begin), 4);
     block.indices.resize(4 * block.sizes.size());
-    for (std::int64_t q = begin; q < end; ++q) {
-      const auto quad = layout.quad(q);
-      for (int k = 0; k < 4; ++k)
-        block.indices[4 * static_cast<size_t>(q - begin) + k] = static_cast<int>(quad[k]);
-    }
+    layout.quads(begin, end, block.indices.data());
     if (!texcoords) return;
     block.texcoords.resize(block.indices.size());
     const std::int64_t cells = static_cast<std::int64_t>(n) * n;
@@ -304,7 +299,7 @@ void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
   }
   // s t come after `patch`, so readers that know the records without them read on unchanged.
   const size_t record_size = uvs ? 84 : 68;
-  io_detail::write_mesh_file(path, true, [&](std::ostream& out) {
+  io_detail::write_mesh_file(path, [&](io_detail::OutputFile& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment " << kComment
         << "\ncomment patch = corner (half-edge index) of the input mesh; u v = position in "
            "that patch\nelement vertex "

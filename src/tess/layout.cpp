@@ -84,9 +84,29 @@ std::int64_t TessellationLayout::vertex(int k, int i, int j) const {
 
 std::array<std::int64_t, 4> TessellationLayout::quad(std::int64_t q) const {
   const std::int64_t cells = static_cast<std::int64_t>(n_) * n_;
-  const auto k = static_cast<int>(q / cells);
   const auto cell = static_cast<int>(q % cells);
-  const int i = cell / n_, j = cell % n_;
+  return cell_quad(static_cast<int>(q / cells), cell / n_, cell % n_);
+}
+
+void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) const {
+  const std::int64_t cells = static_cast<std::int64_t>(n_) * n_;
+  auto k = static_cast<int>(begin / cells);
+  const auto cell = static_cast<int>(begin % cells);
+  int i = cell / n_, j = cell % n_;
+  for (std::int64_t q = begin; q < end; ++q, out += 4) {
+    const auto corners = cell_quad(k, i, j);
+    for (int m = 0; m < 4; ++m) out[m] = static_cast<int>(corners[m]);
+    if (++j == n_) {
+      j = 0;
+      if (++i == n_) {
+        i = 0;
+        ++k;
+      }
+    }
+  }
+}
+
+std::array<std::int64_t, 4> TessellationLayout::cell_quad(int k, int i, int j) const {
   if (welded_ && i >= 1 && j >= 1 && i + 1 < n_ && j + 1 < n_) {
     // All four corners interior: consecutive rows of this corner's interior block.
     const std::int64_t side = n_ - 1;

@@ -49,6 +49,9 @@ class TessellationLayout {
   [[nodiscard]] std::int64_t vertex(int k, int i, int j) const;
   /// Quad q = (corner k, cell (i, j)), counter-clockwise seen from the normal side.
   [[nodiscard]] std::array<std::int64_t, 4> quad(std::int64_t q) const;
+  /// Quads [begin, end) as quad(q) gives them, four vertex numbers each into `out` (as int, as
+  /// the files store them), walking the cells without a division each.
+  void quads(std::int64_t begin, std::int64_t end, int* out) const;
   /// The samples that make output vertex `vertex`, the one whose position it takes first.
   /// At most max(valence, face degree, 4) samples.
   void samples(std::int64_t vertex, std::vector<GridSample>& out) const;
@@ -62,6 +65,8 @@ class TessellationLayout {
 
  private:
   [[nodiscard]] int corner_index(Corner c) const { return corner_index_[c.idx]; }
+  /// The quad of cell (i, j) of corner k.
+  [[nodiscard]] std::array<std::int64_t, 4> cell_quad(int k, int i, int j) const;
 
   const HalfedgeMesh& mesh_;
   const std::vector<Corner>& corners_;
