@@ -17,6 +17,7 @@
 
 #include "io_detail.hpp"
 #include "mesh_writer.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {
@@ -107,10 +108,6 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
 
 namespace {
 
-std::string supported_list() {
-  return ".obj, .off, .ply, .stl, .glb, .gltf";
-}
-
 constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
@@ -172,6 +169,12 @@ std::string read_regular_file(const std::string& path,
   return std::move(buffer).str();
 }
 
+std::string extension_list(std::span<const std::string_view> extensions) {
+  std::string list;
+  for (std::string_view e : extensions) list += (list.empty() ? "" : ", ") + std::string(e);
+  return list;
+}
+
 std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -183,9 +186,10 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
                               const std::function<void(double)>& progress) {
   const std::string ext = file_extension(path);
   const bool gltf = ext == ".glb" || ext == ".gltf";
-  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl" && !gltf)
+  if (std::find(kMeshReadExtensions.begin(), kMeshReadExtensions.end(), ext) ==
+      kMeshReadExtensions.end())
     throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                limits::quoted(ext), supported_list()));
+                                limits::quoted(ext), extension_list(kMeshReadExtensions)));
   // Reading the bytes is the first third of the work, parsing them the rest.
   auto part = [&progress](double from, double to) -> std::function<void(double)> {
     if (!progress) return {};
@@ -255,8 +259,8 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     write_mesh_file(path, true,
                     [&](std::ostream& out) { write_stl(out, stream, soup.positions, kComment); });
   else
-    throw MeshError(fmt::format(
-        "cannot write {}: unknown extension '{}' (supported: .obj, .off, .ply, .stl)", path, ext));
+    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                ext, extension_list(kMeshWriteExtensions)));
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {

@@ -103,7 +103,7 @@ constexpr double kMostZoomSteps = 100;
 
 Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
   rebuild();
-  view.set_standard(View::iso, mesh_bounds());
+  view.set_standard(View::iso, mesh_bounds(), viewport_aspect);
 }
 
 void Session::remember(Change change) {
@@ -198,7 +198,8 @@ void open_file(Session& session, const std::string& path) {
   session.path = path;
   session.selection.reset();
   session.rebuild();
-  if (!is_project_path(path)) session.view.set_standard(View::iso, session.mesh_bounds());
+  if (!is_project_path(path))
+    session.view.set_standard(View::iso, session.mesh_bounds(), session.viewport_aspect);
 }
 
 void save_file(Session& session, const std::string& path) {
@@ -302,7 +303,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     std::vector<int> params;
     for (size_t i = 2; i < w.size(); ++i) params.push_back(integer(w[i], "a primitive parameter"));
     s.apply(s.document.replace({make_primitive(w[1], params), {}}, "primitive " + w[1]));
-    s.view.set_standard(View::iso, s.mesh_bounds());
+    s.view.set_standard(View::iso, s.mesh_bounds(), s.viewport_aspect);
     result.message = "new " + w[1];
   } else if (cmd == "move-vertex" || cmd == "translate-vertex") {
     expect(w, 4, 4, "move-vertex V X Y Z  or  translate-vertex V DX DY DZ");
@@ -449,7 +450,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   } else if (cmd == "view") {
     expect(w, 1, 1, "view front|back|left|right|top|bottom|iso");
     try {
-      s.view.set_standard(parse_view(w[1]), s.mesh_bounds());
+      s.view.set_standard(parse_view(w[1]), s.mesh_bounds(), s.viewport_aspect);
     } catch (const std::invalid_argument& e) {
       throw MeshError(e.what());
     }
@@ -457,10 +458,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     expect(w, 1, 1, "frame all|selection");
     if (w[1] == "all") {
       const BoundingBox b = s.mesh_bounds();
-      if (!b.empty()) s.view.frame(b.center(), b.radius());
+      if (!b.empty()) s.view.frame(b.center(), b.radius(), s.viewport_aspect);
     } else if (w[1] == "selection") {
       if (!s.selection) throw MeshError("frame selection: nothing is selected");
-      s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius());
+      s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius(), s.viewport_aspect);
     } else {
       throw MeshError("usage: frame all|selection");
     }
@@ -494,7 +495,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     if (path.empty())
       throw MeshError(fmt::format(
           "usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
-          kSurfaceMeshExtensions));
+          extension_list(kSurfaceMeshExtensions)));
     try {
       result.message = export_surface(s, path);
     } catch (const std::invalid_argument& e) {  // cc is not a set of Bézier patches
@@ -567,7 +568,9 @@ std::optional<ScriptError> run_script(Session& session, const std::vector<std::s
   if (quit) *quit = false;
   for (size_t i = 0; i < lines.size(); ++i) {
     try {
-      if (run_script_line(session, lines[i], hooks).quit) {
+      const ScriptResult r =
+          hooks.run_line ? hooks.run_line(lines[i]) : run_script_line(session, lines[i], hooks);
+      if (r.quit) {
         if (quit) *quit = true;
         return std::nullopt;
       }

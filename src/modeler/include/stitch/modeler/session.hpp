@@ -51,6 +51,9 @@ struct Session {
   UpdateStats last_update;
   /// Set when the last line could not show its method (cc refused the mesh), else empty.
   std::string warning;
+  /// Width / height of the area the model is drawn in (the application keeps it current), so
+  /// that framing fits the model between the panels.
+  double viewport_aspect = 1.0;
 
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
@@ -95,14 +98,18 @@ void save_file(Session& session, const std::string& path);
 std::string append_file(Session& session, const std::string& path, const Vec3& offset);
 
 /// What a script line needs from the application.
-struct ScriptHooks {
-  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
-  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
-};
-
 struct ScriptResult {
   bool quit = false;
   std::string message;  ///< what happened, for the status bar / log
+};
+
+struct ScriptHooks {
+  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
+  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
+  /// When set, run_script runs each line through this instead of run_script_line: the
+  /// application adds its own lines (`ui off`) and uploads what a line changed. It throws on a
+  /// bad line, as run_script_line does.
+  std::function<ScriptResult(std::string_view line)> run_line;
 };
 
 /// Runs one line. Throws MeshError (or std::invalid_argument) saying what is wrong; the session
@@ -114,8 +121,8 @@ struct ScriptError {
   int line = 0;
   std::string message;
 };
-/// Runs lines until the end or `quit`; stops at the first error and returns it. `quit` tells
-/// whether the script asked to quit.
+/// Runs lines (through hooks.run_line when set) until the end or `quit`; stops at the first
+/// error and returns it. `quit` tells whether the script asked to quit.
 std::optional<ScriptError> run_script(Session& session, const std::vector<std::string>& lines,
                                       const ScriptHooks& hooks, bool* quit = nullptr);
 
