@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include "frame.hpp"
+#include "layout_report.hpp"
 #include "stitch/mesh/io.hpp"
 #include "viewport.hpp"
 
@@ -14,16 +16,38 @@ namespace stitch::modeler::app {
 
 namespace {
 
-/// The application's own lines, about the window rather than the session: `ui on|off`.
-/// Returns false for any other line.
+/// The rest of the line after its first word, without a comment (paths may contain blanks).
+std::string argument_of(std::string_view line) {
+  std::string rest{line.substr(0, line.find('#'))};
+  const size_t word_end = rest.find_first_of(" \t", rest.find_first_not_of(" \t"));
+  if (word_end == std::string::npos) return "";
+  rest.erase(0, word_end);
+  rest.erase(0, rest.find_first_not_of(" \t"));
+  rest.erase(rest.find_last_not_of(" \t\r") + 1);
+  return rest;
+}
+
+/// The application's own lines, about the window rather than the session: `ui on|off`,
+/// `layout PATH`. Returns false for any other line.
 bool run_window_line(App& app, std::string_view line) {
   std::istringstream in{std::string(line)};
-  std::string word, value, extra;
-  if (!(in >> word) || word != "ui") return false;
-  if (!(in >> value) || (value != "on" && value != "off") || (in >> extra && extra[0] != '#'))
-    throw MeshError("usage: ui on|off");
-  app.layout.show_ui = value == "on";
-  return true;
+  std::string word;
+  if (!(in >> word)) return false;
+  if (word == "ui") {
+    const std::string value = argument_of(line);
+    if (value != "on" && value != "off") throw MeshError("usage: ui on|off");
+    app.layout.show_ui = value == "on";
+    return true;
+  }
+  if (word == "layout") {
+    const std::string path = argument_of(line);
+    if (path.empty()) throw MeshError("usage: layout PATH (the screen layout as JSON)");
+    // Two frames: ImGui sizes new windows in the first.
+    for (int i = 0; i < 2; ++i) render_frame(app, false);
+    write_layout_report(app, path);
+    return true;
+  }
+  return false;
 }
 
 std::vector<std::string> read_lines(const std::string& path) {

@@ -18,10 +18,10 @@ namespace stitch::modeler::app {
 
 namespace {
 
-/// The 3D view's area: the window less the panels (from their boxes in the last frame).
-ScreenRect free_area() {
+/// The whole window, for the 3D view when the panels are hidden.
+ScreenRect whole_window() {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  return {0, 0, vp->Size.x, vp->Size.y};
+  return {vp->Pos.x, vp->Pos.y, vp->Pos.x + vp->Size.x, vp->Pos.y + vp->Size.y};
 }
 
 }  // namespace
@@ -64,11 +64,17 @@ void render_frame(App& app, bool interactive) {
     handle_mouse(app);
     handle_keys(app);
   }
-  if (app.layout.show_ui) draw_panels(app);
+  if (app.layout.show_ui)
+    draw_panels(app);  // sets layout.viewport
+  else
+    app.layout.viewport = whole_window();
+  // Framing (`frame all`, the views) fits the model to the area it is drawn in.
+  const ScreenRect& v = app.layout.viewport;
+  const bool split = app.session.display.split.has_value();
+  app.session.viewport_aspect = (split ? v.width() / 2 : v.width()) / std::max(v.height(), 1.0f);
   file_dialogs(app);
   recover_dialog(app);
   ImGui::Render();
-  app.layout.viewport = free_area();
   draw_scene(app);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glFinish();  // the frame's time includes the GL's work, not just issuing it

@@ -7,6 +7,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -27,6 +28,7 @@ struct Options {
   std::string file, script, screenshot;
   bool exit_after = false, recover = false, no_autosave = false;
   ImageSize size;
+  float font_scale = 1.0f;
 };
 
 /// Opens the document (or the newer autosave with --recover, or offers it in a dialog).
@@ -63,10 +65,15 @@ void open_document(App& app, const Options& o) {
 /// The modeler in its window: the document, the script, the screenshot, then the loop.
 int run(GLFWwindow* window, const Options& o) {
   App app(window);
+  app.layout.font_scale = o.font_scale;
   app.autosave.enabled = !o.no_autosave && o.script.empty();
   app.hooks.print = [](const std::string& text) { std::cout << text << "\n"; };
   app.hooks.screenshot = [&app](const std::string& path) { screenshot(app, path); };
   app.views.main.renderer = std::make_unique<Renderer>();
+  // Two frames lay the panels out (ImGui sizes new windows in the first), so that the document
+  // is framed in the area they leave.
+  for (int i = 0; i < 2; ++i) render_frame(app, false);
+  app.session.view.set_standard(View::iso, app.session.mesh_bounds(), app.session.viewport_aspect);
   open_document(app, o);
   after_change(app, true);
 
@@ -108,6 +115,10 @@ int main(int argc, char** argv) {
   cli.add_flag("--recover", o.recover, "load the autosave newer than FILE instead of FILE");
   cli.add_flag("--no-autosave", o.no_autosave, "do not write autosaves");
   cli.add_option("--size", size_text, "window size WxH")->capture_default_str();
+  cli.add_option("--font-scale", o.font_scale,
+                 "text and widget size, times the screen's own scale (e.g. 1.5)")
+      ->check(CLI::Range(0.5f, 4.0f))
+      ->capture_default_str();
   CLI11_PARSE(cli, argc, argv);
   try {
     o.size = parse_image_size(size_text, 4096);
@@ -144,6 +155,16 @@ int main(int argc, char** argv) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
   ImGui::StyleColorsLight();
+  // The screen's scale (high-DPI monitors) times the one asked for: the font is rasterised at
+  // that size rather than magnified, and the paddings and spacings grow with it.
+  float screen_scale = 1.0f, unused = 1.0f;
+  glfwGetWindowContentScale(window, &screen_scale, &unused);
+  const float scale = o.font_scale * std::max(screen_scale, 1.0f);
+  ImFontConfig font;
+  font.SizePixels = 13.0f * scale;  // ImGui's default font is drawn for 13 pixels
+  ImGui::GetIO().Fonts->AddFontDefault(&font);
+  ImGui::GetStyle().ScaleAllSizes(scale);
+  o.font_scale = scale;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 

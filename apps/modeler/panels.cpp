@@ -96,6 +96,25 @@ std::string numbers_of(const std::string& description) {
   return description.substr(description.find(' ') + 1);
 }
 
+/// `text`, shortened with "..." in the middle to at most `width` pixels of the current font:
+/// for texts of any length (paths, messages) in panels sized to their fixed content.
+std::string elided(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  const std::string dots = "...";
+  size_t keep = text.size();
+  std::string out;
+  do {
+    --keep;
+    out = text.substr(0, keep / 2) + dots + text.substr(text.size() - (keep - keep / 2));
+  } while (keep > 0 && ImGui::CalcTextSize(out.c_str()).x > width);
+  return out;
+}
+
+/// Widths in units of the font size, so that they grow with the font scale.
+float ems(float n) {
+  return n * ImGui::GetFontSize();
+}
+
 void picking_section(App& app, Widgets& ui) {
   const Session& s = app.session;
   const HalfedgeMesh& m = s.document.mesh();
@@ -116,62 +135,79 @@ void operators_section(App& app, Widgets& ui) {
   auto op_button = [&](const char* label, const std::string& line, bool enabled) {
     if (ui.button(label, enabled)) run_line(app, line);
   };
+  auto row_label = [&](const char* text) {
+    ImGui::AlignTextToFramePadding();
+    ui.text(text);
+    ImGui::SameLine(ems(4.5f));
+  };
+  ui.text_disabled("Two picks: from the previous to the selected");
   const bool two_corners =
       sel && prev && sel->kind == PickKind::corner && prev->kind == PickKind::corner;
-  op_button("Insert edge (previous corner -> selected corner)",
+  op_button("Insert edge",
             two_corners ? "insert-edge " + numbers_of(describe(m, *prev)) + " " +
                               numbers_of(describe(m, *sel))
                         : "",
             two_corners);
-  const bool edge = sel && sel->kind == PickKind::edge;
-  const std::string e = edge ? numbers_of(describe(m, *sel)) : "";
-  op_button("Delete edge", "delete-edge " + e, edge);
   ImGui::SameLine();
-  op_button("Subdivide", "subdivide-edge " + e, edge);
-  ImGui::SameLine();
-  op_button("Collapse", "collapse-edge " + e, edge);
-  // Sharp features: an infinitely sharp crease (OpenSubdiv's 10) or none; a vertex corner.
-  const bool sharp_edge = edge && m.sharpness(HalfedgeMesh::edge(Halfedge(sel->index))) > 0;
-  op_button(sharp_edge ? "Smooth edge" : "Crease edge",
-            fmt::format("crease {} {}", e, sharp_edge ? 0.0 : infinitely_sharp), edge);
-  const bool vertex = sel && sel->kind == PickKind::vertex;
-  const bool corner_vertex = vertex && m.sharpness(Vertex(sel->index)) > 0;
-  ImGui::SameLine();
-  op_button(
-      corner_vertex ? "Smooth vertex" : "Corner vertex",
-      vertex ? fmt::format("corner {} {}", sel->index + 1, corner_vertex ? 0.0 : infinitely_sharp)
-             : "",
-      vertex);
   const bool face = sel && sel->kind == PickKind::face;
-  const std::string f = face ? std::to_string(sel->index + 1) : "";
-  ImGui::SetNextItemWidth(80);
-  ImGui::InputFloat("##distance", &app.fields.extrude_distance, 0.1f, 0.5f, "%.2f");
-  ImGui::SameLine();
-  op_button("Extrude face", fmt::format("extrude-face {} {}", f, app.fields.extrude_distance),
-            face);
-  ImGui::SameLine();
-  op_button("Delete face", "delete-face " + f, face);
-  const bool hole = face && m.is_hole(Face(sel->index));
-  ImGui::SameLine();
-  op_button(hole ? "Fill hole" : "Open face", (hole ? "fill-hole " : "open-face ") + f, face);
   const bool two_faces = face && prev && prev->kind == PickKind::face;
-  ImGui::SetNextItemWidth(80);
-  ui.input_int("twist", &app.fields.connect_twist);
-  ImGui::SameLine();
-  op_button("Connect faces (previous, selected)",
+  op_button("Connect faces",
             two_faces ? fmt::format("connect-faces {} {} {}", prev->index + 1, sel->index + 1,
                                     app.fields.connect_twist)
                       : "",
             two_faces);
-  ui.text("Remesh:");
-  for (const char* op : {"doo-sabin", "vertex-insertion", "catmull-clark", "dual"}) {
-    ImGui::SameLine();
-    op_button(op, op, true);
-  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ems(5.5f));
+  ui.input_int("twist", &app.fields.connect_twist);
+
+  row_label("Edge:");
+  const bool edge = sel && sel->kind == PickKind::edge;
+  const std::string e = edge ? numbers_of(describe(m, *sel)) : "";
+  op_button("Delete##edge", "delete-edge " + e, edge);
+  ImGui::SameLine();
+  op_button("Subdivide", "subdivide-edge " + e, edge);
+  ImGui::SameLine();
+  op_button("Collapse", "collapse-edge " + e, edge);
+  ImGui::SameLine();
+  // Sharp features: an infinitely sharp crease (OpenSubdiv's 10) or none; a vertex corner.
+  const bool sharp_edge = edge && m.sharpness(HalfedgeMesh::edge(Halfedge(sel->index))) > 0;
+  op_button(sharp_edge ? "Smooth##edge" : "Crease",
+            fmt::format("crease {} {}", e, sharp_edge ? 0.0 : infinitely_sharp), edge);
+
+  row_label("Vertex:");
+  const bool vertex = sel && sel->kind == PickKind::vertex;
+  const bool corner_vertex = vertex && m.sharpness(Vertex(sel->index)) > 0;
+  op_button(
+      corner_vertex ? "Smooth##vertex" : "Corner",
+      vertex ? fmt::format("corner {} {}", sel->index + 1, corner_vertex ? 0.0 : infinitely_sharp)
+             : "",
+      vertex);
+
+  row_label("Face:");
+  const std::string f = face ? std::to_string(sel->index + 1) : "";
+  op_button("Extrude", fmt::format("extrude-face {} {}", f, app.fields.extrude_distance), face);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ems(6.5f));
+  ImGui::InputFloat("##distance", &app.fields.extrude_distance, 0.1f, 0.5f, "%.2f");
+  ImGui::SameLine();
+  op_button("Delete##face", "delete-face " + f, face);
+  const bool hole = face && m.is_hole(Face(sel->index));
+  ImGui::SameLine();
+  op_button(hole ? "Fill hole" : "Open", (hole ? "fill-hole " : "open-face ") + f, face);
+
+  row_label("Remesh:");
+  op_button("doo-sabin", "doo-sabin", true);
+  ImGui::SameLine();
+  op_button("vertex-insertion", "vertex-insertion", true);
+  ImGui::SetCursorPosX(ems(4.5f));  // under the row's first button
+  op_button("catmull-clark", "catmull-clark", true);
+  ImGui::SameLine();
+  op_button("dual", "dual", true);
+
   const auto names = primitive_names();
   int& chosen = app.fields.primitive_index;
   chosen = std::clamp(chosen, 0, int(names.size()) - 1);
-  ImGui::SetNextItemWidth(150);
+  ImGui::SetNextItemWidth(ems(8));
   if (ImGui::BeginCombo("##primitive", names[chosen].c_str())) {
     for (int i = 0; i < int(names.size()); ++i)
       if (ImGui::Selectable(names[i].c_str(), i == chosen)) chosen = i;
@@ -219,10 +255,22 @@ void kgon_section(App& app, Widgets& ui) {
   }
 }
 
-void edit_panel(App& app, Widgets& ui) {
-  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Edit");
+/// The panels' flags: each sized to its content, in its place beside the 3D view.
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_AlwaysAutoResize |
+                                         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoSavedSettings;
+
+/// Places the next panel at the top of the area between the menu bar and the status bar, at
+/// the left (pivot 0) or the right (pivot 1), no taller than that area (it scrolls then).
+void place_panel(const ScreenRect& area, float pivot_x) {
+  ImGui::SetNextWindowPos(ImVec2(pivot_x > 0 ? area.x1 : area.x0, area.y0), ImGuiCond_Always,
+                          ImVec2(pivot_x, 0));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(area.width(), area.height()));
+}
+
+void edit_panel(App& app, Widgets& ui, const ScreenRect& area) {
+  place_panel(area, 0);
+  ImGui::Begin("Edit", nullptr, kPanelFlags);
   picking_section(app, ui);
   if (ui.header("Operators", ImGuiTreeNodeFlags_DefaultOpen)) operators_section(app, ui);
   if (ui.header("Move vertices", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -246,12 +294,10 @@ void edit_panel(App& app, Widgets& ui) {
   ImGui::End();
 }
 
-void display_panel(App& app, Widgets& ui) {
+void display_panel(App& app, Widgets& ui, const ScreenRect& area) {
   const Session& s = app.session;
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(vp->Size.x - 290, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(280, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Display");
+  place_panel(area, 1);
+  ImGui::Begin("Display", nullptr, kPanelFlags);
   int method = int(s.display.method);
   if (ui.combo("method", &method, kMethods, 3))
     run_line(app, std::string("method ") + kMethods[method]);
@@ -273,22 +319,25 @@ void display_panel(App& app, Widgets& ui) {
   if (ui.checkbox("extraordinary points", &markers))
     run_line(app, fmt::format("overlay markers {}", markers ? "on" : "off"));
   ImGui::Separator();
-  for (const char* v : kViews) {
-    if (ui.button(v)) run_line(app, std::string("view ") + v);
-    ImGui::SameLine();
+  for (int v = 0; v < int(std::size(kViews)); ++v) {
+    if (v != 0 && v != 4) ImGui::SameLine();  // two rows: the sides, then top, bottom, iso
+    if (ui.button(kViews[v])) run_line(app, std::string("view ") + kViews[v]);
   }
-  ImGui::NewLine();
   if (ui.button("Frame all")) run_line(app, "frame all");
   ImGui::SameLine();
   if (ui.button("Frame selection")) run_line(app, "frame selection");
   ImGui::Separator();
   if (ui.header("History")) {
+    // Steps name their files, which may be long: shortened to the panel's usual width.
+    const float width = ems(20);
     for (const std::string& l : s.document.undo_labels()) {
-      ImGui::BulletText("%s", l.c_str());
-      record_label(app.layout, l);
+      const std::string shown = elided(l, width);
+      ImGui::BulletText("%s", shown.c_str());
+      record_label(app.layout, shown);
     }
     const auto redo = s.document.redo_labels();
-    for (auto it = redo.rbegin(); it != redo.rend(); ++it) ui.text_disabled("  " + *it);
+    for (auto it = redo.rbegin(); it != redo.rend(); ++it)
+      ui.text_disabled("  " + elided(*it, width));
   }
   record_panel(app.layout);
   ImGui::End();
@@ -312,13 +361,20 @@ void menu_bar(App& app, Widgets& ui) {
     if (ImGui::MenuItem("Redo", "Ctrl+Y", false, s.document.can_redo())) run_line(app, "redo");
     ImGui::EndMenu();
   }
-  ui.text_disabled((s.path.empty() ? "untitled" : s.path) + (s.document.modified() ? " *" : ""));
+  const std::string file = s.path.empty() ? "untitled" : s.path;
+  ui.text_disabled(elided(file, ImGui::GetContentRegionAvail().x - ems(2)) +
+                   (s.document.modified() ? " *" : ""));
+  record_panel(app.layout);
   ImGui::EndMainMenuBar();
 }
 
-void status_bar(App& app, Widgets& ui) {
+/// The status bar along the window's bottom; returns its height.
+float status_bar(App& app, Widgets& ui) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const float h = ImGui::GetFrameHeight() + 6;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // No shorter than ImGui lets a window be, or it would reach below the window's edge.
+  const float h =
+      std::max(ImGui::GetTextLineHeight() + 2 * style.WindowPadding.y, style.WindowMinSize.y);
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - h));
   ImGui::SetNextWindowSize(ImVec2(vp->Size.x, h));
   ImGui::Begin("##status", nullptr,
@@ -326,29 +382,45 @@ void status_bar(App& app, Widgets& ui) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
   const Session& s = app.session;
-  ui.text(fmt::format("update {:.2f} ms ({} of {} patches{}) | {:.0f} fps | {} | {}",
-                      s.last_update.milliseconds, s.last_update.recomputed_patches,
-                      s.surface.num_patches(), s.last_update.full ? ", full" : "", app.frames.fps(),
-                      to_string(s.display.method), app.status));
-  if (const SurfaceProblems& p = s.surface_problems(); !p.empty()) {
-    ImGui::SameLine();
-    const std::string text = "| " + p.summary();
+  const std::string stats = fmt::format(
+      "update {:.2f} ms ({} of {} patches{}) | {:.0f} fps | {} | ", s.last_update.milliseconds,
+      s.last_update.recomputed_patches, s.surface.num_patches(), s.last_update.full ? ", full" : "",
+      app.frames.fps(), to_string(s.display.method));
+  const SurfaceProblems& problems = s.surface_problems();
+  const std::string warning = problems.empty() ? "" : " | " + problems.summary();
+  // The message takes the room left, shortened when longer (the full text in a tooltip).
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(stats.c_str()).x -
+                     ImGui::CalcTextSize(warning.c_str()).x;
+  const std::string message = elided(app.status, std::max(room, ems(4)));
+  ui.text(stats + message);
+  if (message != app.status && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", app.status.c_str());
+  if (!warning.empty()) {
+    ImGui::SameLine(0, 0);
     ImGui::TextColored(ImVec4(problem_colour.x(), problem_colour.y(), problem_colour.z(), 1.0f),
-                       "%s", text.c_str());
-    record_label(app.layout, text);
+                       "%s", warning.c_str());
+    record_label(app.layout, warning);
   }
   record_panel(app.layout);
   ImGui::End();
+  return h;
 }
 
 }  // namespace
 
 void draw_panels(App& app) {
   Widgets ui(app.layout);
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
   menu_bar(app, ui);
-  edit_panel(app, ui);
-  display_panel(app, ui);
-  status_bar(app, ui);
+  const float menu_h = app.layout.panels.empty() ? 0.0f : app.layout.panels.back().box.y1;
+  const float status_h = status_bar(app, ui);
+  const ScreenRect between{vp->Pos.x, vp->Pos.y + menu_h, vp->Pos.x + vp->Size.x,
+                           vp->Pos.y + vp->Size.y - status_h};
+  edit_panel(app, ui, between);
+  const float left = app.layout.panels.back().box.x1;
+  display_panel(app, ui, between);
+  const float right = app.layout.panels.back().box.x0;
+  // The 3D view: what the panels leave between them (at least a pixel wide).
+  app.layout.viewport = {left, between.y0, std::max(right, left + 1), between.y1};
 }
 
 void recover_dialog(App& app) {
