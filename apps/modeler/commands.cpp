@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "file_dialog.hpp"
 #include "frame.hpp"
 #include "layout_report.hpp"
 #include "stitch/mesh/io.hpp"
@@ -28,7 +29,7 @@ std::string argument_of(std::string_view line) {
 }
 
 /// The application's own lines, about the window rather than the session: `ui on|off`,
-/// `layout PATH`. Returns false for any other line.
+/// `dialog ...`, `layout PATH`. Returns false for any other line.
 bool run_window_line(App& app, std::string_view line) {
   std::istringstream in{std::string(line)};
   std::string word;
@@ -37,6 +38,20 @@ bool run_window_line(App& app, std::string_view line) {
     const std::string value = argument_of(line);
     if (value != "on" && value != "off") throw MeshError("usage: ui on|off");
     app.layout.show_ui = value == "on";
+    return true;
+  }
+  if (word == "dialog") {
+    // The file dialogs, for pictures and layout checks: `dialog open|append|save|export
+    // [FOLDER]`, `dialog close`.
+    std::string action, folder;
+    in >> action;
+    const std::string rest = argument_of(argument_of(line));
+    if (action == "close") {
+      close_file_dialog(app);
+      return true;
+    }
+    if (action.empty()) throw MeshError("usage: dialog open|append|save|export [FOLDER] | close");
+    request_file_dialog(app, parse_file_action(action), rest);
     return true;
   }
   if (word == "layout") {

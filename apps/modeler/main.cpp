@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -76,6 +77,14 @@ int run(GLFWwindow* window, const Options& o) {
   app.session.view.set_standard(View::iso, app.session.mesh_bounds(), app.session.viewport_aspect);
   open_document(app, o);
   after_change(app, true);
+  // A file opened by hand joins the recent files (not in a script or a --exit run).
+  if (!o.file.empty() && o.script.empty() && !o.exit_after) {
+    try {
+      app.files.recent.add(o.file);
+    } catch (const std::exception& e) {
+      app.status = e.what();
+    }
+  }
 
   int status = 0;
   bool quit = false;
@@ -98,7 +107,10 @@ int run(GLFWwindow* window, const Options& o) {
 
 }  // namespace
 
-App::App(GLFWwindow* w) : session(make_cube()), window(w) {}
+App::App(GLFWwindow* w)
+    : session(make_cube()),
+      window(w),
+      files(recent_files_path(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"))) {}
 
 }  // namespace stitch::modeler::app
 

@@ -11,6 +11,7 @@
 #include "file_dialog.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "viewport.hpp"
+#include "widgets.hpp"
 
 namespace stitch::modeler::app {
 
@@ -25,94 +26,9 @@ constexpr const char* kModes[] = {"shaded", "zebra", "isophote", "levels", "patc
 constexpr const char* kOverlays[] = {"mesh", "kgons", "nets", "tess"};
 constexpr const char* kViews[] = {"front", "back", "left", "right", "top", "bottom", "iso"};
 
-/// ImGui's widgets, each recording its label in the layout as it is drawn.
-class Widgets {
- public:
-  explicit Widgets(ScreenLayout& layout) : layout_(layout) {}
-  bool button(const char* label, bool enabled = true) {
-    if (!enabled) ImGui::BeginDisabled();
-    const bool pressed = ImGui::Button(label);
-    if (!enabled) ImGui::EndDisabled();
-    record_label(layout_, label);
-    return pressed;
-  }
-  bool radio(const char* label, bool active) {
-    const bool pressed = ImGui::RadioButton(label, active);
-    record_label(layout_, label);
-    return pressed;
-  }
-  bool checkbox(const char* label, bool* value) {
-    const bool changed = ImGui::Checkbox(label, value);
-    record_label(layout_, label);
-    return changed;
-  }
-  void text(const std::string& text) {
-    ImGui::TextUnformatted(text.c_str());
-    record_label(layout_, text);
-  }
-  void text_disabled(const std::string& text) {
-    ImGui::TextDisabled("%s", text.c_str());
-    record_label(layout_, text);
-  }
-  bool header(const char* label, ImGuiTreeNodeFlags flags = 0) {
-    const bool open = ImGui::CollapsingHeader(label, flags);
-    // The text follows the arrow: a frame padding, the arrow (a font size), a padding.
-    const ImGuiStyle& style = ImGui::GetStyle();
-    record_label(layout_, label, ImGui::GetFontSize() + 2 * style.FramePadding.x);
-    return open;
-  }
-  bool combo(const char* label, int* current, const char* const items[], int count) {
-    const bool changed = ImGui::Combo(label, current, items, count);
-    record_label(layout_, label);
-    return changed;
-  }
-  bool slider(const char* label, float* value, float low, float high) {
-    const bool changed = ImGui::SliderFloat(label, value, low, high);
-    record_label(layout_, label);
-    return changed;
-  }
-  bool slider(const char* label, int* value, int low, int high) {
-    const bool changed = ImGui::SliderInt(label, value, low, high);
-    record_label(layout_, label);
-    return changed;
-  }
-  bool drag3(const char* label, float* values, float speed) {
-    const bool changed = ImGui::DragFloat3(label, values, speed);
-    record_label(layout_, label);
-    return changed;
-  }
-  bool input_int(const char* label, int* value) {
-    const bool changed = ImGui::InputInt(label, value);
-    record_label(layout_, label);
-    return changed;
-  }
-
- private:
-  ScreenLayout& layout_;
-};
-
 /// "edge 1 5@2" -> "1 5@2": an element's numbers as operation lines take them.
 std::string numbers_of(const std::string& description) {
   return description.substr(description.find(' ') + 1);
-}
-
-/// `text`, shortened with "..." in the middle to at most `width` pixels of the current font:
-/// for texts of any length (paths, messages) in panels sized to their fixed content.
-std::string elided(const std::string& text, float width) {
-  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
-  const std::string dots = "...";
-  size_t keep = text.size();
-  std::string out;
-  do {
-    --keep;
-    out = text.substr(0, keep / 2) + dots + text.substr(text.size() - (keep - keep / 2));
-  } while (keep > 0 && ImGui::CalcTextSize(out.c_str()).x > width);
-  return out;
-}
-
-/// Widths in units of the font size, so that they grow with the font scale.
-float ems(float n) {
-  return n * ImGui::GetFontSize();
 }
 
 void picking_section(App& app, Widgets& ui) {

@@ -33,42 +33,41 @@ struct Setting {
 /// Runs the modeler on two cubes side by side (a wide model) with corners selected (long
 /// labels), frames them in the front view and writes the layout and a screenshot.
 nlohmann::json layout_of(const Setting& s, const stitch::testing::TempFolder& dir) {
-  const std::string script =
-      dir.write(s.name + ".txt", "open " + test::example_path("two_cubes.obj") +
-                                     "\nselect corner 3@1\nselect corner 9@6\nview front\n"
-                                     "frame all\nscreenshot " +
-                                     dir.file(s.name + ".png") + "\nlayout " +
-                                     dir.file(s.name + ".json") + "\nquit\n");
+  const std::string script = dir.write(
+      s.name + ".txt", "open " + test::example_path("two_cubes.obj") +
+                           "\nselect corner 3@1\nselect corner 9@6\nview front\n"
+                           "frame all\nscreenshot " +
+                           dir.file(s.name + ".png") + "\nlayout " + dir.file(s.name + ".json") +
+                           "\ndialog open " + test::example_path("") + "\nlayout " +
+                           dir.file(s.name + "_dialog.json") + "\nquit\n");
   const std::string log = dir.file(s.name + ".log");
   // A screen larger than the window, so that the window is not cut by it.
   const std::string screen =
       std::to_string(s.width + 64) + "x" + std::to_string(s.height + 64) + "x24";
   const std::string args = "--size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                            " --font-scale " + std::to_string(s.font_scale) + " --script " + script;
-  EXPECT_EQ(run_modeler(args, log, screen), 0) << read_text(log);
+  // The recent files come from the test's folder, not the user's.
+  EXPECT_EQ(run_modeler(args, log, screen, "XDG_CONFIG_HOME='" + dir.file("config") + "'"), 0)
+      << read_text(log);
   return nlohmann::json::parse(read_text(dir.file(s.name + ".json")));
 }
 
 /// Layout tolerance: half a pixel, ImGui's rounding of positions to whole pixels.
 constexpr double kPixel = 0.5;
 
-void check_layout(const Setting& s, const nlohmann::json& j) {
-  SCOPED_TRACE(s.name);
+void check_labels(const Setting& s, const nlohmann::json& j) {
   ASSERT_EQ(j["window"][0].get<int>(), s.width);
   ASSERT_EQ(j["window"][1].get<int>(), s.height);
   // Every label ends inside its window's work area (what is beyond it is cut off; a header
   // begins in the padding by design, so only the right edges are compared).
   ASSERT_GT(j["labels"].size(), 40u);  // the panels' labels are there to check
-  bool saw_insert_edge = false;
   for (const auto& l : j["labels"]) {
     const Box b = box_of(l["box"]), c = box_of(l["content"]);
     const std::string what =
         l["window"].get<std::string>() + ": \"" + l["text"].get<std::string>() + "\"";
     EXPECT_LE(b.x1, c.x1 + kPixel)
         << what << " ends at " << b.x1 << ", its window's work area at " << c.x1;
-    saw_insert_edge |= l["text"].get<std::string>().starts_with("Insert edge");
   }
-  EXPECT_TRUE(saw_insert_edge);
   // The panels inside the window.
   std::vector<Box> panels;
   for (const auto& p : j["panels"]) {
@@ -81,6 +80,27 @@ void check_layout(const Setting& s, const nlohmann::json& j) {
     panels.push_back(b);
   }
   ASSERT_GE(panels.size(), 3u);  // Edit, Display, the status bar
+}
+
+bool has_label(const nlohmann::json& j, const std::string& window, const std::string& text) {
+  for (const auto& l : j["labels"])
+    if (l["window"].get<std::string>().starts_with(window) && l["text"] == text) return true;
+  return false;
+}
+
+Box panel_box(const nlohmann::json& j, const std::string& name) {
+  for (const auto& p : j["panels"])
+    if (p["name"].get<std::string>().starts_with(name)) return box_of(p["box"]);
+  ADD_FAILURE() << "no panel " << name;
+  return {};
+}
+
+void check_layout(const Setting& s, const nlohmann::json& j) {
+  SCOPED_TRACE(s.name);
+  check_labels(s, j);
+  EXPECT_TRUE(has_label(j, "Edit", "Insert edge"));
+  std::vector<Box> panels;
+  for (const auto& p : j["panels"]) panels.push_back(box_of(p["box"]));
   // The model, framed, inside the 3D view and clear of every panel.
   const Box view = box_of(j["viewport"]);
   ASSERT_FALSE(j["model_box"].is_null());
@@ -115,8 +135,20 @@ TEST(ModelerXvfbLayout, PanelsFitAndFrameAllFramesBesideThem) {
       {1280, 720, 1.0, "hd"}, {1920, 1080, 1.0, "full_hd"}, {1280, 720, 1.5, "hd_font_1.5"}};
   std::vector<nlohmann::json> layouts;
   for (const Setting& s : settings) {
+    // A recent file for the Open dialog to list.
+    std::filesystem::create_directories(dir.file("config/stitch"));
+    dir.write("config/stitch/recent-files", test::example_path("torus.obj") + "\n");
     layouts.push_back(layout_of(s, dir));
     check_layout(s, layouts.back());
+    // The Open dialog over the examples: its labels fit too, it lists the meshes, folders
+    // first, and the recent file.
+    const auto dialog = nlohmann::json::parse(read_text(dir.file(s.name + "_dialog.json")));
+    SCOPED_TRACE(s.name + " dialog");
+    check_labels(s, dialog);
+    EXPECT_TRUE(has_label(dialog, "Open", "cube.obj"));
+    EXPECT_TRUE(has_label(dialog, "Open", "two_cubes.obj"));
+    EXPECT_TRUE(has_label(dialog, "Open", "Recent files"));
+    EXPECT_GT(panel_box(dialog, "Open").x1, 0);
     EXPECT_GT(status_fps(layouts.back()), 0) << s.name;
     const Png shot = load_png(dir.file(s.name + ".png"));
     EXPECT_EQ(shot.width, s.width);

@@ -21,11 +21,13 @@ inline bool have_xvfb_run() {
 
 /// Runs the modeler under a fresh virtual X server; returns its exit status. The server number
 /// search starts at a number from the process id, so tests run in parallel (ctest -j) do not
-/// race for the same display (`xvfb-run -a` alone can).
+/// race for the same display (`xvfb-run -a` alone can). `environment`: "NAME=value ..." for the
+/// modeler's environment.
 inline int run_modeler(const std::string& args, const std::string& log,
-                       const std::string& screen = "1280x1024x24") {
+                       const std::string& screen = "1280x1024x24",
+                       const std::string& environment = "") {
   const std::string server = std::to_string(100 + ::getpid() % 800);
-  const std::string command = "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n " + server +
+  const std::string command = environment + " LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n " + server +
                               " -s '-screen 0 " + screen + "' " + std::string(STITCH_MODELER) +
                               " " + args + " > '" + log + "' 2>&1";
   const int status = std::system(command.c_str());
