@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -173,7 +174,9 @@ int main(int argc, char** argv) {
   glfwGetWindowContentScale(window, &screen_scale, &unused);
   const float scale = o.font_scale * std::max(screen_scale, 1.0f);
   ImFontConfig font;
-  font.SizePixels = 13.0f * scale;  // ImGui's default font is drawn for 13 pixels
+  // ImGui's default font is drawn for 13 pixels; whole pixels keep the layout's sizes whole
+  // (a fraction of a pixel too much content gives a panel a scroll bar).
+  font.SizePixels = std::round(13.0f * scale);
   ImGui::GetIO().Fonts->AddFontDefault(&font);
   ImGui::GetStyle().ScaleAllSizes(scale);
   o.font_scale = scale;
