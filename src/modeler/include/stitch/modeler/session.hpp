@@ -23,8 +23,9 @@
 //   export PATH                      the smooth surface as shown (method, resolution, K-gon
 //                                    controls): .obj .ply .off .stl .glb .gltf, or .json for the
 //                                    Bézier patches
-// (paths run to the end of the line, so they may contain blanks). The application adds
-// `ui on|off` (show or hide its panels), the one line about the window rather than the session.
+// (paths run to the end of the line, so they may contain blanks). The application adds the
+// lines about its window rather than the session (`ui on|off`, `dialog ...`, `layout PATH`,
+// apps/modeler/commands.cpp), through ScriptHooks::run_line.
 #pragma once
 
 #include <functional>
