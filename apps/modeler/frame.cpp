@@ -69,9 +69,8 @@ void render_frame(App& app, bool interactive) {
   else
     app.layout.viewport = whole_window();
   // Framing (`frame all`, the views) fits the model to the area it is drawn in.
-  const ScreenRect& v = app.layout.viewport;
-  const bool split = app.session.display.split.has_value();
-  app.session.viewport_aspect = (split ? v.width() / 2 : v.width()) / std::max(v.height(), 1.0f);
+  app.session.viewport_width = app.layout.viewport.width();
+  app.session.viewport_height = app.layout.viewport.height();
   file_dialogs(app);
   recover_dialog(app);
   ImGui::Render();

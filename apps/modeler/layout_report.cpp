@@ -48,6 +48,8 @@ void write_layout_report(const App& app, const std::string& path) {
   j["window"] = {w, h};
   j["font_scale"] = l.font_scale;
   j["viewport"] = box(l.viewport);
+  j["views"] = nlohmann::json::array({box(view_rect(app, 0))});
+  if (app.session.display.split) j["views"].push_back(box(view_rect(app, 1)));
   j["panels"] = nlohmann::json::array();
   for (const DrawnPanel& p : l.panels)
     j["panels"].push_back({{"name", p.name}, {"box", box(p.box)}});

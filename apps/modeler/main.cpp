@@ -75,7 +75,7 @@ int run(GLFWwindow* window, const Options& o) {
   // Two frames lay the panels out (ImGui sizes new windows in the first), so that the document
   // is framed in the area they leave.
   for (int i = 0; i < 2; ++i) render_frame(app, false);
-  app.session.view.set_standard(View::iso, app.session.mesh_bounds(), app.session.viewport_aspect);
+  app.session.view.set_standard(View::iso, app.session.mesh_bounds(), app.session.view_aspect());
   open_document(app, o);
   after_change(app, true);
   // A file opened by hand joins the recent files (not in a script or a --exit run).

@@ -224,16 +224,21 @@ TEST(ModelerSession, FramingFitsANarrowViewport) {
   // A viewport half as wide as high: the horizontal angle is the narrower one, so the model's
   // sphere must fit in it (tolerance 1e-9 on exact trigonometry).
   Session s(make_cube());
-  s.viewport_aspect = 0.5;
+  s.viewport_width = 0.5;
   ASSERT_FALSE(run_script(s, {"frame all"}, {}));
   const double half_y = s.view.fov_y_deg * M_PI / 360.0;
   const double half_x = std::atan(std::tan(half_y) * 0.5);
   EXPECT_GE(s.view.distance * std::sin(half_x) + 1e-9, s.mesh_bounds().radius());
-  const double wide = s.view.distance;
-  s.viewport_aspect = 2.0;  // wide: framed by the vertical angle, nearer
+  const double narrow = s.view.distance;
+  s.viewport_width = 2.0;  // wide: framed by the vertical angle, nearer
   ASSERT_FALSE(run_script(s, {"frame all"}, {}));
-  EXPECT_LT(s.view.distance, wide);
+  EXPECT_LT(s.view.distance, narrow);
   EXPECT_GE(s.view.distance * std::sin(half_y) + 1e-9, s.mesh_bounds().radius());
+  // Split, each half of the 1 x 1 viewport is 0.5 wide: framed as the narrow viewport was
+  // (the same computation: exactly equal).
+  s.viewport_width = 1.0;
+  ASSERT_FALSE(run_script(s, {"split asc", "frame all"}, {}));
+  EXPECT_EQ(s.view.distance, narrow);
 }
 
 }  // namespace

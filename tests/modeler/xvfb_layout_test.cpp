@@ -28,18 +28,20 @@ struct Setting {
   int width = 0, height = 0;
   double font_scale = 1.0;
   std::string name;
+  bool split = false;  ///< frame all in the split view: each half is framed
 };
 
 /// Runs the modeler on two cubes side by side (a wide model) with corners selected (long
 /// labels), frames them in the front view and writes the layout and a screenshot.
 nlohmann::json layout_of(const Setting& s, const stitch::testing::TempFolder& dir) {
   const std::string script = dir.write(
-      s.name + ".txt", "open " + test::example_path("two_cubes.obj") +
-                           "\nselect corner 3@1\nselect corner 9@6\nview front\n"
-                           "frame all\nscreenshot " +
-                           dir.file(s.name + ".png") + "\nlayout " + dir.file(s.name + ".json") +
-                           "\ndialog open " + test::example_path("") + "\nlayout " +
-                           dir.file(s.name + "_dialog.json") + "\nquit\n");
+      s.name + ".txt",
+      "open " + test::example_path("two_cubes.obj") + "\nselect corner 3@1\nselect corner 9@6\n" +
+          (s.split ? "split asc\n" : "") +
+          "view front\n"
+          "frame all\nscreenshot " +
+          dir.file(s.name + ".png") + "\nlayout " + dir.file(s.name + ".json") + "\ndialog open " +
+          test::example_path("") + "\nlayout " + dir.file(s.name + "_dialog.json") + "\nquit\n");
   const std::string log = dir.file(s.name + ".log");
   // A screen larger than the window, so that the window is not cut by it.
   const std::string screen =
@@ -101,8 +103,9 @@ void check_layout(const Setting& s, const nlohmann::json& j) {
   EXPECT_TRUE(has_label(j, "Edit", "Insert edge"));
   std::vector<Box> panels;
   for (const auto& p : j["panels"]) panels.push_back(box_of(p["box"]));
-  // The model, framed, inside the 3D view and clear of every panel.
-  const Box view = box_of(j["viewport"]);
+  // The model, framed, inside the (left) view and clear of every panel.
+  ASSERT_EQ(j["views"].size(), s.split ? 2u : 1u);
+  const Box view = box_of(j["views"][0]);
   ASSERT_FALSE(j["model_box"].is_null());
   const Box model = box_of(j["model_box"]);
   EXPECT_GE(model.x0, view.x0 - kPixel);
@@ -131,8 +134,10 @@ TEST(ModelerXvfbLayout, PanelsFitAndFrameAllFramesBesideThem) {
   if (!have_xvfb_run())
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
   stitch::testing::TempFolder dir;
-  const Setting settings[] = {
-      {1280, 720, 1.0, "hd"}, {1920, 1080, 1.0, "full_hd"}, {1280, 720, 1.5, "hd_font_1.5"}};
+  const Setting settings[] = {{1280, 720, 1.0, "hd"},
+                              {1920, 1080, 1.0, "full_hd"},
+                              {1280, 720, 1.5, "hd_font_1.5"},
+                              {1280, 720, 1.0, "hd_split", true}};
   std::vector<nlohmann::json> layouts;
   for (const Setting& s : settings) {
     // A recent file for the Open dialog to list.

@@ -52,9 +52,11 @@ struct Session {
   UpdateStats last_update;
   /// Set when the last line could not show its method (cc refused the mesh), else empty.
   std::string warning;
-  /// Width / height of the area the model is drawn in (the application keeps it current), so
-  /// that framing fits the model between the panels.
-  double viewport_aspect = 1.0;
+  /// The size of the area the model is drawn in (the application keeps it current), so that
+  /// framing fits the model between the panels.
+  double viewport_width = 1.0, viewport_height = 1.0;
+  /// Width / height of one view: the viewport, or half of it in a split view.
+  [[nodiscard]] double view_aspect() const;
 
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
