@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string_view>
 
 #include "arrays.hpp"
@@ -83,9 +84,9 @@ std::vector<std::string> edit(MeshHandle& self, const std::vector<std::string>& 
         OperationReport r;
         try {
           r = apply_operation(*edited, line);
-        } catch (const MeshError& e) {
-          throw MeshError(fmt::format("operation {} ('{}'): {} (the mesh is unchanged)", number,
-                                      line, e.what()));
+        } catch (const Error& e) {
+          throw_with_message(e, fmt::format("operation {} ('{}'): {} (the mesh is unchanged)",
+                                            number, line, e.what()));
         }
         if (!r.what.empty()) summaries.push_back(r.summary(line.substr(0, line.find(" #"))));
       }
@@ -188,6 +189,20 @@ void bind_mesh(py::module_& m) {
           "the mesh as it stands (removed elements leave gaps), afterwards the mesh is compacted. "
           "All or nothing: when an operation is refused the mesh is unchanged. Returns one "
           "summary line per operation.")
+      .def(
+          "refusal",
+          [](const MeshHandle& h, const std::string& line) -> std::optional<std::string> {
+            // Numbers as in edit(): the mesh as it stands. A line that does not parse raises.
+            const std::optional<Operation> op = parse_operation(*h.mesh, line);
+            if (!op) return std::nullopt;
+            const Verdict v = can_apply(*h.mesh, *op);
+            if (v) return std::nullopt;
+            return v.refusal();
+          },
+          py::arg("operation"),
+          "Why edit(operation) would be refused, or None when it applies, without changing the "
+          "mesh (the operator's own check; a front end enables its buttons from it). A line "
+          "that is not a valid operation raises stitch.UsageError.")
       .def(
           "write",
           [](const MeshHandle& h, const std::string& path) {

@@ -57,8 +57,9 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, do
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
   // The command line's range; and SurfaceMesh numbers its samples with int, so their count
   // (at most (resolution + 1)^2 per patch) must fit one.
-  if (resolution < 1 || resolution > 1024)
-    throw py::value_error(fmt::format("resolution must be 1 to 1024, not {}", resolution));
+  if (resolution < 1 || resolution > limits::max_resolution)
+    throw py::value_error(
+        fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
   const double samples =
       static_cast<double>(s.mesh->num_halfedges()) * (resolution + 1) * (resolution + 1);
   if (samples > INT_MAX)

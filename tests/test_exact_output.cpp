@@ -110,10 +110,10 @@ TEST(BezierPatches, TighterToleranceGoesDeeperAndAscNeedsNoSplits) {
 TEST(BezierPatches, RefusesCatmullClarkAndToleranceNotAboveZero) {
   const HalfedgeMesh mesh = test::tetrahedron_mesh();
   const Surface mdc(mesh, Method::mdc);
-  EXPECT_THROW(bezier_patches(mesh, Surface(mesh, Method::cc)), std::invalid_argument);
+  EXPECT_THROW(bezier_patches(mesh, Surface(mesh, Method::cc)), UsageError);
   for (double bad : {0.0, -1e-6, std::nan("")}) {
-    EXPECT_THROW(bezier_patches(mesh, mdc, {bad, 0.1}), std::invalid_argument);
-    EXPECT_THROW(bezier_patches(mesh, mdc, {1e-6, bad}), std::invalid_argument);
+    EXPECT_THROW(bezier_patches(mesh, mdc, {bad, 0.1}), UsageError);
+    EXPECT_THROW(bezier_patches(mesh, mdc, {1e-6, bad}), UsageError);
   }
   // Beyond what double precision reaches, the depth cap refuses instead of looping.
   EXPECT_THROW(bezier_patches(mesh, mdc, {1e-30, 0.1, 20}), MeshError);

@@ -56,9 +56,13 @@ std::set<int> indices(const std::vector<Corner>& corners) {
   return out;
 }
 
-TEST(LocalCheck, TheHalfTwistedTubeFoldsWhereTheWholeCheckSaysSo) {
+// A bent tunnel (bottom face to front face) folds (docs/method.md, "Twisted tubes": bent tunnels
+// are not modelled); the cube's half twist, which these tests used before, no longer does.
+constexpr const char* kFoldingEdit = "insert-edge 3@1 5@3";
+
+TEST(LocalCheck, TheBentTunnelFoldsWhereTheWholeCheckSaysSo) {
   HalfedgeMesh mesh = make_cube();
-  const std::vector<Corner> changed = edit(mesh, "insert-edge 1@1 7@2");
+  const std::vector<Corner> changed = edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
   const LocalCheckReport local = check_patches(mesh, surface, changed);
   EXPECT_FALSE(local.clean());
@@ -72,9 +76,9 @@ TEST(LocalCheck, TheHalfTwistedTubeFoldsWhereTheWholeCheckSaysSo) {
   EXPECT_EQ(local.folds, whole.report.folds);
   EXPECT_EQ(local.self_intersections, whole.report.self_intersections);
   EXPECT_EQ(indices(local.problem_corners), whole.problem_corners);
-  // The folds lie along the new edge, at both of its ends: corners of vertices 1 and 7.
+  // The folds lie on the merged face's patches.
   for (const std::string& name : corner_names(mesh, local.problem_corners))
-    EXPECT_TRUE(name.rfind("1@1", 0) == 0 || name.rfind("7@1", 0) == 0) << name;
+    EXPECT_NE(name.find("@1"), std::string::npos) << name;
 }
 
 TEST(LocalCheck, TheStraightTubeIsClean) {
@@ -90,12 +94,12 @@ TEST(LocalCheck, TheStraightTubeIsClean) {
 }
 
 TEST(LocalCheck, FindsAFoldOnlyWhereItsPatchesAreInFocus) {
-  // The twisted tube again, but only the patches far from the new edge in focus: the corners of
-  // the side faces at vertices 3 and 4 (bottom) do not touch the folded patches' triangles.
+  // The bent tunnel again, but only the patches far from it in focus: the corners of the top
+  // face at vertices 7 and 8 do not touch the folded patches' triangles.
   HalfedgeMesh mesh = make_cube();
-  edit(mesh, "insert-edge 1@1 7@2");
+  edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
-  const std::vector<Corner> far = {parse_corner(mesh, "3@5"), parse_corner(mesh, "4@5")};
+  const std::vector<Corner> far = {parse_corner(mesh, "7@2"), parse_corner(mesh, "8@2")};
   const LocalCheckReport r = check_patches(mesh, surface, far);
   EXPECT_EQ(r.changed_patches, 2);
   EXPECT_GT(r.patches, 2);
@@ -203,20 +207,20 @@ TEST(LocalCheck, CornerNamesNumberAsTheFileDoes) {
   EXPECT_EQ(corner_names(mesh, {twice}, true), std::vector<std::string>{"1@1#2"});
 }
 
-TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistAndNotTheStraightTube) {
+TEST(LocalCheckCli, EditCheckWarnsAboutTheBentTunnelAndNotTheStraightTube) {
   testing::TempFolder dir;
   write_mesh(dir.file("cube.obj"), make_cube());
-  auto r =
-      testing::stitch_cli(dir, "edit cube.obj --op \"insert-edge 1@1 7@2\" -o twisted.obj --check");
+  auto r = testing::stitch_cli(
+      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("stitch: warning: the surface folds at patches "), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("1@1#1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("3@1#1"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("see stitch check-surface"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("twisted.obj")));
 
-  r = testing::stitch_cli(dir,
-                          "edit cube.obj --op \"insert-edge 1@1 7@2\" -o strict.obj --strict -q");
+  r = testing::stitch_cli(
+      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("folds"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("strict.obj")));
@@ -230,13 +234,15 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistAndNotTheStraightTube) {
       << r.out;
 
   // Without --check nothing is checked.
-  r = testing::stitch_cli(dir, "edit cube.obj --op \"insert-edge 1@1 7@2\" -o plain.obj");
+  r = testing::stitch_cli(dir,
+                          "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o plain.obj");
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.err.empty()) << r.err;
 
   // The patch numbers are those of the written file read back: the whole check of its surface
   // finds the folds on those patches.
-  r = testing::stitch_cli(dir, "edit cube.obj --op \"insert-edge 1@1 7@2\" -o twisted.obj --check");
+  r = testing::stitch_cli(
+      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   const size_t from = r.err.find("patches ") + 8, to = r.err.find(" (corners");
   ASSERT_LT(from, to) << r.err;
   std::set<int> numbers;

@@ -75,6 +75,39 @@ TEST(PaperExamples, CubeWithAHandleFromConnectFacesIsCleanAndOpen) {
   EXPECT_TRUE(segment_hits(tris, Vec3(0, 0, -3), Vec3(0, 0, 3)).empty());
 }
 
+TEST(PaperExamples, HandlesWithSegmentsOnAnUndentedCubeAreClean) {
+  // connect-faces with rings along the path (docs/editing.md): through the cube between opposite
+  // faces, with the least twist and every other, and bent between faces that share an edge
+  // (twist 0 there would join vertex 1 to itself).
+  struct Case {
+    const char* op;
+    Vec3 axis;  ///< through the two faces' centres, which must pass; zero for a bent tunnel
+  };
+  const Vec3 z = Vec3::UnitZ(), y = Vec3::UnitY(), bent = Vec3::Zero();
+  for (const Case& c : {Case{"connect-faces 1 2 auto 3", z}, Case{"connect-faces 1 2 1 3", z},
+                        Case{"connect-faces 1 2 2 3", z}, Case{"connect-faces 1 2 3 3", z},
+                        Case{"connect-faces 1 2 auto 2", z}, Case{"connect-faces 1 2 auto 6", z},
+                        Case{"connect-faces 3 5 auto 3", y}, Case{"connect-faces 1 3 auto 3", bent},
+                        Case{"connect-faces 1 3 2 3", bent}, Case{"connect-faces 1 3 3 4", bent}}) {
+    SCOPED_TRACE(c.op);
+    HalfedgeMesh mesh = make_cube();
+    apply_operation(mesh, c.op);
+    mesh.garbage_collection();
+    ASSERT_EQ(topology_stats(mesh).genus, 1);
+    const TriangleSoup tris = smooth_triangles(mesh);
+    const SurfaceCheckReport r = check_surface(tris);
+    EXPECT_TRUE(r.clean()) << r.describe(tris);
+    if (c.axis != bent) {
+      EXPECT_TRUE(segment_hits(tris, -3 * c.axis, 3 * c.axis).empty());
+    }
+  }
+  // One segment on undented faces puts every tube quad on a side face, which folds: that is
+  // what the rings are for.
+  HalfedgeMesh one_segment = make_cube();
+  apply_operation(one_segment, "connect-faces 1 2");
+  EXPECT_FALSE(check_surface(smooth_triangles(one_segment)).clean());
+}
+
 TEST(PaperExamples, TetrahedronIsClean) {
   const TriangleSoup tris = smooth_triangles(make_tetrahedron());
   const SurfaceCheckReport r = check_surface(tris);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -321,6 +322,76 @@ TEST(TopologyConnectFaces, Refusals) {
   }
   EXPECT_EQ(c, make_cube());
   EXPECT_EQ(m, before);
+}
+
+TEST(TopologyConnectFaces, LeastTwistJoinsTheCornersStraightAcross) {
+  const HalfedgeMesh cube = make_cube();
+  // Opposite faces: every joined pair differs along the line between the faces only. Face 3
+  // (1 2 6 5) and face 5 (3 4 8 7) need twist 1 for that; bottom and top twist 0.
+  for (const auto& [a, b, expected] :
+       {std::array{1, 2, 0}, std::array{3, 5, 1}, std::array{6, 4, 1}}) {
+    const Face f(a - 1), g(b - 1);
+    const int twist = least_twist(cube, f, g);
+    EXPECT_EQ(twist, expected) << a << " " << b;
+    const auto lf = cube.face_loop(f), lg = cube.face_loop(g);
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 d =
+          cube.position(cube.origin(lg[(twist - i + 4) % 4])) - cube.position(cube.origin(lf[i]));
+      EXPECT_NEAR(d.norm(), 2.0, 1e-12) << a << " " << b << " corner " << i;
+    }
+  }
+  // Faces sharing an edge: the twists that would join a corner to itself are skipped.
+  const int twist = least_twist(cube, Face(0), Face(2));
+  EXPECT_NE(twist, 0);
+  HalfedgeMesh m = cube;
+  EXPECT_NO_THROW(connect_faces(m, Face(0), Face(2), HandleOptions{}));
+}
+
+TEST(TopologyConnectFaces, OperationChoosesTheTwistUnlessGiven) {
+  HalfedgeMesh chosen = make_cube(), given = make_cube();
+  const OperationReport r = apply_operation(chosen, "connect-faces 3 5");
+  EXPECT_NE(r.what.find("(twist 1)"), std::string::npos) << r.what;
+  apply_operation(given, "connect-faces 3 5 1");
+  EXPECT_EQ(chosen, given);
+  HalfedgeMesh zero = make_cube();
+  const OperationReport z = apply_operation(zero, "connect-faces 3 5 0");
+  EXPECT_NE(z.what.find("(twist 0)"), std::string::npos) << z.what;
+  EXPECT_FALSE(zero == given);
+  HalfedgeMesh automatic = make_cube();
+  apply_operation(automatic, "connect-faces 3 5 auto");
+  EXPECT_EQ(automatic, given);
+}
+
+TEST(TopologyConnectFaces, SegmentsAddRingsAlongThePath) {
+  for (int segments : {1, 2, 3, 5}) {
+    HalfedgeMesh m = make_cube();
+    apply_operation(m, fmt::format("connect-faces 1 2 auto {}", segments));
+    // Each ring adds k = 4 vertices, 8 edges and 4 faces to connect-faces's E + 4, F + 2.
+    const int rings = segments - 1;
+    expect_counts(m, {8 + 4 * rings, 16 + 8 * rings, 8 + 4 * rings, 1, 1});
+    // The rings lie inside the cube, each at its height along the straight path from the bottom
+    // face's centre to the top's, shrunk by 1 - (1 - 0.5) 4t(1-t) about it.
+    for (int j = 1; j <= rings; ++j) {
+      const double t = static_cast<double>(j) / segments;
+      for (int i = 0; i < 4; ++i) {
+        const Vec3 p = m.position(Vertex(8 + 4 * (j - 1) + i));
+        EXPECT_NEAR(p.z(), -1 + 2 * t, 1e-12);
+        EXPECT_NEAR(std::abs(p.x()), 1 - 0.5 * 4 * t * (1 - t), 1e-12);
+        EXPECT_NEAR(std::abs(p.y()), 1 - 0.5 * 4 * t * (1 - t), 1e-12);
+      }
+    }
+  }
+}
+
+TEST(TopologyConnectFaces, HandleRefusals) {
+  for (const char* op :
+       {"connect-faces 1 2 auto 0", "connect-faces 1 2 auto 1001", "connect-faces 1 2 auto 3 0",
+        "connect-faces 1 2 auto 3 -1", "connect-faces 1 2 auto 3 nan", "connect-faces 1 2 x 3",
+        "connect-faces 1 2 0 3 0.5 1"}) {
+    HalfedgeMesh m = make_cube();
+    EXPECT_THROW(apply_operation(m, op), MeshError) << op;
+    EXPECT_EQ(m, make_cube()) << op;
+  }
 }
 
 TEST(TopologyDeleteFace, CubeTopBecomesAPillow) {

@@ -36,7 +36,7 @@ bool run_window_line(App& app, std::string_view line) {
   if (!(in >> word)) return false;
   if (word == "ui") {
     const std::string value = argument_of(line);
-    if (value != "on" && value != "off") throw MeshError("usage: ui on|off");
+    if (value != "on" && value != "off") throw UsageError("usage: ui on|off");
     app.layout.show_ui = value == "on";
     return true;
   }
@@ -50,13 +50,13 @@ bool run_window_line(App& app, std::string_view line) {
       close_file_dialog(app);
       return true;
     }
-    if (action.empty()) throw MeshError("usage: dialog open|append|save|export [FOLDER] | close");
+    if (action.empty()) throw UsageError("usage: dialog open|append|save|export [FOLDER] | close");
     request_file_dialog(app, parse_file_action(action), rest);
     return true;
   }
   if (word == "layout") {
     const std::string path = argument_of(line);
-    if (path.empty()) throw MeshError("usage: layout PATH (the screen layout as JSON)");
+    if (path.empty()) throw UsageError("usage: layout PATH (the screen layout as JSON)");
     // Two frames: ImGui sizes new windows in the first.
     for (int i = 0; i < 2; ++i) render_frame(app, false);
     write_layout_report(app, path);

@@ -234,7 +234,7 @@ FileAction parse_file_action(const std::string& name) {
   if (name == "append") return FileAction::append;
   if (name == "save") return FileAction::save_as;
   if (name == "export") return FileAction::export_surface;
-  throw MeshError("unknown file dialog '" + name + "' (open, append, save or export)");
+  throw UsageError("unknown file dialog '" + name + "' (open, append, save or export)");
 }
 
 void request_file_dialog(App& app, FileAction action, fs::path folder) {

@@ -41,7 +41,7 @@ struct FileDialogs {
 void request_file_dialog(App& app, FileAction action, std::filesystem::path folder = {});
 /// Closes the dialog, if one is shown.
 void close_file_dialog(App& app);
-/// Parses "open", "append", "save", "export"; throws MeshError otherwise.
+/// Parses "open", "append", "save", "export"; throws UsageError otherwise.
 FileAction parse_file_action(const std::string& name);
 /// Draws the dialog, if any; begun after every other window, so that it is on top.
 void file_dialogs(App& app);

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "stitch/analysis/continuity.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::cli {
 
@@ -71,7 +72,7 @@ void run_analyze(const AnalyzeArgs& a) {
     std::optional<Surface> surface;
     try {
       surface.emplace(mesh, m, to_kgon_options(a.kgon));
-    } catch (const MeshError& e) {
+    } catch (const Error& e) {
       // With --method all, a method that cannot take this mesh is reported, not fatal.
       if (methods.size() == 1) throw;
       stage.end();
@@ -118,7 +119,7 @@ void add_analyze_command(CLI::App& app) {
                 "print JSON (includes the jump against distance from "
                 "extraordinary points)");
   cmd->add_option("--samples", args->samples, "evenly spaced samples per patch side")
-      ->check(CLI::Range(1, 1000))
+      ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
   add_kgon_options(cmd, args->kgon, &args->in);
   add_progress_option(cmd, args->progress);

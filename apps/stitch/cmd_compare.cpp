@@ -21,6 +21,7 @@
 #include "stitch/render/image.hpp"
 #include "stitch/render/options.hpp"
 #include "stitch/render/scene.hpp"
+#include "stitch/mesh/limits.hpp"
 
 extern char** environ;
 
@@ -230,7 +231,7 @@ void run_compare(const CompareArgs& a) {
   const View view = parse_view(a.view);
   const fs::path dir(a.out);
   if (fs::exists(dir) && !fs::is_directory(dir)) {
-    throw MeshError(fmt::format("the output '{}' exists and is not a directory", a.out));
+    throw UsageError(fmt::format("the output '{}' exists and is not a directory", a.out));
   }
 
   StageReporter stage(a.progress);
@@ -257,7 +258,7 @@ void run_compare(const CompareArgs& a) {
     std::optional<Surface> surface;
     try {
       surface.emplace(mesh, m, to_kgon_options(a.kgon));
-    } catch (const MeshError& e) {
+    } catch (const Error& e) {
       // Should OpenSubdiv reject the mesh: show the other methods and say why this one is
       // missing.
       stage.end();
@@ -293,7 +294,7 @@ void run_compare(const CompareArgs& a) {
     stage.end();
   }
   if (shown.empty()) {
-    throw MeshError("no method can handle " + a.in.path + ": " + refusals.front());
+    throw InputError("no method can handle " + a.in.path + ": " + refusals.front());
   }
   const int gap = std::max(4, size.width / 60);
   write_png((dir / "zebra_whole.png").string(), side_by_side(whole, gap));
@@ -324,7 +325,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--view", args->view, "front, back, left, right, top, bottom or iso")
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "segments per patch side")
-      ->check(CLI::Range(1, 256))
+      ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
   cmd->add_option("--stripes", args->stripes, "zebra stripes around the full circle")
       ->check(CLI::Range(2, 512))

@@ -38,9 +38,8 @@ struct Touched {
 
 bool is_remeshing(std::string_view text) {
   const auto words = split_words(text.substr(0, text.find(" #")));
-  if (words.empty()) return false;
-  return words[0] == "doo-sabin" || words[0] == "vertex-insertion" || words[0] == "catmull-clark" ||
-         words[0] == "dual";
+  const OperationInfo* info = words.empty() ? nullptr : find_operation(words[0]);
+  return info && info->renumbers;
 }
 
 /// Warns when the surface folds or meets itself near what the operations changed; returns
@@ -79,7 +78,7 @@ bool check_edited_surface(const EditArgs& a, const HalfedgeMesh& mesh, const Tou
       names[i] = std::move(numbered[i].second);
     }
     patches = fmt::format("patches {} ", fmt::join(numbers, ", "));
-  } catch (const MeshError&) {  // not expected: the mesh passed validate()
+  } catch (const Error&) {  // not expected: the mesh passed validate()
   }
   const char* what = r.folds > 0 && r.self_intersections > 0 ? "folds and intersects itself"
                      : r.folds > 0                           ? "folds"
@@ -143,8 +142,8 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
     try {
       if (journal) mesh.begin_journal();
       r = apply_operation(mesh, op.text);
-    } catch (const MeshError& e) {
-      throw MeshError(fmt::format("{}: {} (nothing written)", op.where, e.what()));
+    } catch (const Error& e) {
+      throw_with_message(e, fmt::format("{}: {} (nothing written)", op.where, e.what()));
     }
     if (journal) {
       // Numbers stay valid for the whole run (until a remeshing), so the lists add up.
@@ -179,13 +178,13 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
 
 void add_edit_command(CLI::App& app) {
   auto args = std::make_shared<EditArgs>();
+  std::string synopses;
+  for (const OperationInfo& info : operation_table())
+    synopses += (synopses.empty() ? "" : ", ") + std::string(info.synopsis);
   auto* cmd = app.add_subcommand(
-      "edit",
-      "apply topology operations (insert-edge V@F V@F, delete-edge V W[@F], subdivide-edge V W, "
-      "collapse-edge V W, extrude-face F DIST [SCALE], connect-faces F G [TWIST], delete-face F, "
-      "open-face F, fill-hole F, crease V W SHARPNESS, corner V SHARPNESS, doo-sabin, "
-      "vertex-insertion, catmull-clark, dual); vertices and faces are numbered from 1 "
-      "in file order; see docs/editing.md");
+      "edit", fmt::format("apply topology operations ({}); vertices and faces are numbered from "
+                          "1 in file order; see docs/editing.md",
+                          synopses));
   cmd->add_option("IN", args->in, "input mesh (.obj, .off, .ply)")->required();
   cmd->add_option("-o,--output", args->out, "output mesh, compacted (renumbered without gaps)")
       ->required();
@@ -205,7 +204,7 @@ void add_edit_command(CLI::App& app) {
                 "is written all the same)");
   cmd->add_option("--check-resolution", args->check_resolution,
                   "segments per patch side for --check")
-      ->check(CLI::Range(1, 64))
+      ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
   cmd->callback([args, cmd] {
     args->check = args->check || args->strict;

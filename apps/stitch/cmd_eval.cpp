@@ -33,7 +33,7 @@ double parameter(std::string_view token, const std::string& where) {
   double x = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), x);
   if (ec != std::errc() || end != token.data() + token.size() || !(x >= 0 && x <= 1))
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: '{}' is not a parameter from 0 to 1", where, limits::quoted(token)));
   return x;
 }
@@ -63,30 +63,30 @@ std::vector<Query> read_queries(const std::string& path, const HalfedgeMesh& mes
       const auto [p, ec] = std::from_chars(words[0].data(), words[0].data() + words[0].size(), h);
       if (ec != std::errc() || p != words[0].data() + words[0].size() || h < 0 ||
           h >= mesh.halfedge_capacity() || mesh.is_deleted(Halfedge(h)))
-        throw MeshError(fmt::format("{}: '{}' is not a patch number (0 to {})", where,
+        throw InputError(fmt::format("{}: '{}' is not a patch number (0 to {})", where,
                                     limits::quoted(words[0]), mesh.halfedge_capacity() - 1));
       q.corner = Corner(h);
     } else if (words.size() == 4) {
       try {
         q.corner = parse_corner(mesh, fmt::format("{}@{}", words[1], words[0]));
-      } catch (const MeshError& e) {
-        throw MeshError(fmt::format("{}: {}", where, e.what()));
+      } catch (const Error& e) {
+        throw_with_message(e, fmt::format("{}: {}", where, e.what()));
       }
     } else {
-      throw MeshError(fmt::format("{}: expected 'patch u v' or 'face vertex u v', got {} words",
+      throw InputError(fmt::format("{}: expected 'patch u v' or 'face vertex u v', got {} words",
                                   where, words.size()));
     }
     q.u = parameter(words[words.size() - 2], where);
     q.v = parameter(words[words.size() - 1], where);
     queries.push_back(q);
   }
-  if (queries.empty()) throw MeshError(fmt::format("{}: no points to evaluate", path));
+  if (queries.empty()) throw InputError(fmt::format("{}: no points to evaluate", path));
   return queries;
 }
 
 void run_eval(const EvalArgs& a) {
   if (a.format != "csv" && a.format != "json")
-    throw MeshError(
+    throw InputError(
         fmt::format("--format must be csv or json, not '{}'", limits::quoted(a.format)));
   const HalfedgeMesh mesh = load_input(a.in);
   const std::vector<Query> queries = read_queries(a.at, mesh);

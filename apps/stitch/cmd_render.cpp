@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "options.hpp"
+#include "stitch/error.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
@@ -42,7 +43,7 @@ struct RenderArgs {
 void run_render(const RenderArgs& a) {
   // Every option is checked before any work, so a bad one costs nothing and writes nothing.
   if (file_extension(a.out) != ".png") {
-    throw MeshError(fmt::format("the output '{}' must be a .png file", a.out));
+    throw UsageError(fmt::format("the output '{}' must be a .png file", a.out));
   }
   const ImageSize size = parse_image_size(a.size);
   RenderStyle style;
@@ -50,17 +51,17 @@ void run_render(const RenderArgs& a) {
   style.stripes = a.stripes;
   style.checks = a.checks;
   const bool checker = style.mode == ShadingMode::checker;
-  if (!a.uv.empty() && !checker) throw std::invalid_argument("--uv needs --mode checker");
+  if (!a.uv.empty() && !checker) throw UsageError("--uv needs --mode checker");
   const UvMode uv_mode = parse_uv_mode(a.uv.empty() ? "smooth" : a.uv);
   parse_overlays(a.show, style);
   style.draw_surface = a.draw != "none";
   const int camera_choices =
       (!a.view.empty() ? 1 : 0) + (!a.eye.empty() ? 1 : 0) + (a.focus_ev ? 1 : 0);
   if (camera_choices > 1) {
-    throw std::invalid_argument("choose one camera: --view, --eye/--target or --focus-ev");
+    throw UsageError("choose one camera: --view, --eye/--target or --focus-ev");
   }
   if (!a.target.empty() && a.eye.empty()) {
-    throw std::invalid_argument("--target needs --eye");
+    throw UsageError("--target needs --eye");
   }
   const View view = parse_view(a.view.empty() ? "iso" : a.view);
   const std::optional<Vec3> eye =
@@ -76,7 +77,7 @@ void run_render(const RenderArgs& a) {
   const HalfedgeMesh mesh = load_input(a.in, &report);
   stage.end();
   if (checker && report.corner_uvs.empty()) {
-    throw std::invalid_argument(
+    throw UsageError(
         fmt::format("--mode checker needs texture coordinates: {} has none", a.in.path));
   }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
@@ -151,7 +152,7 @@ void add_render_command(CLI::App& app) {
       ->check(finite_range(kMinZoom, kMaxZoom))
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "segments per patch side")
-      ->check(CLI::Range(1, 256))
+      ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
   cmd->add_option("--stripes", args->stripes,
                   "zebra stripes around the full circle of reflected directions, or isophote "

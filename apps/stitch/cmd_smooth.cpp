@@ -13,6 +13,7 @@
 #include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch::cli {
 
@@ -53,7 +54,7 @@ void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh) {
       a.max_memory_gb > 0 ? static_cast<std::int64_t>(a.max_memory_gb * 1e9) : available_memory();
   const std::int64_t need = smooth_memory_estimate(mesh, a.resolution, !a.unwelded, a.out);
   if (limit > 0 && need > limit)
-    throw MeshError(fmt::format(
+    throw UsageError(fmt::format(
         "smoothing {} ({} corners) at resolution {}{} needs about {:.2f} GB of memory, more than "
         "the {:.2f} GB {}; {}",
         a.in.path, static_cast<int>(mesh.patch_corners().size()), a.resolution,
@@ -105,15 +106,15 @@ void run_smooth(const SmoothArgs& a) {
   // Refuse a bad output name before any work, so nothing is computed for nothing.
   const std::string ext = file_extension(a.out);
   if (a.unwelded && ext != ".ply")
-    throw MeshError(
+    throw UsageError(
         fmt::format("--unwelded writes PLY (per-sample attributes); '{}' is not .ply", a.out));
   if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" &&
       ext != ".glb" && ext != ".gltf" && !is_exact_output(a.out))
-    throw MeshError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
+    throw UsageError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
                                 smooth_output_extensions()));
   check_exact_outputs(a.out, a.exact);
   if (a.adaptive && (a.unwelded || ext == ".glb" || ext == ".gltf"))
-    throw MeshError(fmt::format("--tolerance writes .obj, .ply, .off or .stl, not '{}'{}", a.out,
+    throw UsageError(fmt::format("--tolerance writes .obj, .ply, .off or .stl, not '{}'{}", a.out,
                                 a.unwelded ? " --unwelded" : ""));
 
   StageReporter stage(a.progress);
@@ -204,7 +205,7 @@ void add_smooth_command(CLI::App& app) {
   add_method_option(cmd, args->method, false, &args->in);
   CLI::Option* resolution =
       cmd->add_option("--resolution", args->resolution, "segments per patch side")
-          ->check(CLI::Range(1, 1024))
+          ->check(CLI::Range(1, limits::max_resolution))
           ->capture_default_str();
   cmd->add_flag("--unwelded", args->unwelded,
                 "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
@@ -238,7 +239,7 @@ void add_smooth_command(CLI::App& app) {
   cmd->callback([args, resolution, tolerance] {
     args->adaptive = tolerance->count() > 0 && !is_exact_output(args->out);
     if (args->adaptive && resolution->count() > 0)
-      throw MeshError("--tolerance and --resolution exclude each other for a mesh output");
+      throw UsageError("--tolerance and --resolution exclude each other for a mesh output");
     run_smooth(*args);
   });
 }

@@ -65,12 +65,12 @@ std::string smooth_output_extensions() {
 
 void check_exact_outputs(const std::string& out, const ExactOutputOptions& options) {
   if (!options.patches.empty() && file_extension(options.patches) != ".json")
-    throw MeshError(fmt::format("--patches writes JSON; '{}' is not .json", options.patches));
+    throw UsageError(fmt::format("--patches writes JSON; '{}' is not .json", options.patches));
   if (!is_cad(file_extension(out))) return;
 #if STITCH_WITH_CAD
   cad::check_units(options.units);
 #else
-  throw MeshError(fmt::format(
+  throw OutputError(fmt::format(
       "cannot write '{}': this stitch was built without OpenCASCADE (STITCH_BUILD_CAD=OFF)", out));
 #endif
 }

@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "commands.hpp"
-#include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -36,10 +36,10 @@ int main(int argc, char** argv) {
   } catch (const stitch::cli::ExitStatus& e) {
     if (e.what()[0] != '\0') fmt::print(stderr, "stitch: {}\n", e.what());
     return e.code();
-  } catch (const stitch::MeshError& e) {
-    fmt::print(stderr, "stitch: error: {}\n", e.what());
-    return 2;
-  } catch (const std::invalid_argument& e) {
+  } catch (const stitch::Error& e) {
+    // Every kind (InputError, TopologyError, UsageError, OutputError) is the user's to fix:
+    // status 2, as the README promises for bad input. 1 is kept for checks that found problems
+    // (edit --strict) and 3 for stitch's own failures.
     fmt::print(stderr, "stitch: error: {}\n", e.what());
     return 2;
   } catch (const std::exception& e) {

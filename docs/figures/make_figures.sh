@@ -90,6 +90,20 @@ run render $U -o $F/cube_uv_checker.png --size 400x400 --mode checker --checks 1
 run render $U -o $F/cube_uv_checker_linear.png --size 400x400 --mode checker --checks 16 --uv linear
 run render $U -o $F/cube_uv_input.png --size 400x400 --mode checker --checks 16 --draw input --show mesh
 
+# 12. Twisted and bent tunnels: one edge from vertex 1 of the bottom face to each corner of the
+#     top face (straight, a quarter turn either way, a half turn), seen from below; and a tunnel
+#     from the bottom face to the front face, by one inserted edge and by connect-faces with
+#     three segments.
+for t in "straight 5" "quarter 6" "quarter_back 8" "half 7"; do
+  set -- $t
+  run edit $C --op "insert-edge 1@1 $2@2" -o $F/twist_$1.obj
+  run render $F/twist_$1.obj -o $F/twist_$1.png --size 300x300 --eye 1,-1.5,-5 --resolution 16
+done
+run edit $C --op "insert-edge 3@1 5@3" -o $F/bent_insert_edge.obj
+run edit $C --op "connect-faces 1 3 auto 3" -o $F/bent_handle.obj
+run render $F/bent_insert_edge.obj -o $F/bent_insert_edge.png --size 400x400 --eye 2.5,-4,-3 --resolution 16
+run render $F/bent_handle.obj -o $F/bent_handle.png --size 400x400 --eye 2.5,-4,-3 --resolution 16 --show mesh
+
 if ((${#failed[@]})); then
   echo "make_figures.sh: these commands failed:" >&2
   printf '  %s\n' "${failed[@]}" >&2

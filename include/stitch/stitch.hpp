@@ -4,6 +4,9 @@
 // modeler library (<stitch/modeler/...>, stitch::modeler) are separate components.
 #pragma once
 
+// errors: stitch::Error and its kinds
+#include "stitch/error.hpp"
+
 // mesh: the half-edge mesh, building it from polygons with every check, file I/O
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
@@ -17,6 +20,7 @@
 #include "stitch/topology/delete_face.hpp"
 #include "stitch/topology/edge_ops.hpp"
 #include "stitch/topology/extrude.hpp"
+#include "stitch/topology/features.hpp"
 #include "stitch/topology/insert_edge.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"

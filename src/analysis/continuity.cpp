@@ -192,7 +192,7 @@ ContinuityReport analyze_continuity(const HalfedgeMesh& mesh, const Surface& sur
                 std::isfinite(feat.sector_normal_spread_deg);
   for (const auto& [t, jump] : rep.jump_by_distance) finite = finite && std::isfinite(jump);
   if (!finite)
-    throw MeshError(fmt::format("the continuity measures of the {} surface are not finite",
+    throw Error(fmt::format("the continuity measures of the {} surface are not finite",
                                 to_string(rep.method)));
   return rep;
 }

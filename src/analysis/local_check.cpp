@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "eval/patch_sampler.hpp"
+#include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
@@ -25,7 +26,7 @@ bool has_patch(const HalfedgeMesh& m, Corner c) {
 }
 
 // Grid indices get 14 bits each in a weld key, element numbers 32.
-constexpr int kMostResolution = (1 << 14) - 1;
+static_assert(limits::max_resolution < (1 << 14));
 
 /// What a grid sample lies on, so that every patch sharing it finds the same key (the rules of
 /// TessellationLayout::vertex, which numbers the welded tessellation the same way).
@@ -86,9 +87,7 @@ std::vector<Corner> patch_neighbourhood(const HalfedgeMesh& m, const std::vector
 LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>& changed,
                                const PatchGridSampler& sample, const LocalCheckOptions& options) {
   const int n = options.resolution;
-  if (n < 1 || n > kMostResolution)
-    throw std::invalid_argument(
-        fmt::format("check_patches: the resolution must be in 1..{}, not {}", kMostResolution, n));
+  limits::check_resolution(n, "check_patches: the resolution");
   std::vector<Corner> focus_corners;
   for (Corner c : changed)
     if (has_patch(m, c)) focus_corners.push_back(c);
@@ -156,7 +155,7 @@ std::vector<Corner> patches_touched(const HalfedgeMesh& m, const std::vector<Ver
                                     const std::vector<Face>& faces) {
   // Faces whose loops or corner positions changed: their K-gons and the K-gons of their
   // vertices, edges and the faces across (which read their normals) may change, and with them
-  // every net that reads one of those (the rule of the modeler's LiveSurface::update).
+  // every net that reads one of those (kgons_reading and nets_reading).
   std::vector<Face> moved;
   for (Edge e : edges) {
     if (e.idx >= m.edge_capacity() || m.is_deleted(e)) continue;
@@ -168,34 +167,7 @@ std::vector<Corner> patches_touched(const HalfedgeMesh& m, const std::vector<Ver
   }
   for (Face f : faces)
     if (f.idx < m.face_capacity() && !m.is_deleted(f)) moved.push_back(f);
-  sort_unique(moved);
-  std::vector<Face> kgon_faces = moved;
-  std::vector<Vertex> kgon_vertices;
-  std::vector<Edge> kgon_edges;
-  for (Face f : moved)
-    for (Halfedge h : m.face_loop(f)) {
-      kgon_vertices.push_back(m.origin(h));
-      kgon_edges.push_back(HalfedgeMesh::edge(h));
-      kgon_faces.push_back(m.face(HalfedgeMesh::twin(h)));
-    }
-  sort_unique(kgon_faces);
-  sort_unique(kgon_vertices);
-  sort_unique(kgon_edges);
-  // A net reads the K-gons of its face, its vertex, its edge and its previous edge.
-  std::vector<Corner> out;
-  for (Face f : kgon_faces)
-    for (Halfedge h : m.face_loop(f)) out.push_back(h);
-  for (Vertex v : kgon_vertices)
-    for (Halfedge h : m.vertex_fan(v)) out.push_back(h);
-  for (Edge e : kgon_edges)
-    for (int s = 0; s < 2; ++s) {
-      const Halfedge h = HalfedgeMesh::halfedge(e, s);
-      out.push_back(h);
-      out.push_back(m.next(h));
-    }
-  std::erase_if(out, [&](Corner c) { return m.is_hole(c); });
-  sort_unique(out);
-  return out;
+  return nets_reading(m, kgons_reading(m, std::move(moved)));
 }
 
 std::vector<std::string> corner_names(const HalfedgeMesh& m, const std::vector<Corner>& corners,

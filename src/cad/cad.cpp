@@ -63,7 +63,7 @@ constexpr std::array<Unit, 5> kUnits{{{"mm", "MM", 1.0},
 const Unit& find_unit(const std::string& name) {
   for (const Unit& u : kUnits)
     if (name == u.name) return u;
-  throw MeshError(fmt::format("unknown unit '{}' (known: {})", name, kCadUnits));
+  throw UsageError(fmt::format("unknown unit '{}' (known: {})", name, kCadUnits));
 }
 
 /// The patch as a B-spline surface of degree 3 x 3 with the knots 0,0,0,0,1,1,1,1: a Bézier
@@ -85,7 +85,7 @@ TopoDS_Face make_face(const BezierPatch& patch, double tolerance) {
       new Geom_BSplineSurface(poles, knots, knots, multiplicities, multiplicities, 3, 3);
   BRepBuilderAPI_MakeFace face(surface, tolerance);
   if (!face.IsDone())
-    throw MeshError(fmt::format("OpenCASCADE refused the patch of corner {}@{} (level {})",
+    throw Error(fmt::format("OpenCASCADE refused the patch of corner {}@{} (level {})",
                                 patch.vertex + 1, patch.face + 1, patch.level));
   return face.Face();
 }
@@ -94,7 +94,7 @@ TopoDS_Face make_face(const BezierPatch& patch, double tolerance) {
 void write_through(const std::string& path, const std::function<bool(const std::string&)>& write) {
   write_file_atomically_at(path, [&](const std::string& temporary) {
     if (!write(temporary))
-      throw MeshError(fmt::format("cannot write {}: OpenCASCADE's writer failed", path));
+      throw OutputError(fmt::format("cannot write {}: OpenCASCADE's writer failed", path));
   });
 }
 
@@ -155,7 +155,7 @@ TopoDS_Shape make_shape(const PatchSet& patches, const CadOptions& options, CadR
 CadReport write_cad(const std::string& path, const PatchSet& patches, const CadOptions& options) {
   const std::optional<CadFormat> format = cad_format(path);
   if (!format)
-    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
                                 file_extension(path), kCadExtensions));
   const Unit& unit = find_unit(options.units);
   CadReport report;
@@ -172,7 +172,7 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
     const IFSelect_ReturnStatus transferred = writer.Transfer(shape, STEPControl_AsIs);
     Interface_Static::SetCVal("write.step.unit", previous_unit.c_str());
     if (transferred != IFSelect_RetDone)
-      throw MeshError(
+      throw OutputError(
           fmt::format("cannot write {}: OpenCASCADE could not convert the shape", path));
     write_through(path, [&](const std::string& temporary) {
       return writer.Write(temporary.c_str()) == IFSelect_RetDone;
@@ -182,7 +182,7 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
     IGESControl_Writer writer(unit.occt, 1);  // 1: B-rep entities, which keep shells and solids
     writer.Model()->ChangeGlobalSection().SetCascadeUnit(unit.mm);
     if (!writer.AddShape(shape))
-      throw MeshError(
+      throw OutputError(
           fmt::format("cannot write {}: OpenCASCADE could not convert the shape", path));
     writer.ComputeModel();
     write_through(path, [&](const std::string& temporary) {
@@ -194,7 +194,7 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
 
 PolygonSoup triangulate(const TopoDS_Shape& shape, double deflection) {
   BRepMesh_IncrementalMesh mesher(shape, deflection);
-  if (!mesher.IsDone()) throw MeshError("OpenCASCADE could not triangulate the shape");
+  if (!mesher.IsDone()) throw Error("OpenCASCADE could not triangulate the shape");
   PolygonSoup soup;
   // Faces along a shared edge take their nodes from the edge's one discretization, so equal
   // positions are equal bits.
@@ -221,7 +221,7 @@ PolygonSoup triangulate(const TopoDS_Shape& shape, double deflection) {
       soup.faces.push_back({node[a], node[b], node[c]});
     }
   }
-  if (soup.faces.empty()) throw MeshError("the shape has no faces to triangulate");
+  if (soup.faces.empty()) throw InputError("the shape has no faces to triangulate");
   return soup;
 }
 
@@ -234,21 +234,21 @@ void quiet_opencascade() {
 TopoDS_Shape read_cad(const std::string& path) {
   const std::optional<CadFormat> format = cad_format(path);
   if (!format)
-    throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
+    throw InputError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
                                 file_extension(path), kCadExtensions));
   std::error_code ec;  // folders and devices are refused as by the mesh readers
   if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshError(fmt::format("{}: not a readable regular file", path));
+    throw InputError(fmt::format("{}: not a readable regular file", path));
   std::unique_ptr<XSControl_Reader> reader;
   if (*format == CadFormat::step)
     reader = std::make_unique<STEPControl_Reader>();
   else
     reader = std::make_unique<IGESControl_Reader>();
   if (reader->ReadFile(path.c_str()) != IFSelect_RetDone)
-    throw MeshError(fmt::format("{}: OpenCASCADE cannot read it", path));
+    throw InputError(fmt::format("{}: OpenCASCADE cannot read it", path));
   reader->TransferRoots();
   const TopoDS_Shape shape = reader->OneShape();
-  if (shape.IsNull()) throw MeshError(fmt::format("{}: no shape in the file", path));
+  if (shape.IsNull()) throw InputError(fmt::format("{}: no shape in the file", path));
   return shape;
 }
 

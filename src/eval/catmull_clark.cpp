@@ -234,7 +234,7 @@ std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
 }
 
 [[noreturn]] void throw_no_limit_surface(Face f) {
-  throw MeshError(fmt::format(
+  throw InputError(fmt::format(
       "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
       "surface; use mdc or asc",
       f.idx + 1));
@@ -268,14 +268,14 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, BoundaryInter
 CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken,
                                          BoundaryInterpolation boundary)
     : impl_(std::make_unique<Impl>()) {
-  if (mesh.surface_faces().empty()) throw MeshError("cc: the mesh has no faces outside holes");
+  if (mesh.surface_faces().empty()) throw InputError("cc: the mesh has no faces outside holes");
   // A vertex where boundary loops meet stays so under refinement: refused here, where the
   // vertex still has the number the user knows.
   for (Vertex v : mesh.vertices()) {
     try {
       (void)surface_ring(mesh, v);
-    } catch (const MeshError& e) {
-      throw MeshError(fmt::format(
+    } catch (const Error& e) {
+      throw_with_message(e, fmt::format(
           "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}; use mdc or asc",
           e.what()));
     }
@@ -291,7 +291,7 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   options.validateFullTopology = true;
   const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
   if (!refiner || !topo.problems.empty()) {
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: OpenSubdiv refused its "
         "topology{}{}",
         topo.problems.empty() ? "" : ": ", topo.problems.empty() ? "" : topo.problems.front()));
@@ -301,7 +301,7 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   const Osd::Far::TopologyLevel& level = refiner->GetLevel(0);
   for (int v = 0; v < level.GetNumVertices(); ++v) {
     if (level.IsVertexNonManifold(v)) {
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "cc (Catmull-Clark through OpenSubdiv) cannot handle vertex {}: OpenSubdiv treats its "
           "neighbourhood as non-manifold; use mdc or asc",
           topo.vertices[v].idx + 1));
@@ -309,7 +309,7 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   }
   for (int f = 0; f < level.GetNumFaces(); ++f) {
     if (level.IsFaceHole(f)) {
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "cc (Catmull-Clark through OpenSubdiv) cannot handle face {} of degree {}: OpenSubdiv "
           "makes it a hole; use mdc or asc",
           topo.faces[f].idx + 1, mesh.degree(topo.faces[f])));
@@ -395,7 +395,7 @@ CatmullClarkSurface& CatmullClarkSurface::operator=(CatmullClarkSurface&&) noexc
 SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   const Impl& impl = *impl_;
   if (!impl.live(c)) {
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "cc: half-edge {} (0-based) is not a live corner of the mesh outside holes", c.idx));
   }
   if (impl.refined) return evaluate_refined_quad(impl.quad_corners[c.idx], u, v);

@@ -1,3 +1,4 @@
+#include "stitch/error.hpp"
 #include "stitch/eval/surface.hpp"
 
 #include <stdexcept>
@@ -22,7 +23,7 @@ Method parse_method(const std::string& s) {
   if (s == "mdc") return Method::mdc;
   if (s == "asc") return Method::asc;
   if (s == "cc") return Method::cc;
-  throw std::invalid_argument("unknown method '" + s + "' (expected mdc, asc or cc)");
+  throw UsageError("unknown method '" + s + "' (expected mdc, asc or cc)");
 }
 
 namespace {

@@ -1,3 +1,4 @@
+#include "stitch/error.hpp"
 #include "stitch/eval/uv_surface.hpp"
 
 #include <fmt/format.h>
@@ -17,7 +18,7 @@ std::string to_string(UvMode mode) {
 UvMode parse_uv_mode(const std::string& text) {
   if (text == "smooth") return UvMode::smooth;
   if (text == "linear") return UvMode::linear;
-  throw std::invalid_argument(fmt::format("unknown UV mode '{}' (smooth or linear)", text));
+  throw UsageError(fmt::format("unknown UV mode '{}' (smooth or linear)", text));
 }
 
 /// The UV layout as a mesh of its own and its surface; the mesh is kept because the surface is
@@ -101,13 +102,13 @@ UvSurface::UvSurface(const HalfedgeMesh& mesh, const CornerUvs& uvs, UvMode mode
                      const KgonOptions& kgon_options)
     : mode_(mode) {
   if (uvs.index.size() < static_cast<size_t>(mesh.halfedge_capacity()))
-    throw MeshError(fmt::format("the texture coordinates cover {} half-edges, the mesh has {}",
+    throw InputError(fmt::format("the texture coordinates cover {} half-edges, the mesh has {}",
                                 uvs.index.size(), mesh.halfedge_capacity()));
   const std::vector<Corner> corners = mesh.patch_corners();
   const int nuv = static_cast<int>(uvs.uv.size());
   for (Corner c : corners)
     if (const int i = uvs.index[c.idx]; i < 0 || i >= nuv)
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "face {} has no texture coordinates (a face --fill-holes added, or one made by an edit)",
           mesh.face(c).idx + 1));
 
@@ -130,9 +131,9 @@ UvSurface::UvSurface(const HalfedgeMesh& mesh, const CornerUvs& uvs, UvMode mode
           smooth->mesh, Method::mdc,
           uv_kgon_options(mesh, smooth->mesh, smooth->corner, kgon_options));
       if (!finite_nets(*smooth->surface))
-        throw MeshError("its smooth surface is not finite (faces of zero area in UV?)");
+        throw InputError("its smooth surface is not finite (faces of zero area in UV?)");
       smooth_ = std::move(smooth);
-    } catch (const MeshError& e) {
+    } catch (const Error& e) {
       warnings_.push_back(fmt::format(
           "the UV layout does not make a smooth surface ({}); UVs are interpolated linearly per "
           "patch instead",

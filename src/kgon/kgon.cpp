@@ -180,10 +180,8 @@ void build_vertex_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSe
 template <class NormalOf>
 void build_edge_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Edge e,
                      NormalOf& normal_of) {
-  // Counter-clockwise seen from the side the faces point to: h = (a -> b) has its face on the
-  // left, so the order is h (left, at a), next(t) (right, at a), t (right, at b), next(h).
   const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
-  std::vector<Corner> corners{h, m.next(t), t, m.next(h)};
+  std::vector<Corner> corners = detail::edge_kgon_corners(m, e);
   set.in_next_edge[h.idx] = 0;
   set.in_prev_edge[m.next(t).idx] = 1;
   set.in_next_edge[t.idx] = 2;

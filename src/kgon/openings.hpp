@@ -48,4 +48,8 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& mesh, Face f, const Tw
                                       const std::vector<Corner>& corners,
                                       const std::vector<Vec3>& corner_point);
 
+/// The corners of edge e's K-gon in its order: h = halfedge(e, 0) (left of e, at its first
+/// end), next(twin h), twin h, next(h).
+std::vector<Corner> edge_kgon_corners(const HalfedgeMesh& mesh, Edge e);
+
 }  // namespace stitch::detail

@@ -34,27 +34,27 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
   const int nv = static_cast<int>(soup.positions.size());
   for (int v = 0; v < nv; ++v)
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
-      throw MeshError(fmt::format("{} {}", where_vertex(soup, v), problem));
-  if (soup.faces.empty()) throw MeshError("the mesh has no faces");
+      throw InputError(fmt::format("{} {}", where_vertex(soup, v), problem));
+  if (soup.faces.empty()) throw InputError("the mesh has no faces");
   const size_t min_degree = options.allow_two_gons ? 2 : 3;
   size_t corners = 0;
   for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
     const auto& loop = soup.faces[f];
     if (loop.size() < min_degree)
-      throw MeshError(fmt::format("{} has {} vertices; a face needs at least {}",
+      throw InputError(fmt::format("{} has {} vertices; a face needs at least {}",
                                   where_face(soup, f), loop.size(), min_degree));
     corners += loop.size();
     if (corners > static_cast<size_t>(limits::max_halfedges))
-      throw MeshError(
+      throw InputError(
           fmt::format("the mesh has more than {} corners (face {}); stitch numbers "
                       "its elements with 32-bit integers",
                       limits::max_halfedges, f + 1));
     for (size_t i = 0; i < loop.size(); ++i) {
       if (loop[i] < 0 || loop[i] >= nv)
-        throw MeshError(fmt::format("{} refers to vertex {}, but there are {} vertices",
+        throw InputError(fmt::format("{} refers to vertex {}, but there are {} vertices",
                                     where_face(soup, f), loop[i] + 1, nv));
       if (loop[i] == loop[(i + 1) % loop.size()])
-        throw MeshError(fmt::format("{} repeats vertex {} at consecutive positions",
+        throw InputError(fmt::format("{} repeats vertex {} at consecutive positions",
                                     where_face(soup, f), loop[i] + 1));
     }
   }
@@ -298,16 +298,16 @@ void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildRep
   const std::vector<int>& vertex_source = report.vertex_source;
   auto check = [&](double s, int line, const char* what) {
     if (!std::isfinite(s) || s < 0)
-      throw MeshError(fmt::format("{} has sharpness {}: it must be a finite number >= 0",
+      throw InputError(fmt::format("{} has sharpness {}: it must be a finite number >= 0",
                                   where_tag(soup, line, what), s));
   };
   const int nv = static_cast<int>(soup.positions.size());
   auto vertex = [&](int i, int line, const char* what) {
     if (i < 0 || i >= nv)
-      throw MeshError(fmt::format("{} names vertex {}{}, but there are {} vertices",
+      throw InputError(fmt::format("{} names vertex {}{}, but there are {} vertices",
                                   where_tag(soup, line, what), i + 1, tag_numbers(line, i), nv));
     if (remap[i] < 0)
-      throw MeshError(fmt::format("{} names vertex {}{}, which no face uses",
+      throw InputError(fmt::format("{} names vertex {}{}, which no face uses",
                                   where_tag(soup, line, what), i + 1, tag_numbers(line, i)));
     return Vertex(remap[i]);
   };
@@ -327,7 +327,7 @@ void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildRep
         found = true;
       }
     if (!found)
-      throw MeshError(fmt::format("{} names edge ({}, {}){}, but no face has that edge",
+      throw InputError(fmt::format("{} names edge ({}, {}){}, but no face has that edge",
                                   where_tag(soup, c.line, "crease"), vertex_source[a.idx] + 1,
                                   vertex_source[b.idx] + 1, tag_numbers(c.line, c.a, c.b)));
   }
@@ -391,13 +391,13 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
       }
       if (total == 2) {
         const auto& same = fwd.empty() ? bwd : fwd;
-        throw MeshError(fmt::format(
+        throw InputError(fmt::format(
             "inconsistent orientation: {} and {} both run along edge ({}, {}) in the same "
             "direction (one of them must be flipped)",
             where_face(soup, same[0].face), where_face(soup, same[1].face), key.first + 1,
             key.second + 1));
       }
-      throw MeshError(fmt::format("non-manifold edge ({}, {}): it is shared by {} faces, e.g. {}",
+      throw InputError(fmt::format("non-manifold edge ({}, {}): it is shared by {} faces, e.g. {}",
                                   key.first + 1, key.second + 1, total,
                                   where_face(soup, fwd.empty() ? bwd[0].face : fwd[0].face)));
     }
@@ -442,7 +442,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
       for (Halfedge h : boundary) leaving[out.origin(h).idx].push_back(h);
       for (const auto& [v, hs] : leaving)
         if (hs.size() > 1)
-          throw MeshError(fmt::format(
+          throw InputError(fmt::format(
               "{} is non-manifold: {} boundary loops touch there (a surface may meet itself "
               "only along edges)",
               where_vertex(soup, rep.vertex_source[v]), hs.size()));
@@ -470,7 +470,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
   const bool ambiguous =
       std::any_of(pairs.begin(), pairs.end(), [](const Group& g) { return g.perm.size() >= 2; });
   if (ambiguous && !PairingSearch(soup, remap, mesh.vertex_capacity(), pairs).run())
-    throw MeshError(
+    throw InputError(
         fmt::format("too many faces run along the same pairs of vertices to tell which of them are "
                     "neighbours (gave up after {} steps); give each face its own vertices",
                     kSearchBudget));
@@ -479,7 +479,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     const auto [v, fan] = bad.front();
     int outgoing = 0;
     for (Halfedge h : mesh.halfedges()) outgoing += mesh.origin(h) == v;
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "{} is non-manifold: its faces form more than one fan ({} of its {} corners are "
         "connected around it)",
         where_vertex(soup, rep.vertex_source[v.idx]), fan, outgoing));
@@ -503,7 +503,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
       const int nuv = static_cast<int>(soup.uvs.size());
       for (int u = 0; u < nuv; ++u)
         if (!soup.uvs[u].allFinite())
-          throw MeshError(fmt::format("texture coordinate {} is not finite", u + 1));
+          throw InputError(fmt::format("texture coordinate {} is not finite", u + 1));
       CornerUvs& out = rep.corner_uvs;
       out.uv = soup.uvs;
       out.index.assign(mesh.halfedge_capacity(), -1);
@@ -511,7 +511,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
         Halfedge h = mesh.halfedge(Face(f));
         for (int i : soup.face_uvs[f]) {
           if (i < 0 || i >= nuv)
-            throw MeshError(fmt::format("{} refers to texture coordinate {}, but there are {}",
+            throw InputError(fmt::format("{} refers to texture coordinate {}, but there are {}",
                                         where_face(soup, f), i + 1, nuv));
           out.index[h.idx] = i;
           h = mesh.next(h);
@@ -553,7 +553,7 @@ void check_reads_back(const HalfedgeMesh& mesh) {
   if (after.vertices != before.vertices || after.edges != before.edges ||
       after.faces != before.faces || after.components != before.components ||
       after.genus != before.genus)
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "written to a file, the mesh would read back as another surface ({} components of genus "
         "{} instead of {} of genus {})",
         after.components, after.genus, before.components, before.genus));

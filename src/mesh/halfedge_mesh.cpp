@@ -19,7 +19,7 @@ std::vector<H> live(int capacity, const std::vector<std::uint8_t>& deleted) {
 /// Element numbers are `int`: refuse to grow past limits::max_halfedges rather than overflow.
 void check_room(int capacity, int more, const char* what) {
   if (capacity > limits::max_halfedges - more)
-    throw MeshError(
+    throw Error(
         fmt::format("the mesh would have more than {} {}; stitch numbers its elements "
                     "with 32-bit integers",
                     limits::max_halfedges, what));
@@ -79,7 +79,7 @@ std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
     out.push_back(h);
     h = next(h);
     if (static_cast<int>(out.size()) > halfedge_capacity())
-      throw MeshError("internal error: face loop does not close");
+      throw Error("internal error: face loop does not close");
   } while (h != start);
   return out;
 }
@@ -97,7 +97,7 @@ std::vector<Halfedge> HalfedgeMesh::vertex_fan(Vertex v) const {
     out.push_back(h);
     h = rotate_ccw(h);
     if (static_cast<int>(out.size()) > halfedge_capacity())
-      throw MeshError("internal error: vertex fan does not close");
+      throw Error("internal error: vertex fan does not close");
   } while (h != start);
   return out;
 }

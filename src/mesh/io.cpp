@@ -44,16 +44,17 @@ double parse_number(std::string_view token, const std::string& where) {
   double value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec == std::errc::result_out_of_range)
-    throw MeshError(fmt::format("{}: number '{}' is out of range", where, limits::quoted(token)));
+    throw InputError(fmt::format("{}: number '{}' is out of range", where, limits::quoted(token)));
   if (ec != std::errc() || end != t.data() + t.size())
-    throw MeshError(fmt::format("{}: '{}' is not a number", where, limits::quoted(token)));
+    throw InputError(fmt::format("{}: '{}' is not a number", where, limits::quoted(token)));
   return value;
 }
 
 double parse_double(std::string_view token, const std::string& where) {
   const double value = parse_number(token, where);
   if (!std::isfinite(value))
-    throw MeshError(fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
+    throw InputError(
+        fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
   return value;
 }
 
@@ -62,9 +63,9 @@ long long parse_integer(std::string_view token, const std::string& where) {
   long long value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec == std::errc::result_out_of_range)
-    throw MeshError(fmt::format("{}: integer '{}' is out of range", where, limits::quoted(token)));
+    throw InputError(fmt::format("{}: integer '{}' is out of range", where, limits::quoted(token)));
   if (ec != std::errc() || end != t.data() + t.size())
-    throw MeshError(fmt::format("{}: '{}' is not an integer", where, limits::quoted(token)));
+    throw InputError(fmt::format("{}: '{}' is not an integer", where, limits::quoted(token)));
   return value;
 }
 
@@ -99,7 +100,7 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
     // Control characters other than tab/CR/form feed do not occur in text; bytes >= 0x80 may
     // (UTF-8 in comments), so they are left to the parsers.
     if (byte < 0x20 && c != '\t' && c != '\r' && c != '\f')
-      throw MeshError(
+      throw InputError(
           fmt::format("{}: not a text file (byte 0x{:02x})", at_line(path, line_number), byte));
   }
 }
@@ -124,12 +125,12 @@ void check_tags(const std::string& path, const PolygonSoup& soup) {
   const int nv = static_cast<int>(soup.positions.size());
   auto check = [&](double sharpness, std::initializer_list<int> vertices, const char* what) {
     if (!std::isfinite(sharpness) || sharpness < 0)
-      throw MeshError(
+      throw OutputError(
           fmt::format("cannot write {}: a {} tag has sharpness {}", path, what, sharpness));
     for (int v : vertices)
       if (v < 0 || v >= nv)
-        throw MeshError(fmt::format("cannot write {}: a {} tag refers to vertex {} of {}", path,
-                                    what, v + 1, nv));
+        throw OutputError(fmt::format("cannot write {}: a {} tag refers to vertex {} of {}", path,
+                                      what, v + 1, nv));
   };
   for (const SoupCrease& c : soup.creases) check(c.sharpness, {c.a, c.b}, "crease");
   for (const SoupCorner& c : soup.corners) check(c.sharpness, {c.vertex}, "corner");
@@ -141,14 +142,14 @@ std::string read_regular_file(const std::string& path,
                               const std::function<void(double)>& progress) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);  // follows symbolic links
-  if (ec) throw MeshError(fmt::format("{}: cannot open: {}", path, ec.message()));
+  if (ec) throw InputError(fmt::format("{}: cannot open: {}", path, ec.message()));
   if (std::filesystem::is_directory(status))
-    throw MeshError(fmt::format("{}: is a folder, not a file", path));
+    throw InputError(fmt::format("{}: is a folder, not a file", path));
   // A FIFO, a device such as /dev/zero or a socket may never end: only plain files are read.
   if (!std::filesystem::is_regular_file(status))
-    throw MeshError(fmt::format("{}: not a regular file (a pipe, device or socket)", path));
+    throw InputError(fmt::format("{}: not a regular file (a pipe, device or socket)", path));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw MeshError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
+  if (!in) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   if (progress) {
     // In large pieces, so that a slow disk shows how far it is.
     const auto size = std::filesystem::file_size(path, ec);
@@ -160,12 +161,12 @@ std::string read_regular_file(const std::string& path,
       bytes.append(piece.data(), static_cast<std::size_t>(in.gcount()));
       if (!ec && size > 0) progress(static_cast<double>(bytes.size()) / static_cast<double>(size));
     }
-    if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
+    if (in.bad()) throw InputError(fmt::format("{}: read error", path));
     return bytes;
   }
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  if (in.bad()) throw MeshError(fmt::format("{}: read error", path));
+  if (in.bad()) throw InputError(fmt::format("{}: read error", path));
   return std::move(buffer).str();
 }
 
@@ -188,8 +189,8 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
   const bool gltf = ext == ".glb" || ext == ".gltf";
   if (std::find(kMeshReadExtensions.begin(), kMeshReadExtensions.end(), ext) ==
       kMeshReadExtensions.end())
-    throw MeshError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                limits::quoted(ext), extension_list(kMeshReadExtensions)));
+    throw UsageError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
+                                 limits::quoted(ext), extension_list(kMeshReadExtensions)));
   // Reading the bytes is the first third of the work, parsing them the rest.
   auto part = [&progress](double from, double to) -> std::function<void(double)> {
     if (!progress) return {};
@@ -197,14 +198,14 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
   };
   const std::string text = read_regular_file(path, part(0, 1.0 / 3));
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
-    throw MeshError(fmt::format("{}: the file is empty", path));
+    throw InputError(fmt::format("{}: the file is empty", path));
   PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings, part(1.0 / 3, 1))
                      : ext == ".off" ? io_detail::read_off(text, path, warnings)
                      : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
                      : gltf          ? io_detail::read_gltf(text, path, warnings)
                                      : io_detail::read_ply(text, path, warnings);
   soup.source = path;
-  if (soup.faces.empty()) throw MeshError(fmt::format("{}: the file contains no faces", path));
+  if (soup.faces.empty()) throw InputError(fmt::format("{}: the file contains no faces", path));
   if (progress) progress(1);
   return soup;
 }
@@ -219,11 +220,11 @@ HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options, Bui
     HalfedgeMesh mesh = build_mesh(soup, options, report);
     if (progress) progress(1);
     return mesh;
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     // build_mesh names the file only where it knows a line (not for binary PLY, nor for
     // problems of the whole mesh); every message about a file must say which file.
     if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
-    throw MeshError(fmt::format("{}: {}", path, e.what()));
+    throw InputError(fmt::format("{}: {}", path, e.what()));
   }
 }
 
@@ -233,12 +234,12 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
   for (const auto& loop : soup.faces)
     for (int v : loop)
       if (v < 0 || v >= nv)
-        throw MeshError(
+        throw OutputError(
             fmt::format("cannot write {}: a face refers to vertex {} of {}", path, v + 1, nv));
   // What is written must read back, so it meets the reader's coordinate limits.
   for (int v = 0; v < nv; ++v)
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
-      throw MeshError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
+      throw OutputError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
   check_tags(path, soup);
   using namespace io_detail;
   const MeshStream stream = stream_arrays(soup.positions, nullptr, soup.faces);
@@ -259,8 +260,8 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     write_mesh_file(path, true,
                     [&](std::ostream& out) { write_stl(out, stream, soup.positions, kComment); });
   else
-    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                ext, extension_list(kMeshWriteExtensions)));
+    throw OutputError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                  ext, extension_list(kMeshWriteExtensions)));
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
@@ -271,12 +272,13 @@ void write_file_atomically(const std::string& path, const std::function<void(std
                            bool binary) {
   write_file_atomically_at(path, [&](const std::string& temporary) {
     std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-    if (!out) throw MeshError(fmt::format("cannot write {}: {}", temporary, std::strerror(errno)));
+    if (!out)
+      throw OutputError(fmt::format("cannot write {}: {}", temporary, std::strerror(errno)));
     write(out);
     out.flush();
-    if (!out) throw MeshError(fmt::format("cannot write {}: write error (disk full?)", path));
+    if (!out) throw OutputError(fmt::format("cannot write {}: write error (disk full?)", path));
     out.close();
-    if (out.fail()) throw MeshError(fmt::format("cannot write {}: error closing the file", path));
+    if (out.fail()) throw OutputError(fmt::format("cannot write {}: error closing the file", path));
   });
 }
 
@@ -296,8 +298,8 @@ std::filesystem::path create_temporary(const std::filesystem::path& folder,
     if (fd < 0 && errno != EEXIST) break;
   }
   if (fd < 0)
-    throw MeshError(fmt::format("cannot write {}: cannot create a file in '{}': {}", path,
-                                folder.string(), std::strerror(errno)));
+    throw OutputError(fmt::format("cannot write {}: cannot create a file in '{}': {}", path,
+                                  folder.string(), std::strerror(errno)));
   ::close(fd);
   return temporary;
 }
@@ -311,10 +313,10 @@ void write_file_atomically_at(const std::string& path,
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
-    throw MeshError(
+    throw OutputError(
         fmt::format("cannot write {}: folder '{}' does not exist", path, folder.string()));
   if (fs::is_directory(target, ec))
-    throw MeshError(fmt::format("cannot write {}: it is a folder", path));
+    throw OutputError(fmt::format("cannot write {}: it is a folder", path));
   // A device or pipe (/dev/stdout, /dev/full) must not be renamed over: the bytes are made in a
   // temporary file elsewhere and then sent to it, and a failed send is still an error.
   const auto status = fs::status(target, ec);
@@ -329,10 +331,10 @@ void write_file_atomically_at(const std::string& path,
       std::ifstream in(temporary, std::ios::binary);
       std::ofstream out(target, std::ios::binary);
       if (!in || !out)
-        throw MeshError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+        throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
       out << in.rdbuf();
       out.flush();
-      if (!out) throw MeshError(fmt::format("cannot write {}: write error (disk full?)", path));
+      if (!out) throw OutputError(fmt::format("cannot write {}: write error (disk full?)", path));
       fs::remove(temporary, ec);
       return;
     }
@@ -341,10 +343,10 @@ void write_file_atomically_at(const std::string& path,
       const int synced = ::fsync(sync_fd);
       ::close(sync_fd);
       if (synced != 0)
-        throw MeshError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+        throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
     }
     fs::rename(temporary, target, ec);
-    if (ec) throw MeshError(fmt::format("cannot write {}: {}", path, ec.message()));
+    if (ec) throw OutputError(fmt::format("cannot write {}: {}", path, ec.message()));
   } catch (...) {
     fs::remove(temporary, ec);
     throw;

@@ -64,8 +64,8 @@ class Reader {
   }
 
  private:
-  MeshError error(const std::string& what) const {
-    return MeshError(fmt::format("{}: {}", path_, what));
+  InputError error(const std::string& what) const {
+    return InputError(fmt::format("{}: {}", path_, what));
   }
 
   void add_node(int index, const Eigen::Affine3d& parent, int depth) {
@@ -270,7 +270,7 @@ bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const s
     const std::string bytes = read_regular_file(path);
     out->assign(bytes.begin(), bytes.end());
     return true;
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     *err = e.what();
     return false;
   }
@@ -298,7 +298,7 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
              : loader.LoadASCIIFromString(&model, &err, &warn, text.data(),
                                           static_cast<unsigned int>(text.size()), folder);
   if (!ok)
-    throw MeshError(fmt::format("{}: not a glTF 2.0 file tinygltf can read: {}", path,
+    throw InputError(fmt::format("{}: not a glTF 2.0 file tinygltf can read: {}", path,
                                 limits::quoted(err.empty() ? warn : err)));
   if (!warn.empty() && warnings)
     warnings->push_back(fmt::format("{}: {}", path, limits::quoted(warn)));

@@ -37,17 +37,17 @@ int obj_index(std::string_view token, int defined_so_far, const char* what,
               const std::string& where) {
   const long long index = parse_integer(token, where);
   if (index == 0)
-    throw MeshError(fmt::format("{}: {} index 0 in face (OBJ indices start at 1)", where, what));
+    throw InputError(fmt::format("{}: {} index 0 in face (OBJ indices start at 1)", where, what));
   if (index < 0) {
     // Relative: -1 is the last one defined so far.
     if (-index > defined_so_far)
-      throw MeshError(
+      throw InputError(
           fmt::format("{}: relative {} index {} points before the first {} ({} defined so far)",
                       where, what, index, what, defined_so_far));
     return static_cast<int>(defined_so_far + index);
   }
   if (index > std::numeric_limits<int>::max())
-    throw MeshError(fmt::format("{}: {} index {} is out of range", where, what, index));
+    throw InputError(fmt::format("{}: {} index {} is out of range", where, what, index));
   return static_cast<int>(index - 1);
 }
 
@@ -65,14 +65,14 @@ FaceEntry face_entry(std::string_view entry, int vertices_so_far, int uvs_so_far
   while (true) {
     const size_t slash = entry.find('/', start);
     if (count == parts.size())
-      throw MeshError(fmt::format("{}: face entry '{}' has more than three parts", where,
+      throw InputError(fmt::format("{}: face entry '{}' has more than three parts", where,
                                   limits::quoted(entry)));
     parts[count++] = entry.substr(start, slash == std::string_view::npos ? slash : slash - start);
     if (slash == std::string_view::npos) break;
     start = slash + 1;
   }
   if (parts[0].empty())
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: face entry '{}' has no vertex index", where, limits::quoted(entry)));
   // Normal indices are not used, but must still be numbers.
   if (count == 3 && !parts[2].empty()) parse_integer(parts[2], where);
@@ -94,7 +94,7 @@ struct Tag {
 
 Tag parse_tag(const std::vector<std::string_view>& words, const std::string& where) {
   if (words.size() < 3)
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: a tag needs a name and its argument counts INTS/FLOATS/STRINGS, e.g. "
                     "'t crease 2/1/0 0 1 10'",
                     where));
@@ -106,13 +106,13 @@ Tag parse_tag(const std::vector<std::string_view>& words, const std::string& whe
     const size_t slash = rest.find('/');
     const bool last = k + 1 == counts.size();
     if (last != (slash == std::string_view::npos))
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "{}: tag '{}' has argument counts '{}'; they must be three integers INTS/FLOATS/STRINGS "
           "such as 2/1/0",
           where, limits::quoted(tag.name), limits::quoted(words[2])));
     counts[k] = parse_integer(rest.substr(0, slash), where);
     if (counts[k] < 0)
-      throw MeshError(fmt::format("{}: tag '{}' declares a negative number of arguments ('{}')",
+      throw InputError(fmt::format("{}: tag '{}' declares a negative number of arguments ('{}')",
                                   where, limits::quoted(tag.name), limits::quoted(words[2])));
     if (!last) rest.remove_prefix(slash + 1);
   }
@@ -120,7 +120,7 @@ Tag parse_tag(const std::vector<std::string_view>& words, const std::string& whe
   const auto given = static_cast<long long>(words.size() - 3);
   if (counts[0] > given || counts[1] > given || counts[2] > given ||
       counts[0] + counts[1] + counts[2] != given)
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "{}: tag '{}' declares {} integer, {} float and {} string arguments, but {} follow", where,
         limits::quoted(tag.name), counts[0], counts[1], counts[2], given));
   size_t at = 3;
@@ -135,7 +135,7 @@ Tag parse_tag(const std::vector<std::string_view>& words, const std::string& whe
 double tag_sharpness(const Tag& tag, size_t k, const std::string& where) {
   const double s = tag.floats.size() == 1 ? tag.floats[0] : tag.floats[k];
   if (!std::isfinite(s) || s < 0)
-    throw MeshError(fmt::format("{}: {} tag has sharpness {}; it must be a finite number >= 0",
+    throw InputError(fmt::format("{}: {} tag has sharpness {}; it must be a finite number >= 0",
                                 where, tag.name, s));
   return s;
 }
@@ -143,11 +143,11 @@ double tag_sharpness(const Tag& tag, size_t k, const std::string& where) {
 int tag_vertex(long long index, const Tag& tag, const std::string& where) {
   // OpenSubdiv's tags count vertices from 0 (unlike OBJ's faces) and have no relative form.
   if (index < 0)
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: {} tag names vertex {}; tags count vertices from 0, so it must be >= 0",
                     where, tag.name, index));
   if (index > std::numeric_limits<int>::max())
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: {} tag names vertex {}, which is out of range", where, tag.name, index));
   return static_cast<int>(index);
 }
@@ -156,22 +156,22 @@ void read_crease(const Tag& tag, int line, const std::string& where, PolygonSoup
   // OpenSubdiv reads the integers in pairs, one edge each (not as a chain of vertices).
   const size_t edges = tag.ints.size() / 2;
   if (tag.ints.empty() || tag.ints.size() % 2 != 0)
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: crease tag has {} vertices; it needs pairs of vertices, one pair per edge "
                     "('t crease 2/1/0 A B SHARPNESS')",
                     where, tag.ints.size()));
   if (tag.floats.size() != 1 && tag.floats.size() != edges)
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "{}: crease tag names {} edge(s) but has {} sharpness values; it needs 1 for all or 1 "
         "per edge",
         where, edges, tag.floats.size()));
   if (!tag.strings.empty())
-    throw MeshError(fmt::format("{}: crease tag has string arguments; it takes none", where));
+    throw InputError(fmt::format("{}: crease tag has string arguments; it takes none", where));
   for (size_t e = 0; e < edges; ++e) {
     const int a = tag_vertex(tag.ints[2 * e], tag, where);
     const int b = tag_vertex(tag.ints[2 * e + 1], tag, where);
     if (a == b)
-      throw MeshError(
+      throw InputError(
           fmt::format("{}: crease tag joins vertex {} to itself; an edge has two ends", where, a));
     soup.creases.push_back({a, b, tag_sharpness(tag, e, where), line});
   }
@@ -179,15 +179,15 @@ void read_crease(const Tag& tag, int line, const std::string& where, PolygonSoup
 
 void read_corner(const Tag& tag, int line, const std::string& where, PolygonSoup& soup) {
   if (tag.ints.empty())
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: corner tag names no vertex ('t corner 1/1/0 V SHARPNESS')", where));
   if (tag.floats.size() != 1 && tag.floats.size() != tag.ints.size())
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "{}: corner tag names {} vertices but has {} sharpness values; it needs 1 for all or 1 "
         "per vertex",
         where, tag.ints.size(), tag.floats.size()));
   if (!tag.strings.empty())
-    throw MeshError(fmt::format("{}: corner tag has string arguments; it takes none", where));
+    throw InputError(fmt::format("{}: corner tag has string arguments; it takes none", where));
   for (size_t k = 0; k < tag.ints.size(); ++k)
     soup.corners.push_back(
         {tag_vertex(tag.ints[k], tag, where), tag_sharpness(tag, k, where), line});
@@ -239,7 +239,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
     if (keyword == "v") {
       const std::string where = at_line(path, number);
       if (words.size() < 4)
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: a vertex needs 3 coordinates, found {}", where, words.size() - 1));
       Vec3 p;
       for (int k = 0; k < 3; ++k) p[k] = parse_double(words[k + 1], where);
@@ -250,7 +250,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
     } else if (keyword == "vt") {
       const std::string where = at_line(path, number);
       if (words.size() < 2 || words.size() > 4)
-        throw MeshError(fmt::format("{}: a texture coordinate needs 1 to 3 numbers, found {}",
+        throw InputError(fmt::format("{}: a texture coordinate needs 1 to 3 numbers, found {}",
                                     where, words.size() - 1));
       // `vt u [v [w]]`: v defaults to 0; w (3D textures) is not used but must be a number.
       Eigen::Vector2d uv(parse_double(words[1], where),
@@ -270,7 +270,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
         if (entry.uv >= 0) uv_loop.push_back(entry.uv);
       }
       if (!uv_loop.empty() && uv_loop.size() != loop.size())
-        throw MeshError(fmt::format(
+        throw InputError(fmt::format(
             "{}: {} of the face's {} corners have a texture coordinate index; a face needs one on "
             "every corner or on none",
             where, uv_loop.size(), loop.size()));
@@ -300,7 +300,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
             fmt::format("{}: ignoring unsupported OBJ statement '{}' (and any later ones)",
                         at_line(path, number), limits::quoted(keyword)));
     } else {
-      throw MeshError(fmt::format("{}: unrecognised statement '{}'", at_line(path, number),
+      throw InputError(fmt::format("{}: unrecognised statement '{}'", at_line(path, number),
                                   limits::quoted(keyword)));
     }
   }
@@ -309,7 +309,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   for (size_t f = 0; f < soup.faces.size(); ++f)
     for (int v : soup.faces[f])
       if (v >= nv)
-        throw MeshError(fmt::format("{}: face refers to vertex {}, but the file has {} vertices",
+        throw InputError(fmt::format("{}: face refers to vertex {}, but the file has {} vertices",
                                     at_line(path, soup.face_lines[f]), v + 1, nv));
   // Some faces with texture coordinates and some without: the file has no UV map to carry over
   // (Blender and other importers then invent zeros); say so and go on without UVs.
@@ -327,7 +327,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
     for (size_t f = 0; f < soup.faces.size(); ++f)
       for (int t : soup.face_uvs[f])
         if (t >= nuv)
-          throw MeshError(
+          throw InputError(
               fmt::format("{}: face refers to texture coordinate {}, but the file has {}",
                           at_line(path, soup.face_lines[f]), t + 1, nuv));
   } else {
@@ -341,13 +341,13 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   for (const SoupCrease& c : soup.creases)
     for (int v : {c.a, c.b})
       if (v >= nv)
-        throw MeshError(fmt::format(
+        throw InputError(fmt::format(
             "{}: crease tag names vertex {}, but the file has {} vertices (tags count from 0: "
             "0 to {})",
             at_line(path, c.line), v, nv, nv - 1));
   for (const SoupCorner& c : soup.corners)
     if (c.vertex >= nv)
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "{}: corner tag names vertex {}, but the file has {} vertices (tags count from 0: 0 "
           "to {})",
           at_line(path, c.line), c.vertex, nv, nv - 1));

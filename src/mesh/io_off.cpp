@@ -37,24 +37,24 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
 
   auto words = next_words();
   if (words.empty() || !is_off_keyword(words[0]))
-    throw MeshError(fmt::format("{}: not an OFF file (the first line must be 'OFF')",
+    throw InputError(fmt::format("{}: not an OFF file (the first line must be 'OFF')",
                                 at_line(path, lines.line_number())));
   if (words.size() > 1 && words[1] == "BINARY")
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: binary OFF is not supported", at_line(path, lines.line_number())));
   words.erase(words.begin());
   if (words.empty()) words = next_words();
   const std::string counts_where = at_line(path, lines.line_number());
   if (words.size() < 2 || words.size() > 3)
-    throw MeshError(fmt::format("{}: expected the counts 'vertices faces [edges]'", counts_where));
+    throw InputError(fmt::format("{}: expected the counts 'vertices faces [edges]'", counts_where));
   const long long nv = parse_integer(words[0], counts_where);
   const long long nf = parse_integer(words[1], counts_where);
   if (nv < 0 || nf < 0 || nv > std::numeric_limits<int>::max() ||
       nf > std::numeric_limits<int>::max())
-    throw MeshError(fmt::format("{}: invalid counts {} {}", counts_where, nv, nf));
+    throw InputError(fmt::format("{}: invalid counts {} {}", counts_where, nv, nf));
 
   auto truncated = [&](const char* what, long long done, long long declared) {
-    return MeshError(fmt::format("{}: the file ends after {} of the {} {} declared (truncated?)",
+    return InputError(fmt::format("{}: the file ends after {} of the {} {} declared (truncated?)",
                                  at_line(path, lines.line_number()), done, declared, what));
   };
 
@@ -66,7 +66,7 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
     if (words.empty()) throw truncated("vertices", v, nv);
     const std::string where = at_line(path, lines.line_number());
     if (words.size() < 3)
-      throw MeshError(
+      throw InputError(
           fmt::format("{}: a vertex needs 3 coordinates, found {}", where, words.size()));
     Vec3 p;
     for (int k = 0; k < 3; ++k) p[k] = parse_double(words[k], where);
@@ -80,14 +80,14 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
     const std::string where = at_line(path, lines.line_number());
     const long long n = parse_integer(words[0], where);
     if (n < 0 || static_cast<size_t>(n) + 1 > words.size())
-      throw MeshError(
+      throw InputError(
           fmt::format("{}: face declares {} vertices but lists {}", where, n, words.size() - 1));
     std::vector<int> loop;
     loop.reserve(n);
     for (long long k = 1; k <= n; ++k) {
       const long long index = parse_integer(words[k], where);
       if (index < 0 || index >= nv)
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: face refers to vertex {} (0-based), but the file has {} vertices",
                         where, index, nv));
       loop.push_back(static_cast<int>(index));

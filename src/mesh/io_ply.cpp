@@ -59,7 +59,7 @@ Header read_header(std::string_view text, const std::string& path) {
   LineReader lines(text);
   std::string_view line;
   if (!lines.next(line) || line != "ply")
-    throw MeshError(
+    throw InputError(
         fmt::format("{}: not a PLY file (the first line must be 'ply')", at_line(path, 1)));
   Header header;
   bool have_format = false;
@@ -72,14 +72,14 @@ Header read_header(std::string_view text, const std::string& path) {
     const auto words = tokens(line);
     if (words.empty()) continue;
     if (words[0] == "end_header") {
-      if (!have_format) throw MeshError(fmt::format("{}: header has no 'format' line", where));
+      if (!have_format) throw InputError(fmt::format("{}: header has no 'format' line", where));
       header.body_offset = lines.offset();
       header.body_line = number + 1;
       return header;
     }
     if (words[0] == "format") {
       if (words.size() != 3 || words[2] != "1.0")
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: expected 'format <ascii|binary_little_endian|"
                         "binary_big_endian> 1.0'",
                         where));
@@ -90,47 +90,47 @@ Header read_header(std::string_view text, const std::string& path) {
       else if (words[1] == "binary_big_endian")
         header.format = Format::binary_big_endian;
       else
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: unknown PLY format '{}'", where, limits::quoted(words[1])));
       have_format = true;
     } else if (words[0] == "element") {
       if (words.size() != 3)
-        throw MeshError(fmt::format("{}: expected 'element <name> <count>'", where));
+        throw InputError(fmt::format("{}: expected 'element <name> <count>'", where));
       Element element{limits::quoted(words[1]), parse_integer(words[2], where), {}, number};
       if (element.count < 0 || element.count > std::numeric_limits<int>::max())
-        throw MeshError(fmt::format("{}: invalid element count {}", where, element.count));
+        throw InputError(fmt::format("{}: invalid element count {}", where, element.count));
       header.elements.push_back(std::move(element));
     } else if (words[0] == "property") {
       if (header.elements.empty())
-        throw MeshError(fmt::format("{}: property before any element", where));
+        throw InputError(fmt::format("{}: property before any element", where));
       Property property;
       if (words.size() == 5 && words[1] == "list") {
         property.list_count = parse_type(words[2]);
         const auto item = parse_type(words[3]);
         if (!property.list_count || property.list_count->is_float || !item)
-          throw MeshError(fmt::format("{}: invalid list property types '{} {}'", where,
+          throw InputError(fmt::format("{}: invalid list property types '{} {}'", where,
                                       limits::quoted(words[2]), limits::quoted(words[3])));
         property.type = *item;
         property.name = limits::quoted(words[4]);
       } else if (words.size() == 3) {
         const auto type = parse_type(words[1]);
         if (!type)
-          throw MeshError(
+          throw InputError(
               fmt::format("{}: unknown property type '{}'", where, limits::quoted(words[1])));
         property.type = *type;
         property.name = limits::quoted(words[2]);
       } else {
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: expected 'property <type> <name>' or 'property list "
                         "<count type> <item type> <name>'",
                         where));
       }
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      throw MeshError(fmt::format("{}: unknown header line '{}'", where, limits::quoted(words[0])));
+      throw InputError(fmt::format("{}: unknown header line '{}'", where, limits::quoted(words[0])));
     }
   }
-  throw MeshError(fmt::format("{}: the header has no 'end_header' line", path));
+  throw InputError(fmt::format("{}: the header has no 'end_header' line", path));
 }
 
 /// Which properties of the vertex and face elements carry the mesh.
@@ -161,7 +161,7 @@ std::array<int, 2> find_uv(const Element& element, const std::string& where) {
     if (found[0] < 0 || found[1] < 0) continue;
     for (int k = 0; k < 2; ++k)
       if (element.properties[found[k]].list_count)
-        throw MeshError(fmt::format("{}: vertex property {} is a list", where, names[k]));
+        throw InputError(fmt::format("{}: vertex property {} is a list", where, names[k]));
     return found;
   }
   return {-1, -1};
@@ -179,14 +179,14 @@ Roles find_roles(const Header& header, const std::string& path) {
         for (int k = 0; k < 3; ++k)
           if (property.name == std::string_view(&"xyz"[k], 1)) {
             if (property.list_count)
-              throw MeshError(
+              throw InputError(
                   fmt::format("{}: vertex property {} is a list", where, property.name));
             roles.xyz[k] = p;
           }
       }
       for (int k = 0; k < 3; ++k)
         if (roles.xyz[k] < 0)
-          throw MeshError(
+          throw InputError(
               fmt::format("{}: the vertex element has no '{}' property", where, "xyz"[k]));
       roles.uv = find_uv(element, where);
     } else if (element.name == "face") {
@@ -195,20 +195,20 @@ Roles find_roles(const Header& header, const std::string& path) {
         const Property& property = element.properties[p];
         if (property.name == "vertex_indices" || property.name == "vertex_index") {
           if (!property.list_count || property.type.is_float)
-            throw MeshError(fmt::format("{}: face property {} must be a list of integers", where,
+            throw InputError(fmt::format("{}: face property {} must be a list of integers", where,
                                         property.name));
           roles.indices = p;
         }
       }
       if (roles.indices < 0)
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: the face element has no 'vertex_indices' list property", where));
     }
   }
   if (roles.vertex_element < 0)
-    throw MeshError(fmt::format("{}: the header declares no 'vertex' element", path));
+    throw InputError(fmt::format("{}: the header declares no 'vertex' element", path));
   if (roles.face_element < 0)
-    throw MeshError(fmt::format("{}: the header declares no 'face' element", path));
+    throw InputError(fmt::format("{}: the header declares no 'face' element", path));
   return roles;
 }
 
@@ -226,7 +226,7 @@ void check_counts_fit(const Header& header, size_t body_size, const std::string&
     if (least == 0) continue;
     const auto count = static_cast<size_t>(element.count);
     if (count > left / least)
-      throw MeshError(fmt::format(
+      throw InputError(fmt::format(
           "{}: the header declares {} '{}' elements of at least {} bytes each, but only {} bytes "
           "follow the header (truncated, or a wrong count?)",
           at_line(path, element.header_line), element.count, element.name, least, body_size));
@@ -268,7 +268,7 @@ class BodyReader {
     std::vector<std::string_view> words;
     while (words.empty()) {
       if (!lines_.next(line))
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: the file ends after {} of the {} '{}' elements declared "
                         "in the header (line {}; truncated?)",
                         at_line(path_, header_.body_line + lines_.line_number() - 1), index,
@@ -280,14 +280,14 @@ class BodyReader {
     size_t next = 0;
     auto take = [&](const Type& type) {
       if (next == words.size())
-        throw MeshError(fmt::format("{}: too few values for a '{}' element", where, element.name));
+        throw InputError(fmt::format("{}: too few values for a '{}' element", where, element.name));
       const std::string_view word = words[next++];
       return type.is_float ? parse_double(word, where)
                            : static_cast<double>(parse_integer(word, where));
     };
     read_properties(element, take, use, [&] { return where; });
     if (next != words.size())
-      throw MeshError(fmt::format("{}: {} values more than a '{}' element has", where,
+      throw InputError(fmt::format("{}: {} values more than a '{}' element has", where,
                                   words.size() - next, element.name));
   }
 
@@ -303,9 +303,9 @@ class BodyReader {
         continue;
       }
       const double count = take(*property.list_count);
-      if (count < 0) throw MeshError(fmt::format("{}: negative list length {}", where(), count));
+      if (count < 0) throw InputError(fmt::format("{}: negative list length {}", where(), count));
       if (count > limits::max_halfedges)
-        throw MeshError(fmt::format("{}: list length {} is more than the {} a face may have",
+        throw InputError(fmt::format("{}: list length {} is more than the {} a face may have",
                                     where(), count, limits::max_halfedges));
       use(p, -1, count);
       for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
@@ -321,7 +321,7 @@ class BodyReader {
     };
     auto take = [&](const Type& type) {
       if (position_ + type.size > body_.size())
-        throw MeshError(
+        throw InputError(
             fmt::format("{}: the file ends in {} element {} of the {} declared in the "
                         "header (truncated?)",
                         path_, element.name, index, element.count));
@@ -390,7 +390,7 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
             if (property == roles.uv[k]) uv[k] = value;
         });
         if (!p.allFinite() || !uv.allFinite())
-          throw MeshError(fmt::format("{}, vertex element {} (counting from 0): {} is not finite",
+          throw InputError(fmt::format("{}, vertex element {} (counting from 0): {} is not finite",
                                       path, i,
                                       p.allFinite() ? "a texture coordinate" : "coordinate"));
         soup.positions.push_back(p);
@@ -413,7 +413,7 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
           loop.push_back(static_cast<int>(value));
         });
         if (!bad_index.empty())
-          throw MeshError(
+          throw InputError(
               fmt::format("{}: {}",
                           ascii ? at_line(path, line)
                                 : fmt::format("{}, face element {} (counting from 0)", path, i),

@@ -43,7 +43,7 @@ std::vector<std::array<Vec3, 3>> read_binary(std::string_view text, const std::s
         const size_t at = 84 + 50 * t + 12 + 12 * corner + 4 * k;
         const auto value = std::bit_cast<float>(word_le(text, at));
         if (!std::isfinite(value))
-          throw MeshError(
+          throw InputError(
               fmt::format("{}: triangle {} has a coordinate that is not finite", path, t + 1));
         triangles[t][corner][k] = value;
       }
@@ -64,29 +64,29 @@ std::vector<std::array<Vec3, 3>> read_ascii(std::string_view text, const std::st
     if (words.empty()) continue;
     const std::string where = at_line(path, reader.line_number());
     if (words[0] == "outer") {
-      if (in_loop) throw MeshError(fmt::format("{}: 'outer loop' inside a loop", where));
+      if (in_loop) throw InputError(fmt::format("{}: 'outer loop' inside a loop", where));
       in_loop = true;
       loop.clear();
       loop_line = reader.line_number();
     } else if (words[0] == "vertex") {
-      if (!in_loop) throw MeshError(fmt::format("{}: 'vertex' outside 'outer loop'", where));
-      if (words.size() != 4) throw MeshError(fmt::format("{}: 'vertex' needs x y z", where));
+      if (!in_loop) throw InputError(fmt::format("{}: 'vertex' outside 'outer loop'", where));
+      if (words.size() != 4) throw InputError(fmt::format("{}: 'vertex' needs x y z", where));
       loop.emplace_back(parse_double(words[1], where), parse_double(words[2], where),
                         parse_double(words[3], where));
     } else if (words[0] == "endloop") {
-      if (!in_loop) throw MeshError(fmt::format("{}: 'endloop' without 'outer loop'", where));
+      if (!in_loop) throw InputError(fmt::format("{}: 'endloop' without 'outer loop'", where));
       if (loop.size() != 3)
-        throw MeshError(fmt::format("{}: a facet has {} vertices, STL facets have 3",
+        throw InputError(fmt::format("{}: a facet has {} vertices, STL facets have 3",
                                     at_line(path, loop_line), loop.size()));
       triangles.push_back({loop[0], loop[1], loop[2]});
       lines->push_back(loop_line);
       in_loop = false;
     } else if (words[0] != "solid" && words[0] != "facet" && words[0] != "endfacet" &&
                words[0] != "endsolid") {
-      throw MeshError(fmt::format("{}: '{}' is not an STL keyword", where, words[0]));
+      throw InputError(fmt::format("{}: '{}' is not an STL keyword", where, words[0]));
     }
   }
-  if (in_loop) throw MeshError(fmt::format("{}: the last facet is not closed", path));
+  if (in_loop) throw InputError(fmt::format("{}: the last facet is not closed", path));
   return triangles;
 }
 
@@ -139,7 +139,7 @@ PolygonSoup read_stl(std::string_view text, const std::string& path,
   // Blank text has no first word: npos must not reach substr (found by fuzz/, issue #10).
   const size_t first_word = std::min(text.find_first_not_of(" \t\r\n"), text.size());
   if (!binary && text.substr(first_word, 5) != "solid")
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "{}: neither ASCII STL (which starts with 'solid') nor binary STL (84 + 50 n bytes for n "
         "triangles; this file has {} bytes)",
         path, text.size()));

@@ -25,13 +25,18 @@ std::string coordinate_problem(const Vec3& p) {
 
 void check_coordinates(const Vec3& p, std::string_view what) {
   if (const std::string problem = coordinate_problem(p); !problem.empty())
-    throw MeshError(fmt::format("{} {}", what, problem));
+    throw InputError(fmt::format("{} {}", what, problem));
 }
 
 void check_range(double value, double lo, double hi, std::string_view what) {
   if (!(value >= lo && value <= hi))
-    throw MeshError(
+    throw UsageError(
         fmt::format("{} must be a number from {:g} to {:g}, not {:g}", what, lo, hi, value));
+}
+
+void check_resolution(int n, std::string_view what) {
+  if (n < 1 || n > max_resolution)
+    throw UsageError(fmt::format("{} must be in 1..{}, not {}", what, max_resolution, n));
 }
 
 void check_extent(const HalfedgeMesh& mesh) {
@@ -42,7 +47,7 @@ void check_extent(const HalfedgeMesh& mesh) {
   }
   const double side = (hi - lo).maxCoeff();
   if (side < min_extent)
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "the mesh is too small: the longest side of its bounding box is {:g}, below {:g}, where "
         "normals can no longer be computed; scale the model up",
         side, min_extent));

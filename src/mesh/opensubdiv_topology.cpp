@@ -50,7 +50,7 @@ SurfaceRing surface_ring(const HalfedgeMesh& mesh, Vertex v) {
   }
   if (runs == 0) return ring;
   if (runs > 1) {
-    throw MeshError(fmt::format(
+    throw InputError(fmt::format(
         "vertex {} lies on the surface's boundary {} times (boundary loops meet there); "
         "OpenSubdiv would take it as non-manifold",
         v.idx + 1, runs));
@@ -91,7 +91,7 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const Halfedge
                                                                   BoundaryInterpolation boundary) {
   using namespace OpenSubdiv;
   if (mesh.has_garbage())
-    throw MeshError("internal error: OpenSubdiv needs a mesh without deleted elements");
+    throw Error("internal error: OpenSubdiv needs a mesh without deleted elements");
   std::vector<int> sizes, indices;
   for (Face f : mesh.surface_faces()) {
     sizes.push_back(mesh.degree(f));
@@ -128,7 +128,7 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const Halfedge
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
       Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, catmark_options(boundary))));
-  if (!refiner) throw MeshError("OpenSubdiv refused the mesh's topology");
+  if (!refiner) throw InputError("OpenSubdiv refused the mesh's topology");
   return refiner;
 }
 

@@ -96,7 +96,7 @@ void validate(const HalfedgeMesh& mesh) {
   std::string msg = "invalid mesh: " + problems[0];
   for (size_t i = 1; i < problems.size() && i < 5; ++i) msg += "; " + problems[i];
   if (problems.size() > 5) msg += fmt::format("; and {} more", problems.size() - 5);
-  throw MeshError(msg);
+  throw InputError(msg);
 }
 
 std::vector<int> connected_components(const HalfedgeMesh& mesh, int* count) {

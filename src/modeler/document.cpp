@@ -13,14 +13,6 @@ namespace stitch::modeler {
 
 namespace {
 
-bool is_remeshing(std::string_view line) {
-  const size_t start = line.find_first_not_of(" \t");
-  if (start == std::string_view::npos) return false;
-  const std::string_view rest = line.substr(start);
-  const std::string_view op = rest.substr(0, rest.find_first_of(" \t#"));
-  return op == "doo-sabin" || op == "vertex-insertion" || op == "catmull-clark" || op == "dual";
-}
-
 template <class Pred>
 void erase_if_key(std::unordered_map<int, KgonControl>& map, Pred dead) {
   std::erase_if(map, [&](const auto& entry) { return dead(entry.first); });
@@ -98,11 +90,24 @@ Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
     : state_{std::move(mesh), std::move(kgons)} {}
 
 Change Document::apply_operation(std::string_view line, OperationReport* report) {
+  const std::optional<Operation> op = parse_operation(state_.mesh, line);
+  if (!op) {
+    if (report) *report = {};
+    return {};
+  }
   std::string label(line);
   label.erase(0, label.find_first_not_of(" \t"));
-  if (is_remeshing(line)) {  // a new mesh, numbered afresh: keep both whole
+  return apply_operation(*op, std::move(label), report);
+}
+
+Change Document::apply_operation(const Operation& op, OperationReport* report) {
+  return apply_operation(op, format_operation(state_.mesh, op), report);
+}
+
+Change Document::apply_operation(const Operation& op, std::string label, OperationReport* report) {
+  if (operation_info(op).renumbers) {  // a new mesh, numbered afresh: keep both whole
     DocumentState before = state_;
-    const OperationReport r = stitch::apply_operation(state_.mesh, line, Census::counts_only);
+    const OperationReport r = stitch::apply_operation(state_.mesh, op, Census::counts_only);
     if (report) *report = r;
     prune_kgon_controls(state_.mesh, state_.kgons, true);
     record(Command{std::move(label), Snapshot{std::move(before), state_}});
@@ -111,7 +116,7 @@ Change Document::apply_operation(std::string_view line, OperationReport* report)
   OperationReport r;
   state_.mesh.begin_journal();
   try {
-    r = stitch::apply_operation(state_.mesh, line, Census::counts_only);
+    r = stitch::apply_operation(state_.mesh, op, Census::counts_only);
   } catch (...) {
     // The library promises no change; the journal makes sure of it.
     state_.mesh.apply(state_.mesh.end_journal(), false);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <utility>
 
+#include "stitch/error.hpp"
 #include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/io.hpp"
@@ -67,9 +68,12 @@ std::vector<FileEntry> list_folder(const fs::path& folder,
   std::vector<FileEntry> entries;
   std::error_code ec;
   fs::directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec);
-  if (ec) throw MeshError(fmt::format("{}: cannot list the folder: {}", folder.string(), ec.message()));
+  if (ec)
+    throw InputError(fmt::format("{}: cannot list the folder: {}", folder.string(), ec.message()));
   for (; it != fs::directory_iterator(); it.increment(ec)) {
-    if (ec) throw MeshError(fmt::format("{}: cannot list the folder: {}", folder.string(), ec.message()));
+    if (ec)
+      throw InputError(
+          fmt::format("{}: cannot list the folder: {}", folder.string(), ec.message()));
     const std::string name = it->path().filename().string();
     if (name.empty() || name[0] == '.') continue;
     std::error_code type_ec;
@@ -93,7 +97,7 @@ void FileBrowser::open_folder(const fs::path& folder) {
   if (ec) target = folder;
   try {
     entries_ = list_folder(target, all_files_ ? std::vector<std::string>{} : extensions_);
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     error_ = e.what();  // stays in the folder it was in
     return;
   }
@@ -216,7 +220,8 @@ void RecentFiles::add(const fs::path& path) {
   if (const fs::path folder = file_.parent_path(); !folder.empty()) {
     fs::create_directories(folder, ec);
     if (ec)
-      throw MeshError(fmt::format("{}: cannot create the folder: {}", folder.string(), ec.message()));
+      throw OutputError(
+          fmt::format("{}: cannot create the folder: {}", folder.string(), ec.message()));
   }
   write_file_atomically(file_.string(), [this](std::ostream& out) {
     for (const std::string& p : paths_) out << p << "\n";

@@ -33,35 +33,15 @@ std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions&
   return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
 }
 
-/// The K-gons that can read the corner points or normals of `moved_faces` (faces whose vertices
-/// moved or whose loops changed): the faces' own, those of their vertices and edges, and the
-/// face K-gons across their edges (which read the faces' normals when they have no plane).
-/// Then the corners whose nets read one of those K-gons: a net reads the K-gons of its face,
-/// its vertex, its edge and its previous edge.
+/// Everything that can read the corner points or normals of `moved_faces` (faces whose vertices
+/// moved or whose loops changed), besides the seed elements of `a`, by the library's rules.
 AffectedSet expand(const HalfedgeMesh& m, std::vector<Face> moved_faces, AffectedSet a) {
-  sort_unique(moved_faces);
-  for (Face f : moved_faces)
-    for (Halfedge h : m.face_loop(f)) {
-      a.vertices.push_back(m.origin(h));
-      a.edges.push_back(HalfedgeMesh::edge(h));
-      a.faces.push_back(m.face(HalfedgeMesh::twin(h)));
-    }
-  a.faces.insert(a.faces.end(), moved_faces.begin(), moved_faces.end());
-  sort_unique(a.faces);
-  sort_unique(a.vertices);
-  sort_unique(a.edges);
-  for (Face f : a.faces)
-    for (Halfedge h : m.face_loop(f)) a.corners.push_back(h);
-  for (Vertex v : a.vertices)
-    for (Halfedge h : m.vertex_fan(v)) a.corners.push_back(h);
-  for (Edge e : a.edges)
-    for (int side = 0; side < 2; ++side) {
-      const Halfedge h = HalfedgeMesh::halfedge(e, side);
-      a.corners.push_back(h);
-      a.corners.push_back(m.next(h));
-    }
-  std::erase_if(a.corners, [&](Halfedge h) { return m.is_hole(h); });  // no patch there
-  sort_unique(a.corners);
+  KgonElements kgons = kgons_reading(m, std::move(moved_faces));
+  kgons.merge({std::move(a.faces), std::move(a.vertices), std::move(a.edges)});
+  a.corners = nets_reading(m, kgons);
+  a.faces = std::move(kgons.faces);
+  a.vertices = std::move(kgons.vertices);
+  a.edges = std::move(kgons.edges);
   return a;
 }
 

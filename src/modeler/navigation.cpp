@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 
+#include "stitch/topology/operation.hpp"
+
 namespace stitch::modeler {
 
 namespace {
@@ -178,19 +180,8 @@ std::string describe(const HalfedgeMesh& mesh, const Pick& p) {
       return fmt::format("edge {} {}@{}", mesh.origin(h).idx + 1, mesh.target(h).idx + 1,
                          mesh.face(h).idx + 1);
     }
-    case PickKind::corner: {
-      const Halfedge h(p.index);
-      const Vertex v = mesh.origin(h);
-      const Face f = mesh.face(h);
-      int occurrence = 0, count = 0;
-      for (Halfedge g : mesh.face_loop(f))
-        if (mesh.origin(g) == v) {
-          ++count;
-          if (g == h) occurrence = count;
-        }
-      if (count > 1) return fmt::format("corner {}@{}#{}", v.idx + 1, f.idx + 1, occurrence);
-      return fmt::format("corner {}@{}", v.idx + 1, f.idx + 1);
-    }
+    case PickKind::corner:
+      return "corner " + corner_name(mesh, Halfedge(p.index));
   }
   return {};
 }

@@ -72,12 +72,6 @@ std::string rest_after_first_word(std::string_view line) {
   return std::string(line.substr(i, end - i + 1));
 }
 
-bool is_operation(const std::string& word) {
-  for (const std::string& op : operation_synopsis())
-    if (op.substr(0, op.find(' ')) == word) return true;
-  return false;
-}
-
 /// "X,Y,Z", as the command line writes points.
 Vec3 offset_from(const std::string& text) {
   std::vector<std::string> parts;
@@ -290,7 +284,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   const HalfedgeMesh& mesh = s.document.mesh();
   s.warning.clear();
 
-  if (is_operation(cmd)) {
+  if (find_operation(cmd)) {
     OperationReport report;
     const Change c = s.document.apply_operation(raw, &report);
     s.apply(c);
@@ -402,19 +396,14 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     result.message = cmd + " done";
   } else if (cmd == "method") {
     expect(w, 1, 1, "method mdc|asc|cc");
-    Method method;
-    try {
-      method = parse_method(w[1]);
-    } catch (const std::invalid_argument& e) {
-      throw MeshError(e.what());
-    }
+    const Method method = parse_method(w[1]);
     s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), method);
     s.display.method = method;
     s.check_surface_near({});  // the problems found, on the other method's patches
   } else if (cmd == "resolution") {
     expect(w, 1, 1, "resolution N");
     const int n = integer(w[1], "the resolution");
-    if (n < 1 || n > 64) throw MeshError(fmt::format("the resolution must be in 1..64, not {}", n));
+    limits::check_resolution(n, "the resolution");
     s.last_update = s.surface.set_resolution(s.document.mesh(), s.document.kgon_options(), n);
     s.display.resolution = n;
   } else if (cmd == "mode") {
@@ -424,8 +413,8 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     } else {
       try {
         s.display.mode = parse_shading_mode(w[1]);
-      } catch (const std::invalid_argument& e) {
-        throw MeshError(std::string(e.what()) + " (or input)");
+      } catch (const UsageError& e) {
+        throw UsageError(std::string(e.what()) + " (or input)");
       }
       s.display.input_polygons = false;
     }
@@ -448,17 +437,13 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     } else {
       try {
         s.display.split = parse_method(w[1]);
-      } catch (const std::invalid_argument& e) {
-        throw MeshError(std::string(e.what()) + " (or off)");
+      } catch (const UsageError& e) {
+        throw UsageError(std::string(e.what()) + " (or off)");
       }
     }
   } else if (cmd == "view") {
     expect(w, 1, 1, "view front|back|left|right|top|bottom|iso");
-    try {
-      s.view.set_standard(parse_view(w[1]), s.mesh_bounds(), s.view_aspect());
-    } catch (const std::invalid_argument& e) {
-      throw MeshError(e.what());
-    }
+    s.view.set_standard(parse_view(w[1]), s.mesh_bounds(), s.view_aspect());
   } else if (cmd == "frame") {
     expect(w, 1, 1, "frame all|selection");
     if (w[1] == "all") {
@@ -501,11 +486,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       throw MeshError(fmt::format(
           "usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
           extension_list(kSurfaceMeshExtensions)));
-    try {
-      result.message = export_surface(s, path);
-    } catch (const std::invalid_argument& e) {  // cc is not a set of Bézier patches
-      throw MeshError(e.what());
-    }
+    result.message = export_surface(s, path);
   } else if (cmd == "append") {
     std::string path = rest_after_first_word(strip_comment(raw));
     Vec3 offset = Vec3::Zero();
@@ -551,15 +532,11 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     expect(w, 0, 0, "quit");
     result.quit = true;
   } else {
-    throw MeshError(fmt::format(
-        "unknown command '{}' (operations: insert-edge, delete-edge, subdivide-edge, "
-        "collapse-edge, extrude-face, connect-faces, delete-face, open-face, fill-hole, crease, "
-        "corner, doo-sabin, vertex-insertion, catmull-clark, dual; modeler: primitive, "
-        "move-vertex, translate-vertex, select, kgon, undo, redo, method, resolution, mode, "
-        "overlay, split, view, frame, orbit, zoom, screenshot, save, export, open, append, info, "
-        "check, "
-        "quit)",
-        cmd));
+    throw UsageError(fmt::format(
+        "unknown command '{}' (operations: {}; modeler: primitive, move-vertex, "
+        "translate-vertex, select, kgon, undo, redo, method, resolution, mode, overlay, split, "
+        "view, frame, orbit, zoom, screenshot, save, export, open, append, info, check, quit)",
+        cmd, operation_names()));
   }
   if (!s.warning.empty()) {
     result.message = result.message.empty() ? s.warning : result.message + "; " + s.warning;
@@ -579,7 +556,7 @@ std::optional<ScriptError> run_script(Session& session, const std::vector<std::s
         if (quit) *quit = true;
         return std::nullopt;
       }
-    } catch (const std::exception& e) {  // MeshError, and std::invalid_argument from parsers
+    } catch (const Error& e) {
       return ScriptError{static_cast<int>(i) + 1, e.what()};
     }
   }

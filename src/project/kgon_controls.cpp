@@ -22,7 +22,7 @@ std::string kind_name(KgonKind kind) {
 }
 
 double number_of(const json& j, const char* key) {
-  if (!j.is_number()) throw MeshError(fmt::format("\"{}\" must be a number", key));
+  if (!j.is_number()) throw InputError(fmt::format("\"{}\" must be a number", key));
   return j.get<double>();
 }
 
@@ -33,11 +33,11 @@ int element_number(const HalfedgeMesh& m, KgonKind kind, const json& j) {
     const std::string text = j.get<std::string>();
     const auto words = split_words(text);
     if (words.size() != 2)
-      throw MeshError(fmt::format("edge \"{}\" is not \"V W\" or \"V W@F\"", limits::quoted(text)));
+      throw InputError(fmt::format("edge \"{}\" is not \"V W\" or \"V W@F\"", limits::quoted(text)));
     return parse_edge(m, words[0], words[1]).idx;
   }
   if (!j.is_number_integer())
-    throw MeshError(fmt::format("\"{}\" must be a whole number{}", kind_name(kind),
+    throw InputError(fmt::format("\"{}\" must be a whole number{}", kind_name(kind),
                                 kind == KgonKind::edge ? " or \"V W\"" : ""));
   const long long n = j.get<long long>();
   const int count = kind == KgonKind::face     ? m.face_capacity()
@@ -48,10 +48,10 @@ int element_number(const HalfedgeMesh& m, KgonKind kind, const json& j) {
                                  : kind == KgonKind::vertex ? !m.is_deleted(Vertex(i))
                                                             : !m.is_deleted(Edge(i)));
   if (!exists)
-    throw MeshError(fmt::format("there is no {} {} (the mesh has {} {}s, numbered from 1)",
+    throw InputError(fmt::format("there is no {} {} (the mesh has {} {}s, numbered from 1)",
                                 kind_name(kind), n, count, kind_name(kind)));
   if (kind == KgonKind::face && m.is_hole(Face(i)))
-    throw MeshError(
+    throw InputError(
         fmt::format("face {} is a hole (a boundary loop of the input): it has no K-gon", n));
   return i;
 }
@@ -64,30 +64,30 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
   try {
     const json j = json::parse(text);
     if (!j.is_object() || !j.contains("controls"))
-      throw MeshError("expected an object with a \"controls\" array (docs/modeler.md)");
+      throw InputError("expected an object with a \"controls\" array (docs/modeler.md)");
     for (const auto& [key, value] : j.items()) {
       if (key == "format") {
         if (value != "stitch-kgon-controls")
-          throw MeshError("\"format\" must be \"stitch-kgon-controls\"");
+          throw InputError("\"format\" must be \"stitch-kgon-controls\"");
       } else if (key != "controls") {
-        throw MeshError(fmt::format("unknown member \"{}\" (format, controls)", key));
+        throw InputError(fmt::format("unknown member \"{}\" (format, controls)", key));
       }
     }
     const json& list = j["controls"];
-    if (!list.is_array()) throw MeshError("\"controls\" must be an array");
+    if (!list.is_array()) throw InputError("\"controls\" must be an array");
     KgonOptions out = kgons;
     // Which entry set each element's control, so a repeated element can name both.
     std::map<std::pair<KgonKind, int>, size_t> seen;
     for (size_t n = 0; n < list.size(); ++n) {
       where = fmt::format("control {}: ", n + 1);
       const json& e = list[n];
-      if (!e.is_object()) throw MeshError("an entry must be an object");
+      if (!e.is_object()) throw InputError("an entry must be an object");
       std::optional<KgonKind> kind;
       int element = -1;
       KgonControl c;
       for (const auto& [key, value] : e.items()) {
         if (key == "face" || key == "vertex" || key == "edge") {
-          if (kind) throw MeshError("name one element: face, vertex or edge");
+          if (kind) throw InputError("name one element: face, vertex or edge");
           kind = key == "face"     ? KgonKind::face
                  : key == "vertex" ? KgonKind::vertex
                                    : KgonKind::edge;
@@ -100,25 +100,25 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
           c.rotate_deg = number_of(value, "rotate");
         } else if (key == "offset") {
           if (!value.is_array() || value.size() != 3)
-            throw MeshError("\"offset\" must be an array of 3 numbers");
+            throw InputError("\"offset\" must be an array of 3 numbers");
           c.offset = Vec3(number_of(value[0], "offset"), number_of(value[1], "offset"),
                           number_of(value[2], "offset"));
         } else if (key == "regularize") {
-          if (!value.is_boolean()) throw MeshError("\"regularize\" must be true or false");
+          if (!value.is_boolean()) throw InputError("\"regularize\" must be true or false");
           c.regularize = value.get<bool>();
         } else {
-          throw MeshError(fmt::format(
+          throw InputError(fmt::format(
               "unknown member \"{}\" (face, vertex, edge, scale, rotate, offset, regularize)",
               key));
         }
       }
-      if (!kind) throw MeshError("name the element: \"face\", \"vertex\" or \"edge\"");
+      if (!kind) throw InputError("name the element: \"face\", \"vertex\" or \"edge\"");
       limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, "the scale");
       limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                           "the rotation");
       limits::check_coordinates(c.offset, "the offset");
       if (const auto [it, fresh] = seen.try_emplace({*kind, element}, n + 1); !fresh)
-        throw MeshError(
+        throw InputError(
             fmt::format("control {} already sets this {}", it->second, kind_name(*kind)));
       auto& map = *kind == KgonKind::face     ? out.face
                   : *kind == KgonKind::vertex ? out.vertex
@@ -131,11 +131,9 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
     // "[json.exception.parse_error.101] parse error at line 2, ...": the tag means nothing to a
     // user.
     if (what.rfind("[json.exception.", 0) == 0) what.erase(0, what.find("] ") + 2);
-    throw MeshError(fmt::format("{}: {}{}", source, where, what));
-  } catch (const std::invalid_argument& e) {
-    throw MeshError(fmt::format("{}: {}{}", source, where, e.what()));
-  } catch (const MeshError& e) {
-    throw MeshError(fmt::format("{}: {}{}", source, where, e.what()));
+    throw InputError(fmt::format("{}: {}{}", source, where, what));
+  } catch (const Error& e) {
+    throw_with_message(e, fmt::format("{}: {}{}", source, where, e.what()));
   }
 }
 

@@ -22,7 +22,7 @@ json vec_json(const Vec3& p) {
 }
 
 Vec3 vec_from(const json& j, const std::string& what) {
-  if (!j.is_array() || j.size() != 3) throw MeshError(what + " must be an array of 3 numbers");
+  if (!j.is_array() || j.size() != 3) throw InputError(what + " must be an array of 3 numbers");
   const Vec3 p(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
   limits::check_coordinates(p, what);
   return p;
@@ -117,10 +117,10 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
   try {
     const json j = json::parse(text);
     if (!j.is_object() || j.value("format", "") != kFormat)
-      throw MeshError(
+      throw InputError(
           fmt::format("not a stitch modeler project (\"format\" is not \"{}\")", kFormat));
     if (j.value("version", 0) != 1)
-      throw MeshError(fmt::format("unsupported project version {}", j.value("version", 0)));
+      throw InputError(fmt::format("unsupported project version {}", j.value("version", 0)));
     ProjectFile p;
     PolygonSoup soup;
     soup.source = source;
@@ -142,19 +142,19 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
     for (const json& c : k.at("faces")) {
       const int f = c.at("face").get<int>();
       if (f < 0 || f >= soup_faces)
-        throw MeshError(fmt::format("K-gon control of face {}: no such face", f));
+        throw InputError(fmt::format("K-gon control of face {}: no such face", f));
       p.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f));
     }
     for (const json& c : k.at("vertices")) {
       const int v = c.at("vertex").get<int>();
       if (v < 0 || v >= int(vertex_of.size()) || vertex_of[v] < 0)
-        throw MeshError(fmt::format("K-gon control of vertex {}: no such vertex", v));
+        throw InputError(fmt::format("K-gon control of vertex {}: no such vertex", v));
       p.kgons.vertex[vertex_of[v]] = control_from(c, fmt::format("K-gon control of vertex {}", v));
     }
     for (const json& c : k.at("edges")) {
       const int f = c.at("face").get<int>(), i = c.at("corner").get<int>();
       if (f < 0 || f >= soup_faces || i < 0 || i >= m.degree(Face(f)))
-        throw MeshError(
+        throw InputError(
             fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
       const Halfedge h = m.face_loop(Face(f))[i];
       p.kgons.edge[HalfedgeMesh::edge(h).idx] =
@@ -163,20 +163,20 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
     if (j.contains("display") && j["display"].contains("method")) {
       try {
         p.method = parse_method(j["display"]["method"].get<std::string>());
-      } catch (const std::invalid_argument& e) {
-        throw MeshError(fmt::format("display: {}", e.what()));
+      } catch (const UsageError& e) {
+        throw InputError(fmt::format("display: {}", e.what()));
       }
     }
     for (const auto& [name, value] : j.items())
       if (name != "format" && name != "version" && name != "mesh" && name != "kgons")
         p.sections[name] = value.dump();
     return p;
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     const std::string msg = e.what();
     if (msg.rfind(source, 0) == 0) throw;
-    throw MeshError(fmt::format("{}: {}", source, msg));
+    throw_with_message(e, fmt::format("{}: {}", source, msg));
   } catch (const std::exception& e) {  // JSON syntax and type errors, missing members
-    throw MeshError(fmt::format("{}: {}", source, e.what()));
+    throw InputError(fmt::format("{}: {}", source, e.what()));
   }
 }
 

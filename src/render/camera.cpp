@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 namespace {
@@ -42,7 +44,7 @@ View parse_view(const std::string& name) {
   for (size_t i = 0; i < kViewNames.size(); ++i) {
     if (name == kViewNames[i]) return static_cast<View>(i);
   }
-  throw std::invalid_argument("unknown view '" + name +
+  throw UsageError("unknown view '" + name +
                               "' (expected front, back, left, right, top, bottom or iso)");
 }
 
@@ -120,7 +122,7 @@ Camera frame_view(View view, const BoundingBox& box, double aspect) {
 
 Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box) {
   if ((eye - target).norm() <= 1e-12 * std::max(1.0, eye.norm())) {
-    throw std::invalid_argument("the camera's eye and target are the same point");
+    throw UsageError("the camera's eye and target are the same point");
   }
   Camera camera;
   camera.eye = eye;

@@ -9,6 +9,8 @@
 
 #include "stitch/render/gl_context.hpp"
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 namespace {
@@ -56,14 +58,14 @@ struct Framebuffer {
 Image render_image(const Renderer& renderer, const Camera& camera, const RenderStyle& style,
                    int width, int height, const Antialiasing& aa) {
   if (width < 1 || height < 1) {
-    throw std::invalid_argument(fmt::format("image size {}x{} is empty", width, height));
+    throw UsageError(fmt::format("image size {}x{} is empty", width, height));
   }
   GLint max_samples = 1, max_size = 0, previous_fbo = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo);
   if (width > max_size || height > max_size) {
-    throw std::invalid_argument(
+    throw UsageError(
         fmt::format("image size {}x{} exceeds the OpenGL limit of {}", width, height, max_size));
   }
   int factor = std::max(1, aa.supersample);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 namespace {
@@ -37,7 +39,7 @@ ImageSize parse_image_size(const std::string& text, int max_side) {
   if (x == std::string::npos || !parse_whole(text.substr(0, x), size.width) ||
       !parse_whole(text.substr(x + 1), size.height) || size.width < 1 || size.height < 1 ||
       size.width > max_side || size.height > max_side) {
-    throw std::invalid_argument("image size '" + text +
+    throw UsageError("image size '" + text +
                                 "' is not WxH with whole numbers from 1 to " +
                                 std::to_string(max_side) + " (e.g. 800x600)");
   }
@@ -50,7 +52,7 @@ Vec3 parse_point(const std::string& text, const std::string& what) {
   bool ok = parts.size() == 3;
   for (size_t i = 0; ok && i < 3; ++i) ok = parse_whole(parts[i], p[static_cast<int>(i)]);
   if (!ok) {
-    throw std::invalid_argument(what + " '" + text +
+    throw UsageError(what + " '" + text +
                                 "' is not three finite numbers x,y,z (e.g. 1.5,0,-2)");
   }
   return p;
@@ -70,7 +72,7 @@ void parse_overlays(const std::string& list, RenderStyle& style) {
     } else if (name == "ev") {
       style.markers = true;
     } else {
-      throw std::invalid_argument("unknown overlay '" + name + "' in --show '" + list +
+      throw UsageError("unknown overlay '" + name + "' in --show '" + list +
                                   "' (expected a comma-separated list of mesh, kgons, nets, ev, "
                                   "tess)");
     }

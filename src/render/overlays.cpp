@@ -9,6 +9,8 @@
 #include "stitch/analysis/sectors.hpp"
 #include "stitch/mesh/polygon.hpp"
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 void LineSet::add_loop(const std::vector<Vec3>& loop, const Colour& c) {
@@ -69,7 +71,7 @@ std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
 
 const ExtraordinaryPoint& highest_valence_point(const std::vector<ExtraordinaryPoint>& points) {
   if (points.empty()) {
-    throw std::invalid_argument(
+    throw UsageError(
         "the mesh has no extraordinary point (every vertex has valence 4 and every face 4 sides)");
   }
   const ExtraordinaryPoint* best = &points.front();
@@ -241,7 +243,7 @@ std::vector<Eigen::Vector2d> input_face_texcoords(const HalfedgeMesh& mesh, cons
     for (const Halfedge h : loop) {
       const int i = static_cast<size_t>(h.idx) < uvs.index.size() ? uvs.index[h.idx] : -1;
       if (i < 0 || i >= nuv)
-        throw MeshError(fmt::format("face {} has no texture coordinates", f.idx + 1));
+        throw InputError(fmt::format("face {} has no texture coordinates", f.idx + 1));
       out.push_back(uvs.uv[i]);
       centre += uvs.uv[i];
     }

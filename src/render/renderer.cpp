@@ -13,6 +13,8 @@
 #include "shaders.hpp"
 #include "stitch/render/gl_context.hpp"
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 namespace {
@@ -84,7 +86,7 @@ SurfaceVertex surface_vertex(const SurfaceMesh& s, int i) {
   return v;
 }
 
-void check_surface(const SurfaceMesh& s) {
+void check_attributes(const SurfaceMesh& s) {
   const size_t n = s.positions.size();
   if (s.normals.size() != n || (!s.patch.empty() && s.patch.size() != n) ||
       (!s.level.empty() && s.level.size() != n)) {
@@ -155,7 +157,7 @@ ShadingMode parse_shading_mode(const std::string& name) {
   for (size_t i = 0; i < kModeNames.size(); ++i) {
     if (name == kModeNames[i]) return static_cast<ShadingMode>(i);
   }
-  throw std::invalid_argument("unknown mode '" + name +
+  throw UsageError("unknown mode '" + name +
                               "' (expected shaded, zebra, isophote, levels, patches or checker)");
 }
 
@@ -281,7 +283,7 @@ void set_surface_attributes() {
 }  // namespace
 
 void Renderer::set_surface(const SurfaceMesh& s) {
-  check_surface(s);
+  check_attributes(s);
   check_quads(s);
   const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
   std::vector<std::uint32_t> indices;
@@ -311,7 +313,7 @@ void Renderer::set_surface(const SurfaceMesh& s) {
 
 void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
                                  int quads_per_block) {
-  check_surface(s);
+  check_attributes(s);
   check_quads(s);
   if (vertices_per_block < 1 || quads_per_block < 1 || s.num_vertices() % vertices_per_block != 0 ||
       static_cast<int>(s.quads.size()) != s.num_vertices() / vertices_per_block * quads_per_block)
@@ -349,7 +351,7 @@ void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> bloc
   Impl& r = *impl_;
   if (r.block_vertices == 0)
     throw std::logic_error("update_surface_blocks: no block surface has been uploaded");
-  check_surface(s);
+  check_attributes(s);
   const int per_v = r.block_vertices, per_q = r.block_quads;
   if (s.num_vertices() % per_v != 0 ||
       static_cast<int>(s.quads.size()) != s.num_vertices() / per_v * per_q)
@@ -412,7 +414,7 @@ void Renderer::set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoor
 }
 
 void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
-  check_surface(s);
+  check_attributes(s);
   if (s.num_vertices() != impl_->surface_vertices || first < 0 || count < 0 ||
       first + count > s.num_vertices()) {
     throw std::out_of_range(

@@ -135,7 +135,7 @@ PatchSet read_bezier_json(const std::string& path) {
   if (!method.is_string()) throw r.error("\"method\"", "is not a string");
   try {
     set.method = parse_method(method.get<std::string>());
-  } catch (const std::invalid_argument& e) {
+  } catch (const UsageError& e) {
     throw r.error("\"method\"", e.what());
   }
   set.depth = r.integer(r.member(doc, "depth", "the file"), "\"depth\"", 0);

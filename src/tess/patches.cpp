@@ -1,3 +1,4 @@
+#include "stitch/error.hpp"
 #include "stitch/tess/patches.hpp"
 
 #include <fmt/format.h>
@@ -116,13 +117,13 @@ int PatchSet::num_exact() const {
 PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
                         const PatchSetOptions& options) {
   if (surface.method() == Method::cc)
-    throw std::invalid_argument(
+    throw UsageError(
         "the Catmull-Clark surface (--method cc) is not a set of Bezier patches; use mdc or asc");
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-    throw std::invalid_argument(
+    throw UsageError(
         fmt::format("the tolerance must be a number > 0 (got {})", options.tolerance));
   if (!(options.angle_tolerance_deg > 0) || !std::isfinite(options.angle_tolerance_deg))
-    throw std::invalid_argument(fmt::format("the angle tolerance must be a number > 0 (got {})",
+    throw UsageError(fmt::format("the angle tolerance must be a number > 0 (got {})",
                                             options.angle_tolerance_deg));
   PatchSet set;
   set.method = surface.method();

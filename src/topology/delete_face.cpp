@@ -9,12 +9,15 @@ namespace stitch {
 
 namespace td = topology_detail;
 
-void delete_face(HalfedgeMesh& mesh, Face f) {
-  td::check_face(mesh, f, "delete-face");
+namespace {
+
+/// Plans deleting f: the refusal, or (with `delta`) the edited copy's journal to apply.
+Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, HalfedgeMesh::Delta* delta) {
+  if (Verdict v = td::exists(mesh, f, "delete-face"); !v) return v;
   // Merging a hole with its neighbours would leave one loop that is partly boundary and partly
   // surface: neither a hole nor a face says it, so the user picks (fill-hole or open-face).
   if (mesh.is_hole(f))
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "delete-face: face {} is a hole (a boundary loop of the surface); fill-hole {} makes it a "
         "face first",
         f.idx + 1, f.idx + 1));
@@ -26,19 +29,34 @@ void delete_face(HalfedgeMesh& mesh, Face f) {
   for (Halfedge h : m.face_loop(f)) gone[HalfedgeMesh::edge(h).idx] = 1;
   const td::EdgeRemoval plan = td::plan_edge_removal(m, std::move(gone));
   if (plan.kept.empty())
-    throw MeshError(fmt::format("delete-face: deleting face {} would leave nothing", f.idx + 1));
+    return Verdict::refused(
+        fmt::format("delete-face: deleting face {} would leave nothing", f.idx + 1));
   for (int g : plan.touched_faces)
     if (m.is_hole(Face(g)))
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "delete-face: face {} borders hole {} (the surface's boundary); deleting it would merge "
           "the hole with the faces around it (open-face {} makes face {} part of the hole)",
           f.idx + 1, g + 1, f.idx + 1, f.idx + 1));
   td::remove_edges(m, plan);
   const auto problems = find_problems(m);
   if (!problems.empty())
-    throw MeshError(fmt::format("delete-face: deleting face {} would not give a valid mesh: {}",
-                                f.idx + 1, problems.front()));
-  mesh.apply(m.end_journal(), true);
+    return Verdict::refused(
+        fmt::format("delete-face: deleting face {} would not give a valid mesh: {}", f.idx + 1,
+                    problems.front()));
+  if (delta) *delta = m.end_journal();
+  return {};
+}
+
+}  // namespace
+
+Verdict can_delete_face(const HalfedgeMesh& mesh, Face f) {
+  return plan_delete_face(mesh, f, nullptr);
+}
+
+void delete_face(HalfedgeMesh& mesh, Face f) {
+  HalfedgeMesh::Delta delta;
+  plan_delete_face(mesh, f, &delta).throw_if_refused();
+  mesh.apply(delta, true);
 }
 
 }  // namespace stitch

@@ -8,8 +8,12 @@ namespace stitch {
 
 namespace td = topology_detail;
 
+Verdict can_subdivide_edge(const HalfedgeMesh& mesh, Edge e) {
+  return td::exists(mesh, e, "subdivide-edge");
+}
+
 SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e) {
-  td::check_edge(mesh, e, "subdivide-edge");
+  can_subdivide_edge(mesh, e).throw_if_refused();
   const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
   const Vertex a = mesh.origin(h), b = mesh.origin(t);
   const Vertex m = mesh.add_vertex(0.5 * (mesh.position(a) + mesh.position(b)));
@@ -30,17 +34,17 @@ SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e) {
   return {m, HalfedgeMesh::edge(g)};
 }
 
-void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
-  td::check_edge(mesh, e, "collapse-edge");
+Verdict can_collapse_edge(const HalfedgeMesh& mesh, Edge e, Vertex keep) {
+  if (Verdict v = td::exists(mesh, e, "collapse-edge"); !v) return v;
   Halfedge h = HalfedgeMesh::halfedge(e, 0);
   if (mesh.origin(h) != keep) h = HalfedgeMesh::twin(h);
   if (mesh.origin(h) != keep)
-    throw MeshError(
+    return Verdict::refused(
         fmt::format("collapse-edge: vertex {} is not an end of edge {}", keep.idx + 1, e.idx + 1));
   const Halfedge t = HalfedgeMesh::twin(h);
   const Vertex a = keep, b = mesh.origin(t);
   if (td::edges_between(mesh, a, b).size() > 1)
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "collapse-edge: vertices {} and {} are joined by more than one edge; collapsing one would "
         "make the others loops",
         a.idx + 1, b.idx + 1));
@@ -56,13 +60,13 @@ void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
   const int holes_after =
       hole_corners(a) + hole_corners(b) - (mesh.is_hole(h) ? 1 : 0) - (mesh.is_hole(t) ? 1 : 0);
   if (holes_after > 1)
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "collapse-edge: vertices {} and {} both lie on the boundary but edge {} does not; "
         "merging them would pinch the boundary at one vertex",
         a.idx + 1, b.idx + 1, e.idx + 1));
   for (Halfedge side : {h, t})
     if (mesh.is_hole(side) && mesh.degree(mesh.face(side)) <= 3)
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "collapse-edge: hole {} would be left with 2 sides, a slit that a written file cannot "
           "tell from a closed seam",
           mesh.face(side).idx + 1));
@@ -73,11 +77,20 @@ void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
     if (c == a) continue;
     for (Edge y : td::edges_between(mesh, a, c))
       if (mesh.is_boundary(y) || mesh.is_boundary(HalfedgeMesh::edge(x)))
-        throw MeshError(fmt::format(
+        return Verdict::refused(fmt::format(
             "collapse-edge: vertices {} and {} are both joined to vertex {}, on the boundary; "
             "the two edges would join the same vertices and would not read back ({})",
             a.idx + 1, b.idx + 1, c.idx + 1, td::kBesideBoundary));
   }
+  return {};
+}
+
+void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep) {
+  can_collapse_edge(mesh, e, keep).throw_if_refused();
+  Halfedge h = HalfedgeMesh::halfedge(e, 0);
+  if (mesh.origin(h) != keep) h = HalfedgeMesh::twin(h);
+  const Halfedge t = HalfedgeMesh::twin(h);
+  const Vertex a = keep, b = mesh.origin(t);
 
   const Halfedge ph = mesh.prev(h), nh = mesh.next(h), pt = mesh.prev(t), nt = mesh.next(t);
   for (Halfedge o : mesh.vertex_fan(b))

@@ -18,42 +18,50 @@ Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
   return len > 0 ? Vec3(n / len) : Vec3::Zero();
 }
 
-ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale) {
-  td::check_face(mesh, f, "extrude-face");
+Verdict can_extrude_face(const HalfedgeMesh& mesh, Face f, double distance, double scale) {
+  if (Verdict v = td::exists(mesh, f, "extrude-face"); !v) return v;
   if (!std::isfinite(distance))
-    throw MeshError("extrude-face: the distance must be a finite number");
+    return Verdict::refused("extrude-face: the distance must be a finite number");
   if (!std::isfinite(scale) || scale <= 0)
-    throw MeshError("extrude-face: the scale must be a positive number");
+    return Verdict::refused("extrude-face: the scale must be a positive number");
   const Vec3 n = face_normal(mesh, f);
   if (n.isZero())
-    throw MeshError(fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
+    return Verdict::refused(
+        fmt::format("extrude-face: face {} has no normal (zero area)", f.idx + 1));
   const std::vector<Halfedge> loop = mesh.face_loop(f);
   const int k = static_cast<int>(loop.size());
   // Every corner gets its own new vertex, so a loop that visits a vertex twice would put two
   // new vertices at the same point: a degenerate surface.
-  for (int i = 0; i < k; ++i)
-    for (int j = i + 1; j < k; ++j)
-      if (mesh.origin(loop[i]) == mesh.origin(loop[j]))
-        throw MeshError(fmt::format(
-            "extrude-face: face {} visits vertex {} twice (its loop touches itself); its "
-            "extruded top would have two vertices at the same point",
-            f.idx + 1, mesh.origin(loop[i]).idx + 1));
+  if (const Vertex twice = td::vertex_visited_twice(mesh, f); twice.valid())
+    return Verdict::refused(fmt::format(
+        "extrude-face: face {} visits vertex {} twice (its loop touches itself); its extruded "
+        "top would have two vertices at the same point",
+        f.idx + 1, twice.idx + 1));
+  // Checked before the mesh changes, so a refused extrusion leaves it as it was.
+  const Vec3 centre = td::face_centroid(mesh, f);
+  for (int i = 0; i < k; ++i) {
+    const Vec3 p = mesh.position(mesh.origin(loop[i]));
+    const Vec3 top = centre + scale * (p - centre) + distance * n;
+    if (const std::string problem = limits::coordinate_problem(top); !problem.empty())
+      return Verdict::refused(fmt::format("extrude-face: the extruded corner {} of face {} {}",
+                                          i + 1, f.idx + 1, problem));
+  }
+  return {};
+}
+
+ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale) {
+  can_extrude_face(mesh, f, distance, scale).throw_if_refused();
+  const Vec3 n = face_normal(mesh, f);
+  const std::vector<Halfedge> loop = mesh.face_loop(f);
+  const int k = static_cast<int>(loop.size());
 
   ExtrudeResult result;
   result.degree = k;
   const Vec3 centre = td::face_centroid(mesh, f);
-  // Checked before the mesh changes, so a refused extrusion leaves it as it was.
-  std::vector<Vec3> points(k);
-  for (int i = 0; i < k; ++i) {
-    const Vec3 p = mesh.position(mesh.origin(loop[i]));
-    points[i] = centre + scale * (p - centre) + distance * n;
-    limits::check_coordinates(
-        points[i],
-        fmt::format("extrude-face: the extruded corner {} of face {}", i + 1, f.idx + 1));
-  }
   std::vector<Vertex> top(k);
   for (int i = 0; i < k; ++i) {
-    top[i] = mesh.add_vertex(points[i]);
+    const Vec3 p = mesh.position(mesh.origin(loop[i]));
+    top[i] = mesh.add_vertex(centre + scale * (p - centre) + distance * n);
     if (i == 0) result.first_vertex = top[i].idx;
   }
   std::vector<Face> side(k);

@@ -24,30 +24,35 @@ bool loop_contains(const HalfedgeMesh& mesh, Halfedge from, Halfedge target) {
 
 }  // namespace
 
-InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b) {
-  td::check_corner(mesh, a, "insert-edge");
-  td::check_corner(mesh, b, "insert-edge");
+Verdict can_insert_edge(const HalfedgeMesh& mesh, Corner a, Corner b) {
+  for (Corner c : {a, b})
+    if (Verdict v = td::exists(mesh, c, "insert-edge"); !v) return v;
   const Vertex va = mesh.origin(a), vb = mesh.origin(b);
-  if (a == b) throw MeshError("insert-edge: the two corners are the same corner");
+  if (a == b) return Verdict::refused("insert-edge: the two corners are the same corner");
   if (va == vb)
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "insert-edge: both corners are at vertex {}; the edge would be a loop", va.idx + 1));
-
-  const Face fa = mesh.face(a), fb = mesh.face(b);
   // Split or merged, a hole would end up on both sides of the new edge, which then bounds no
   // surface; filling the hole first says what the user means.
-  for (Face f : {fa, fb})
+  for (Face f : {mesh.face(a), mesh.face(b)})
     if (mesh.is_hole(f))
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "insert-edge: face {} is a hole (a boundary loop of the surface); an edge into it would "
           "have the hole on both sides (fill-hole {} makes it a face first)",
           f.idx + 1, f.idx + 1));
   for (Edge x : td::edges_between(mesh, va, vb))
     if (mesh.is_boundary(x))
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "insert-edge: vertices {} and {} are joined by boundary edge {}; a second edge beside "
           "it would not read back ({})",
           va.idx + 1, vb.idx + 1, x.idx + 1, td::kBesideBoundary));
+  return {};
+}
+
+InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b) {
+  can_insert_edge(mesh, a, b).throw_if_refused();
+  const Vertex va = mesh.origin(a), vb = mesh.origin(b);
+  const Face fa = mesh.face(a), fb = mesh.face(b);
   const Halfedge pa = mesh.prev(a), pb = mesh.prev(b);
   const Halfedge h = mesh.add_edge(va, vb), t = HalfedgeMesh::twin(h);
   // Splice: ... pa -> h -> b ...   and   ... pb -> t -> a ...
@@ -83,27 +88,32 @@ InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b) {
   return result;
 }
 
-DeleteEdgeResult delete_edge(HalfedgeMesh& mesh, Edge e) {
-  td::check_edge(mesh, e, "delete-edge");
+Verdict can_delete_edge(const HalfedgeMesh& mesh, Edge e) {
+  if (Verdict v = td::exists(mesh, e, "delete-edge"); !v) return v;
   const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
-  const Vertex va = mesh.origin(h), vb = mesh.origin(t);
   // The merged face would hold both a hole and a surface face: neither reading (the face
   // swallowed by the hole, or the hole filled) is what deleting one edge says.
   if (mesh.is_boundary(e)) {
     const bool hole_h = mesh.is_hole(h);
     const Face hole = mesh.face(hole_h ? h : t), face = mesh.face(hole_h ? t : h);
-    throw MeshError(fmt::format(
+    return Verdict::refused(fmt::format(
         "delete-edge: edge {} lies on the boundary (face {} is a hole); deleting it would merge "
         "face {} into the hole (open-face {} does that)",
         e.idx + 1, hole.idx + 1, face.idx + 1, face.idx + 1));
   }
-  for (Vertex v : {va, vb})
+  for (Vertex v : {mesh.origin(h), mesh.origin(t)})
     if (mesh.valence(v) <= 2)
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "delete-edge: vertex {} has valence 2 and would be left with one edge (collapse-edge "
           "removes such a vertex)",
           v.idx + 1));
+  return {};
+}
 
+DeleteEdgeResult delete_edge(HalfedgeMesh& mesh, Edge e) {
+  can_delete_edge(mesh, e).throw_if_refused();
+  const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
+  const Vertex va = mesh.origin(h), vb = mesh.origin(t);
   const Face fh = mesh.face(h), ft = mesh.face(t);
   const Halfedge ph = mesh.prev(h), nh = mesh.next(h), pt = mesh.prev(t), nt = mesh.next(t);
   // Keep the end vertices' start half-edges off the deleted edge.

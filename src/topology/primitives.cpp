@@ -89,9 +89,9 @@ HalfedgeMesh make_dodecahedron() {
 }
 
 HalfedgeMesh make_prism(int n) {
-  if (n < 2) throw MeshError(fmt::format("prism: needs n >= 2 sides, got {}", n));
+  if (n < 2) throw UsageError(fmt::format("prism: needs n >= 2 sides, got {}", n));
   if (n > limits::max_primitive_faces - 2)
-    throw MeshError(
+    throw UsageError(
         fmt::format("prism: at most {} sides (a primitive has at most {} faces), got {}",
                     limits::max_primitive_faces - 2, limits::max_primitive_faces, n));
   std::vector<Vec3> pos;
@@ -120,9 +120,9 @@ HalfedgeMesh make_prism(int n) {
 
 HalfedgeMesh make_torus(int m, int n, double major_radius, double minor_radius) {
   if (m < 3 || n < 3)
-    throw MeshError(fmt::format("torus: needs m, n >= 3 segments, got {} x {}", m, n));
+    throw UsageError(fmt::format("torus: needs m, n >= 3 segments, got {} x {}", m, n));
   if (static_cast<long long>(m) * n > limits::max_primitive_faces)
-    throw MeshError(fmt::format("torus: at most {} faces (m x n), got {} x {}",
+    throw UsageError(fmt::format("torus: at most {} faces (m x n), got {} x {}",
                                 limits::max_primitive_faces, m, n));
   PolygonSoup soup;
   for (int i = 0; i < m; ++i)
@@ -141,7 +141,7 @@ HalfedgeMesh make_torus(int m, int n, double major_radius, double minor_radius) 
 HalfedgeMesh make_primitive(const std::string& name, const std::vector<int>& params) {
   auto expect = [&](size_t count, const char* usage) {
     if (params.size() != count)
-      throw MeshError(
+      throw UsageError(
           fmt::format("primitive {}: expected {} parameter(s): {}", name, count, usage));
   };
   if (name == "tetrahedron") return expect(0, "none"), make_tetrahedron();
@@ -153,7 +153,7 @@ HalfedgeMesh make_primitive(const std::string& name, const std::vector<int>& par
   if (name == "torus")
     return expect(2, "M N (segments around and across, each >= 3)"),
            make_torus(params[0], params[1]);
-  throw MeshError(
+  throw UsageError(
       fmt::format("unknown primitive '{}' (known: tetrahedron, cube, octahedron, "
                   "dodecahedron, icosahedron, prism N, torus M N)",
                   name));

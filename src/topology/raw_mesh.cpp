@@ -25,7 +25,7 @@ HalfedgeMesh build_raw(const RawMesh& raw, const std::string& what) {
   }
   const auto problems = find_problems(mesh);
   if (!problems.empty())
-    throw MeshError(fmt::format("{} would not give a valid mesh: {}", what, problems.front()));
+    throw TopologyError(fmt::format("{} would not give a valid mesh: {}", what, problems.front()));
   return mesh;
 }
 
@@ -33,6 +33,14 @@ HalfedgeMesh compacted(const HalfedgeMesh& mesh) {
   HalfedgeMesh copy = mesh;
   if (copy.has_garbage()) copy.garbage_collection();
   return copy;
+}
+
+Vertex vertex_visited_twice(const HalfedgeMesh& mesh, Face f) {
+  const std::vector<Halfedge> loop = mesh.face_loop(f);
+  for (size_t i = 0; i < loop.size(); ++i)
+    for (size_t j = i + 1; j < loop.size(); ++j)
+      if (mesh.origin(loop[i]) == mesh.origin(loop[j])) return mesh.origin(loop[i]);
+  return Vertex();
 }
 
 Vec3 face_centroid(const HalfedgeMesh& mesh, Face f) {
@@ -137,24 +145,28 @@ std::vector<Face> remove_edges(HalfedgeMesh& m, const EdgeRemoval& plan) {
   return result;
 }
 
-void check_vertex(const HalfedgeMesh& mesh, Vertex v, const char* op) {
+Verdict exists(const HalfedgeMesh& mesh, Vertex v, const char* op) {
   if (v.idx < 0 || v.idx >= mesh.vertex_capacity() || mesh.is_deleted(v))
-    throw MeshError(fmt::format("{}: there is no vertex {}", op, v.idx + 1));
+    return Verdict::refused(fmt::format("{}: there is no vertex {}", op, v.idx + 1));
+  return {};
 }
 
-void check_face(const HalfedgeMesh& mesh, Face f, const char* op) {
+Verdict exists(const HalfedgeMesh& mesh, Face f, const char* op) {
   if (f.idx < 0 || f.idx >= mesh.face_capacity() || mesh.is_deleted(f))
-    throw MeshError(fmt::format("{}: there is no face {}", op, f.idx + 1));
+    return Verdict::refused(fmt::format("{}: there is no face {}", op, f.idx + 1));
+  return {};
 }
 
-void check_edge(const HalfedgeMesh& mesh, Edge e, const char* op) {
+Verdict exists(const HalfedgeMesh& mesh, Edge e, const char* op) {
   if (e.idx < 0 || e.idx >= mesh.edge_capacity() || mesh.is_deleted(e))
-    throw MeshError(fmt::format("{}: there is no edge {}", op, e.idx + 1));
+    return Verdict::refused(fmt::format("{}: there is no edge {}", op, e.idx + 1));
+  return {};
 }
 
-void check_corner(const HalfedgeMesh& mesh, Corner c, const char* op) {
+Verdict exists(const HalfedgeMesh& mesh, Corner c, const char* op) {
   if (c.idx < 0 || c.idx >= mesh.halfedge_capacity() || mesh.is_deleted(c))
-    throw MeshError(fmt::format("{}: there is no corner (half-edge {})", op, c.idx));
+    return Verdict::refused(fmt::format("{}: there is no corner (half-edge {})", op, c.idx));
+  return {};
 }
 
 }  // namespace stitch::topology_detail

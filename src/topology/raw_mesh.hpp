@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch::topology_detail {
 
@@ -27,6 +28,9 @@ HalfedgeMesh compacted(const HalfedgeMesh& mesh);
 
 /// Mean of the corner positions of the face.
 Vec3 face_centroid(const HalfedgeMesh& mesh, Face f);
+
+/// The first vertex a face's loop visits twice (a loop that touches itself), or an invalid one.
+Vertex vertex_visited_twice(const HalfedgeMesh& mesh, Face f);
 
 /// The live edges joining a and b.
 std::vector<Edge> edges_between(const HalfedgeMesh& mesh, Vertex a, Vertex b);
@@ -58,9 +62,10 @@ inline constexpr const char* kBesideBoundary =
     "a file names edges by their two vertices, so it could not tell which of them is on the "
     "boundary";
 
-void check_vertex(const HalfedgeMesh& mesh, Vertex v, const char* op);
-void check_face(const HalfedgeMesh& mesh, Face f, const char* op);
-void check_edge(const HalfedgeMesh& mesh, Edge e, const char* op);
-void check_corner(const HalfedgeMesh& mesh, Corner c, const char* op);
+/// Refused (named for `op`) when the element is not a live element of the mesh.
+Verdict exists(const HalfedgeMesh& mesh, Vertex v, const char* op);
+Verdict exists(const HalfedgeMesh& mesh, Face f, const char* op);
+Verdict exists(const HalfedgeMesh& mesh, Edge e, const char* op);
+Verdict exists(const HalfedgeMesh& mesh, Corner c, const char* op);
 
 }  // namespace stitch::topology_detail

@@ -19,41 +19,48 @@ namespace {
 // None of these schemes has a rule for a boundary or a crease that this library implements
 // (dual and vertex insertion have none at all), and dropping the tags would quietly change the
 // surface, so a mesh with any is refused. Numbers are the input's, as the user wrote them.
-void refuse_features(const HalfedgeMesh& mesh, const char* op) {
-  if (!mesh.has_features()) return;
+Verdict features_allowed(const HalfedgeMesh& mesh, const char* op) {
+  if (!mesh.has_features()) return {};
   constexpr const char* kWhy = "the remeshings do not carry holes or sharpness tags";
   for (Face f : mesh.faces())
     if (mesh.is_hole(f))
-      throw MeshError(fmt::format(
+      return Verdict::refused(fmt::format(
           "{}: face {} is a hole (a boundary loop of the surface) and {} (fill-hole {} closes it)",
           op, f.idx + 1, kWhy, f.idx + 1));
   for (Edge e : mesh.edges())
     if (mesh.sharpness(e) > 0) {
       const Halfedge h = HalfedgeMesh::halfedge(e, 0);
       const int a = mesh.origin(h).idx + 1, b = mesh.target(h).idx + 1;
-      throw MeshError(
+      return Verdict::refused(
           fmt::format("{}: edge {} has sharpness {} and {} (crease {} {} 0 makes it "
                       "smooth)",
                       op, e.idx + 1, mesh.sharpness(e), kWhy, std::min(a, b), std::max(a, b)));
     }
   for (Vertex v : mesh.vertices())
     if (mesh.sharpness(v) > 0)
-      throw MeshError(
+      return Verdict::refused(
           fmt::format("{}: vertex {} has sharpness {} and {} (corner {} 0 makes it "
                       "smooth)",
                       op, v.idx + 1, mesh.sharpness(v), kWhy, v.idx + 1));
+  return {};
+}
+
+/// The dual edge of an edge that a face runs along twice would be a loop.
+Verdict dual_allowed(const HalfedgeMesh& mesh) {
+  if (Verdict v = features_allowed(mesh, "dual"); !v) return v;
+  for (Halfedge h : mesh.halfedges())
+    if (mesh.face(h) == mesh.face(HalfedgeMesh::twin(h)))
+      return Verdict::refused(
+          fmt::format("dual: face {} runs along edge {} twice; its dual edge would be a loop",
+                      mesh.face(h).idx + 1, HalfedgeMesh::edge(h).idx + 1));
+  return {};
 }
 
 }  // namespace
 
 HalfedgeMesh dual(const HalfedgeMesh& input) {
-  refuse_features(input, "dual");
+  dual_allowed(input).throw_if_refused();
   const HalfedgeMesh m = td::compacted(input);
-  for (Halfedge h : m.halfedges())
-    if (m.face(h) == m.face(HalfedgeMesh::twin(h)))
-      throw MeshError(
-          fmt::format("dual: face {} runs along edge {} twice; its dual edge would be a loop",
-                      m.face(h).idx + 1, HalfedgeMesh::edge(h).idx + 1));
   td::RawMesh raw;
   for (Face f : m.faces()) raw.positions.push_back(td::face_centroid(m, f));
   raw.num_faces = m.num_vertices();
@@ -70,7 +77,7 @@ HalfedgeMesh dual(const HalfedgeMesh& input) {
 }
 
 HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
-  refuse_features(input, "vertex-insertion");
+  features_allowed(input, "vertex-insertion").throw_if_refused();
   const HalfedgeMesh m = td::compacted(input);
   const int nv = m.num_vertices(), nh = m.halfedge_capacity();
   td::RawMesh raw;
@@ -100,7 +107,7 @@ HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
 }
 
 HalfedgeMesh doo_sabin(const HalfedgeMesh& input) {
-  refuse_features(input, "doo-sabin");
+  features_allowed(input, "doo-sabin").throw_if_refused();
   const HalfedgeMesh m = td::compacted(input);
   const int nh = m.halfedge_capacity(), nf = m.num_faces(), ne = m.num_edges();
   td::RawMesh raw;
@@ -288,8 +295,41 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
 }
 
 HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh) {
-  refuse_features(mesh, "catmull-clark");
+  features_allowed(mesh, "catmull-clark").throw_if_refused();
   return catmull_clark_refinement(mesh).mesh;
+}
+
+Verdict can_remesh(const HalfedgeMesh& mesh, Remeshing scheme) {
+  return scheme == Remeshing::dual ? dual_allowed(mesh)
+                                   : features_allowed(mesh, remeshing_name(scheme));
+}
+
+HalfedgeMesh remesh(const HalfedgeMesh& mesh, Remeshing scheme) {
+  switch (scheme) {
+    case Remeshing::doo_sabin:
+      return doo_sabin(mesh);
+    case Remeshing::vertex_insertion:
+      return vertex_insertion(mesh);
+    case Remeshing::catmull_clark:
+      return catmull_clark_step(mesh);
+    case Remeshing::dual:
+      return dual(mesh);
+  }
+  throw UsageError("remesh: unknown scheme");
+}
+
+const char* remeshing_name(Remeshing scheme) {
+  switch (scheme) {
+    case Remeshing::doo_sabin:
+      return "doo-sabin";
+    case Remeshing::vertex_insertion:
+      return "vertex-insertion";
+    case Remeshing::catmull_clark:
+      return "catmull-clark";
+    case Remeshing::dual:
+      return "dual";
+  }
+  return "?";
 }
 
 }  // namespace stitch

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "stitch/mesh/halfedge_mesh.hpp"  // MeshError
+#include "stitch/error.hpp"
 #include "temp_folder.hpp"
 
 namespace stitch::modeler {
@@ -56,7 +56,7 @@ TEST(ModelerFileBrowser, ListsFoldersFirstThenMatchingFilesSortedWithoutCase) {
   EXPECT_EQ(names(list_folder(dir.path(), {".ply"})),
             (std::vector<std::string>{"Archive/", "meshes/", "c.ply"}));
   EXPECT_EQ(names(list_folder(dir.path(), {})).size(), 8u);  // all files, hidden ones left out
-  EXPECT_THROW(list_folder(dir.path() / "missing", {}), MeshError);
+  EXPECT_THROW(list_folder(dir.path() / "missing", {}), InputError);
 }
 
 TEST(ModelerFileBrowser, KeysMoveOpenFoldersGoUpAndChooseFiles) {

@@ -25,22 +25,27 @@ std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method meth
   return check_patches(mesh, Surface(mesh, method), mesh.patch_corners()).problem_corners;
 }
 
-TEST(SurfaceHealth, TheHalfTwistIsReportedAndUndoClearsIt) {
+// A bent tunnel (bottom face to front face) folds (docs/method.md: bent tunnels are not modelled);
+// the cube's half twist "insert-edge 1@1 7@2", which these tests used before, no longer does.
+constexpr const char* kFoldingEdit = "insert-edge 3@1 5@3";
+
+TEST(SurfaceHealth, TheBentTunnelIsReportedAndUndoClearsIt) {
   Session s(make_cube());
   EXPECT_TRUE(s.surface_problems().empty());
   Printed printed;
-  const ScriptResult r = run_script_line(s, "insert-edge 1@1 7@2", printed.hooks());
+  const ScriptResult r = run_script_line(s, kFoldingEdit, printed.hooks());
   const SurfaceProblems& p = s.surface_problems();
   ASSERT_FALSE(p.empty());
   EXPECT_GT(p.folds, 0);
-  EXPECT_EQ(p.summary(), "surface folds at 4 patches");
+  EXPECT_EQ(p.summary(), "surface folds at 6 patches");
   EXPECT_EQ(p.corners, whole_surface_problems(s.document.mesh(), Method::mdc));
   EXPECT_GT(p.checked_patches, 0);
   EXPECT_EQ(p.checked_patches, s.last_update.recomputed_patches);
-  EXPECT_NE(r.message.find("; surface folds at 4 patches"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("; surface folds at 6 patches"), std::string::npos) << r.message;
   ASSERT_EQ(printed.lines.size(), 2u);
-  EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 4 patches (corners 1@1#1, ", 0), 0u)
+  EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 6 patches (corners ", 0), 0u)
       << printed.lines[1];
+  EXPECT_NE(printed.lines[1].find("3@1#1"), std::string::npos) << printed.lines[1];
 
   ASSERT_FALSE(run_script(s, {"undo"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
@@ -62,7 +67,7 @@ TEST(SurfaceHealth, TheStraightTubeIsClean) {
 TEST(SurfaceHealth, DisplayResolutionAndMethodChangesKeepTheAnswer) {
   // At resolution 16 the check reads the drawn tessellation instead of evaluating the nets.
   Session s(make_cube());
-  ASSERT_FALSE(run_script(s, {"resolution 16", "insert-edge 1@1 7@2"}, {}));
+  ASSERT_FALSE(run_script(s, {"resolution 16", kFoldingEdit}, {}));
   const std::vector<Corner> found = s.surface_problems().corners;
   EXPECT_EQ(found, whole_surface_problems(s.document.mesh(), Method::mdc));
   ASSERT_FALSE(run_script(s, {"method asc"}, {}));
@@ -91,16 +96,16 @@ TEST(SurfaceHealth, CheckCommandLooksAtTheWholeSurface) {
 
 TEST(SurfaceHealth, MovesRecheckOnlyTheProblemsFound) {
   Session s(make_cube());
-  ASSERT_FALSE(run_script(s, {"insert-edge 1@1 7@2"}, {}));
+  ASSERT_FALSE(run_script(s, {kFoldingEdit}, {}));
   const std::vector<Corner> before = s.surface_problems().corners;
   ASSERT_FALSE(before.empty());
   // A small move of a vertex away from the new edge: the folds stay, and only the patches
   // already found were checked again (with their neighbours).
-  ASSERT_FALSE(run_script(s, {"translate-vertex 3 0 0 0.01"}, {}));
+  ASSERT_FALSE(run_script(s, {"translate-vertex 8 0 0 0.01"}, {}));
   EXPECT_EQ(s.surface_problems().corners, before);
   EXPECT_EQ(s.surface_problems().checked_patches, static_cast<int>(before.size()));
   // Without problems, a move checks nothing.
-  ASSERT_FALSE(run_script(s, {"undo", "undo", "translate-vertex 3 0 0 0.01"}, {}));
+  ASSERT_FALSE(run_script(s, {"undo", "undo", "translate-vertex 8 0 0 0.01"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
 }
 

@@ -143,3 +143,16 @@ def test_reading_while_another_thread_edits():
     reader.join()
     assert mesh.num_vertices == 8 + 4 * 30
     assert seen == [(0, 3)] * 30
+
+
+def test_refusal_says_why_without_editing():
+    mesh = stitch.primitive("cube")
+    assert mesh.refusal("insert-edge 1@1 5@2") is None
+    why = mesh.refusal("insert-edge 1@1 1@3")
+    assert "the edge would be a loop" in why
+    assert mesh.genus == 0  # nothing was applied
+    with pytest.raises(stitch.UsageError, match="unknown operation"):
+        mesh.refusal("frobnicate 1")
+    with pytest.raises(stitch.TopologyError, match="the edge would be a loop"):
+        mesh.edit("insert-edge 1@1 1@3")
+    assert issubclass(stitch.TopologyError, stitch.StitchError)

@@ -52,7 +52,7 @@ TEST(Overlays, ExtraordinaryPointsOfTheCubeAndTheCubeWithAHole) {
   const ExtraordinaryPoint& highest = highest_valence_point(points);
   EXPECT_EQ(highest.k, 10);
   EXPECT_EQ(highest.kind, KgonKind::face);
-  EXPECT_THROW(highest_valence_point({}), std::invalid_argument);
+  EXPECT_THROW(highest_valence_point({}), UsageError);
 }
 
 TEST(Scene, UnweldedTessellationHasOneVertexBlockPerPatch) {
@@ -76,11 +76,11 @@ TEST(RenderOptions, ParseSizesPointsAndOverlays) {
   EXPECT_EQ(parse_image_size("640x480").height, 480);
   for (const char* bad :
        {"", "640", "x480", "640x", "0x10", "-5x5", "10x10x10", "1e3x5", "9000x10"}) {
-    EXPECT_THROW(parse_image_size(bad), std::invalid_argument) << bad;
+    EXPECT_THROW(parse_image_size(bad), UsageError) << bad;
   }
   EXPECT_EQ(parse_point("1,-2.5,3e-1", "--eye"), Vec3(1, -2.5, 0.3));
   for (const char* bad : {"", "1,2", "1,2,3,4", "1,,3", "a,b,c", "1,2,inf", "1,2,3,"}) {
-    EXPECT_THROW(parse_point(bad, "--eye"), std::invalid_argument) << bad;
+    EXPECT_THROW(parse_point(bad, "--eye"), UsageError) << bad;
   }
   RenderStyle style;
   parse_overlays("mesh,ev,tess", style);
@@ -88,7 +88,7 @@ TEST(RenderOptions, ParseSizesPointsAndOverlays) {
   EXPECT_TRUE(style.shows(Overlay::tessellation));
   EXPECT_FALSE(style.shows(Overlay::kgons));
   EXPECT_TRUE(style.markers);
-  EXPECT_THROW(parse_overlays("mesh,,ev", style), std::invalid_argument);
+  EXPECT_THROW(parse_overlays("mesh,,ev", style), UsageError);
 }
 
 }  // namespace

@@ -240,15 +240,15 @@ TEST(Camera, NamedViewsKeepTheWholeBoxInTheImage) {
       EXPECT_GT(largest, 0.8) << name;
     }
   }
-  EXPECT_THROW(parse_view("diagonal"), std::invalid_argument);
-  EXPECT_THROW(look_at(Vec3(1, 1, 1), Vec3(1, 1, 1), box), std::invalid_argument);
+  EXPECT_THROW(parse_view("diagonal"), UsageError);
+  EXPECT_THROW(look_at(Vec3(1, 1, 1), Vec3(1, 1, 1), box), UsageError);
 }
 
 TEST(ShadingModes, ParseAndPrint) {
   for (const auto* name : {"shaded", "zebra", "isophote", "levels", "patches"}) {
     EXPECT_EQ(to_string(parse_shading_mode(name)), name);
   }
-  EXPECT_THROW(parse_shading_mode("wireframe"), std::invalid_argument);
+  EXPECT_THROW(parse_shading_mode("wireframe"), UsageError);
 }
 
 }  // namespace

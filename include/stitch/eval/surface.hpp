@@ -17,7 +17,7 @@ enum class Method {
 };
 
 std::string to_string(Method m);
-/// Parses "mdc", "asc" or "cc"; throws std::invalid_argument otherwise.
+/// Parses "mdc", "asc" or "cc"; throws UsageError otherwise.
 Method parse_method(const std::string& s);
 
 /// Patches are indexed by corner for every method; evaluate(c, u, v) uses the conventions of

@@ -27,7 +27,7 @@ enum class UvMode {
 };
 
 std::string to_string(UvMode mode);
-/// Parses "smooth" or "linear"; throws std::invalid_argument otherwise.
+/// Parses "smooth" or "linear"; throws UsageError otherwise.
 UvMode parse_uv_mode(const std::string& text);
 
 class UvSurface {

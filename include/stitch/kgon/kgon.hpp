@@ -124,6 +124,22 @@ std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop);
 /// Builds every K-gon of a valid mesh. Default options reproduce method.md section 2 exactly.
 KgonSet build_kgons(const HalfedgeMesh& mesh, const KgonOptions& options = {});
 
+/// Elements of a mesh whose K-gons are meant: each list sorted, without repeats.
+struct KgonElements {
+  std::vector<Face> faces;
+  std::vector<Vertex> vertices;
+  std::vector<Edge> edges;
+  /// Adds `other`'s elements (keeping the lists sorted and free of repeats).
+  void merge(const KgonElements& other);
+};
+
+/// The dependency rule of the K-gons (what an incremental update must rebuild): the elements
+/// whose K-gons can read the corner points or normals of `faces` (faces whose vertices moved or
+/// whose loops changed). Those are the faces themselves, their vertices and edges, and the faces
+/// across their edges, whose K-gons read the faces' normals when they have no plane of their
+/// own. Faces that are deleted are skipped.
+KgonElements kgons_reading(const HalfedgeMesh& mesh, std::vector<Face> faces);
+
 /// Local update of a set that build_kgons made for this mesh's connectivity (the modeler's
 /// incremental update): recomputes the corner points of `faces`, then the K-gons of `faces`,
 /// `vertices` and `edges`, exactly as build_kgons would. The caller lists every element whose

@@ -37,16 +37,12 @@
 #include <utility>
 #include <vector>
 
+#include "stitch/error.hpp"
+
 namespace stitch {
 
 using Vec3 = Eigen::Vector3d;
 
-/// Error raised for invalid meshes, invalid input and refused operations. The message says
-/// what is wrong and where.
-class MeshError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// OpenSubdiv's infinite sharpness: tags at or above it make a crease or corner (method.md).
 inline constexpr double infinitely_sharp = 10.0;

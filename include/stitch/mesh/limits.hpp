@@ -32,6 +32,9 @@ inline constexpr double min_kgon_scale = 1e-6;
 inline constexpr double max_kgon_scale = 1e6;
 inline constexpr double max_rotation_deg = 3600;
 
+/// Most segments of a handle made by connect-faces (each adds a ring of vertices and quads).
+inline constexpr int max_handle_segments = 1000;
+
 /// Characters of an offending token quoted in an error message; longer tokens are cut.
 inline constexpr size_t max_quoted = 60;
 
@@ -51,7 +54,15 @@ void check_coordinates(const Vec3& p, std::string_view what);
 /// edits, writes and reads back, but it has no normals to build a surface from.
 void check_extent(const HalfedgeMesh& mesh);
 
-/// Throws MeshError naming `what` unless lo <= value <= hi (NaN is refused too).
+/// Throws UsageError naming `what` unless lo <= value <= hi (NaN is refused too).
 void check_range(double value, double lo, double hi, std::string_view what);
+
+/// The most segments per patch side anything samples a patch with (tessellations, the modeler's
+/// live surface, surface checks, renders, analysis): 1024 gives a million samples per patch, far
+/// past what any display or file of a whole surface can use, and keeps sample counts in int.
+inline constexpr int max_resolution = 1024;
+
+/// Throws UsageError "<what> must be in 1..max_resolution" otherwise.
+void check_resolution(int n, std::string_view what);
 
 }  // namespace stitch::limits

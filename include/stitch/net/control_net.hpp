@@ -50,6 +50,11 @@ ControlNet build_control_net(const HalfedgeMesh& mesh, const KgonSet& kgons, Cor
 /// The nets of every corner, indexed by half-edge (nets of deleted half-edges are left empty).
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& mesh, const KgonSet& kgons);
 
+/// The dependency rule of the nets: the corners whose nets read a K-gon of `kgons` (a net reads
+/// the K-gons of its face, its vertex, its edge and its previous edge), sorted, without repeats
+/// and without the corners of holes (they make no patch).
+std::vector<Corner> nets_reading(const HalfedgeMesh& mesh, const KgonElements& kgons);
+
 /// The patch across `side` of the patch of corner c, and the side of that patch it meets.
 struct PatchNeighbour {
   Corner corner;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -12,5 +13,8 @@ namespace stitch {
 /// number; the numbers left over are removed. Removed vertices and edges leave gaps.
 /// Refused when nothing would remain (a mesh made of f and faces merged away entirely).
 void delete_face(HalfedgeMesh& mesh, Face f);
+/// Whether delete_face(mesh, f) applies, without changing anything (the same work on a copy of
+/// the mesh that delete_face does).
+Verdict can_delete_face(const HalfedgeMesh& mesh, Face f);
 
 }  // namespace stitch

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -15,6 +16,8 @@ struct SubdivideEdgeResult {
 /// and the new vertex is smooth; on a boundary edge the hole gains the corner too. Never refused
 /// on a valid mesh.
 SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e);
+/// Whether subdivide_edge(mesh, e) applies: whenever e is a live edge.
+Verdict can_subdivide_edge(const HalfedgeMesh& mesh, Edge e);
 
 /// Collapses edge e into vertex `keep` (one of its ends), which moves to the edge's midpoint; the
 /// other end and the edge are removed, both faces lose a corner. `keep` takes the larger of the
@@ -24,5 +27,8 @@ SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e);
 /// would become a 2-sided slit); or when the ends have a common neighbour with one of the two
 /// edges to it on the boundary (they would become parallel, which a file cannot tell apart).
 void collapse_edge(HalfedgeMesh& mesh, Edge e, Vertex keep);
+/// Whether collapse_edge(mesh, e, keep) applies, without changing anything (time in proportion
+/// to the valences of e's ends).
+Verdict can_collapse_edge(const HalfedgeMesh& mesh, Edge e, Vertex keep);
 
 }  // namespace stitch

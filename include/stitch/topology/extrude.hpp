@@ -2,6 +2,7 @@
 #pragma once
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -24,6 +25,9 @@ struct ExtrudeResult {
 /// Refused: a non-finite distance, a scale that is not positive and finite, or a face without a
 /// normal (zero area, e.g. a 2-sided face).
 ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double scale = 1.0);
+/// Whether extrude_face(mesh, f, distance, scale) applies, without changing anything (time in
+/// proportion to f's degree squared).
+Verdict can_extrude_face(const HalfedgeMesh& mesh, Face f, double distance, double scale = 1.0);
 
 /// The face's unit normal by Newell's method (zero vector for a face of zero area).
 Vec3 face_normal(const HalfedgeMesh& mesh, Face f);

@@ -1,11 +1,12 @@
 // Editing the feature tags: opening a face into a hole, filling a hole, and the sharpness of
 // edges (creases) and vertices (corners). Like every operator, each either applies completely,
-// leaving a valid mesh, or throws MeshError saying why and leaves the mesh as it was.
+// leaving a valid mesh, or throws TopologyError saying why and leaves the mesh as it was.
 #pragma once
 
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -29,15 +30,21 @@ struct OpenFaceResult {
 /// vertices with another edge (a file could not tell them apart); no surface would remain in
 /// the mesh or in f's component.
 OpenFaceResult open_face(HalfedgeMesh& mesh, Face f);
+/// Whether open_face(mesh, f) applies, without changing anything: f's neighbourhood when f
+/// shares no edge with a hole, else the work on a copy of the mesh (as open_face itself does).
+Verdict can_open_face(const HalfedgeMesh& mesh, Face f);
 
 /// Makes hole f a face again (it will make patches). Refused when f is not a hole.
 void fill_hole(HalfedgeMesh& mesh, Face f);
+Verdict can_fill_hole(const HalfedgeMesh& mesh, Face f);
 
 /// Sets edge e's sharpness (0 smooth, >= infinitely_sharp a crease; in between semi-sharp, as in
 /// OpenSubdiv). Refused for a sharpness that is negative or not finite.
 void set_crease(HalfedgeMesh& mesh, Edge e, double sharpness);
+Verdict can_set_crease(const HalfedgeMesh& mesh, Edge e, double sharpness);
 
 /// Sets vertex v's sharpness (a corner). Refused as set_crease.
 void set_corner(HalfedgeMesh& mesh, Vertex v, double sharpness);
+Verdict can_set_corner(const HalfedgeMesh& mesh, Vertex v, double sharpness);
 
 }  // namespace stitch

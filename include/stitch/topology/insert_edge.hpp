@@ -1,12 +1,13 @@
 // Insert edge and delete edge: the two operators every other edit is built from (TopMod's
 // doubly linked face list, method.md section 7). Each either applies completely, leaving a valid
-// closed oriented 2-manifold, or throws MeshError saying why and leaves the mesh untouched.
+// closed oriented 2-manifold, or throws TopologyError saying why and leaves the mesh untouched.
 //
 // Numbering (docs/editing.md): untouched elements keep their numbers; a new edge or face takes the
 // next number (its index = the old capacity); a removed one leaves a gap (marked deleted).
 #pragma once
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -27,6 +28,8 @@ struct InsertEdgeResult {
 /// hole (the new edge would have the hole on both sides), or a boundary edge already joining the
 /// two vertices (a file could not tell the two apart). The new edge is smooth (sharpness 0).
 InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b);
+/// Whether insert_edge(mesh, a, b) applies, without changing anything (constant time).
+Verdict can_insert_edge(const HalfedgeMesh& mesh, Corner a, Corner b);
 
 struct DeleteEdgeResult {
   bool split = false;  ///< true: both sides were one face, which split in two
@@ -41,5 +44,7 @@ struct DeleteEdgeResult {
 /// edge), or when e lies on the boundary (a hole on one side: the face on the other side would
 /// merge into the hole; open_face says that).
 DeleteEdgeResult delete_edge(HalfedgeMesh& mesh, Edge e);
+/// Whether delete_edge(mesh, e) applies, without changing anything (constant time).
+Verdict can_delete_edge(const HalfedgeMesh& mesh, Edge e);
 
 }  // namespace stitch

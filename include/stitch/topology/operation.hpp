@@ -4,12 +4,18 @@
 // numbers), so a sequence of operations can be written against one numbering.
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/topology/connect_faces.hpp"
+#include "stitch/topology/remesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -35,21 +41,131 @@ enum class Census { full, counts_only };
 /// The words of a line, split at white space.
 std::vector<std::string_view> split_words(std::string_view line);
 
-/// Parses and applies one operation line ("insert-edge 1@1 5@2", "extrude-face 3 0.5", ...).
-/// Leading/trailing blanks and a trailing `# comment` are ignored. Throws MeshError (the mesh is
-/// unchanged) for an unknown operation, bad arguments, or a refused operation, saying why.
-/// A blank or comment-only line does nothing and returns an empty `what`.
-OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line,
+/// The typed operations, one per operator: what `stitch edit`, scripts, the modeler and Python
+/// apply. Elements are the mesh's handles; parse_operation resolves a line's 1-based numbers.
+namespace ops {
+struct InsertEdge {
+  Corner a, b;
+  bool operator==(const InsertEdge&) const = default;
+};
+struct DeleteEdge {
+  Edge edge;
+  bool operator==(const DeleteEdge&) const = default;
+};
+struct SubdivideEdge {
+  Edge edge;
+  bool operator==(const SubdivideEdge&) const = default;
+};
+struct CollapseEdge {
+  Edge edge;
+  Vertex keep;  ///< the end that stays (at the edge's midpoint)
+  bool operator==(const CollapseEdge&) const = default;
+};
+struct ExtrudeFace {
+  Face face;
+  double distance = 0, scale = 1;
+  bool operator==(const ExtrudeFace&) const = default;
+};
+struct ConnectFaces {
+  Face f, g;
+  HandleOptions handle;  ///< twist (none: the least), segments, waist
+  bool operator==(const ConnectFaces&) const = default;
+};
+struct DeleteFace {
+  Face face;
+  bool operator==(const DeleteFace&) const = default;
+};
+struct OpenFace {
+  Face face;
+  bool operator==(const OpenFace&) const = default;
+};
+struct FillHole {
+  Face face;
+  bool operator==(const FillHole&) const = default;
+};
+struct SetCrease {
+  Edge edge;
+  double sharpness = 0;
+  bool operator==(const SetCrease&) const = default;
+};
+struct SetCorner {
+  Vertex vertex;
+  double sharpness = 0;
+  bool operator==(const SetCorner&) const = default;
+};
+struct Remesh {
+  Remeshing scheme;
+  bool operator==(const Remesh&) const = default;
+};
+}  // namespace ops
+
+using Operation =
+    std::variant<ops::InsertEdge, ops::DeleteEdge, ops::SubdivideEdge, ops::CollapseEdge,
+                 ops::ExtrudeFace, ops::ConnectFaces, ops::DeleteFace, ops::OpenFace, ops::FillHole,
+                 ops::SetCrease, ops::SetCorner, ops::Remesh>;
+
+/// One row of the operation table, which every front end reads (help texts, the modeler's
+/// buttons and script language, the undo history).
+struct OperationInfo {
+  std::string_view name;       ///< the first word of its line, e.g. "insert-edge"
+  std::string_view synopsis;   ///< the line with placeholders, e.g. "insert-edge V@F V@F"
+  std::string_view arguments;  ///< what it takes, in words, e.g. "two corners"
+  std::string_view summary;    ///< what it does, in a few words
+  bool renumbers = false;      ///< the result is a new mesh numbered afresh (the remeshings)
+};
+
+/// Every operation, in the order help texts list them.
+std::span<const OperationInfo> operation_table();
+
+/// The table's row named `name`, or nullptr.
+const OperationInfo* find_operation(std::string_view name);
+
+/// The table's row of `op`.
+const OperationInfo& operation_info(const Operation& op);
+
+/// The table's names, comma-separated, for messages that list them.
+std::string operation_names();
+
+/// Parses one operation line ("insert-edge 1@1 5@2", "extrude-face 3 0.5", ...) against the mesh
+/// as it stands. Leading/trailing blanks and a trailing `# comment` are ignored; a blank or
+/// comment-only line gives nothing. Throws UsageError for an unknown operation or bad arguments
+/// (a number that names no element of the mesh included), saying what and where.
+std::optional<Operation> parse_operation(const HalfedgeMesh& mesh, std::string_view line);
+
+/// The line parse_operation reads back as `op` on this mesh (so: before `op` is applied).
+std::string format_operation(const HalfedgeMesh& mesh, const Operation& op);
+
+/// Whether `op` applies to the mesh, without changing it: the operator's own can_* check, in the
+/// operator's words. Cheap for the local operators (constant or in proportion to the elements'
+/// degrees; open-face merging with a hole and delete-face work on a copy, as the operators do;
+/// the remeshings read the whole mesh). apply_operation with the full census also makes sure
+/// the result reads back from a file, which no check before the edit can promise.
+Verdict can_apply(const HalfedgeMesh& mesh, const Operation& op);
+
+/// Applies `op`. Throws (the mesh is unchanged) when it is refused, saying why; the message
+/// starts with the operation's name.
+OperationReport apply_operation(HalfedgeMesh& mesh, const Operation& op,
                                 Census census = Census::full);
 
-/// The operations with their arguments, one per entry, for help texts.
-std::vector<std::string> operation_synopsis();
+/// Parses and applies one operation line; a blank or comment-only line does nothing and returns
+/// an empty `what`.
+OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line,
+                                Census census = Census::full);
 
 /// Resolves `V@F` or `V@F#k` to the corner (the half-edge of face F leaving vertex V).
 Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text);
 
+/// Corner c as parse_corner reads it: `V@F`, or `V@F#k` when vertex V appears on face F more
+/// than once (k counts its appearances along the face from the face's first corner).
+std::string corner_name(const HalfedgeMesh& mesh, Corner c);
+
 /// Resolves an edge given as its two end vertices `V W`, or `V W@F` to pick the one on face F's
-/// loop when several edges join V and W. The returned edge's ends are V and W in either order.
+/// loop when several edges join V and W, or `V W@F#k` for the k-th time F's loop runs from V to
+/// W. The returned edge's ends are V and W in either order.
 Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_view w_text);
+
+/// Edge e as parse_edge reads it (two words): `V W`, or `V W@F` / `V W@F#k` when several edges
+/// join V and W; the end `first`, when given, is written first.
+std::string edge_name(const HalfedgeMesh& mesh, Edge e, Vertex first = {});
 
 }  // namespace stitch

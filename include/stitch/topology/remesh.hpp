@@ -1,14 +1,15 @@
 // Remeshing the whole mesh. Each returns a new mesh numbered afresh (documented per scheme and in
 // docs/editing.md); the input is not changed. Numbers below are 0-based indices of the
 // garbage-collected input (V vertices, E edges, H = 2E half-edges, F faces).
-// dual, vertex_insertion, doo_sabin and catmull_clark_step refuse (MeshError) a mesh with a hole
-// or a sharpness tag: they have no rule here for boundaries and creases, and dropping the tags
+// dual, vertex_insertion, doo_sabin and catmull_clark_step refuse (TopologyError) a mesh with a
+// hole or a sharpness tag: they have no rule here for boundaries and creases, and dropping the tags
 // would change the surface without saying so.
 #pragma once
 
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/topology/verdict.hpp"
 
 namespace stitch {
 
@@ -45,5 +46,18 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& mesh);
 
 /// catmull_clark_refinement(mesh).mesh; refused for a mesh with holes or sharpness tags.
 HalfedgeMesh catmull_clark_step(const HalfedgeMesh& mesh);
+
+/// The four remeshings, as the operation table names them.
+enum class Remeshing { doo_sabin, vertex_insertion, catmull_clark, dual };
+
+/// The scheme's operation name ("doo-sabin", ...).
+const char* remeshing_name(Remeshing scheme);
+
+/// dual, vertex_insertion, doo_sabin or catmull_clark_step by scheme.
+HalfedgeMesh remesh(const HalfedgeMesh& mesh, Remeshing scheme);
+
+/// Whether remesh(mesh, scheme) applies: no holes or tags (and, for the dual, no face running
+/// along an edge twice). Time in proportion to the mesh, as the remeshing's own.
+Verdict can_remesh(const HalfedgeMesh& mesh, Remeshing scheme);
 
 }  // namespace stitch

@@ -68,6 +68,8 @@ class Document {
   /// over the whole mesh). Throws MeshError with the document unchanged when the line is
   /// refused. A blank line changes nothing and records nothing.
   Change apply_operation(std::string_view line, OperationReport* report = nullptr);
+  /// The same for a typed operation; its history label is format_operation's line.
+  Change apply_operation(const Operation& op, OperationReport* report = nullptr);
   /// Replaces the whole document (new primitive, opened file) as one undoable step.
   Change replace(DocumentState state, std::string label);
   /// Adds `other` (a valid mesh) as one more component, moved by `offset`, with its
@@ -103,6 +105,7 @@ class Document {
   void mark_modified() { saved_revision_ = -1; }
 
  private:
+  Change apply_operation(const Operation& op, std::string label, OperationReport* report);
   struct MoveVertices {
     std::vector<Vertex> vertices;
     std::vector<Vec3> before, after;

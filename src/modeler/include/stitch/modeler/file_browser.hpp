@@ -25,7 +25,7 @@ struct FileEntry {
 
 /// The entries of `folder`: its subfolders, then its files whose extension (compared without
 /// case) is one of `extensions` (all files when empty), each group sorted by name without case
-/// (ties in byte order). Names starting with '.' are left out. Throws MeshError naming the
+/// (ties in byte order). Names starting with '.' are left out. Throws InputError naming the
 /// folder when it cannot be listed.
 std::vector<FileEntry> list_folder(const std::filesystem::path& folder,
                                    const std::vector<std::string>& extensions);
@@ -96,7 +96,7 @@ class RecentFiles {
   explicit RecentFiles(std::filesystem::path file);
   [[nodiscard]] const std::vector<std::string>& paths() const { return paths_; }
   /// Puts `path` (made absolute) first, drops its older entry and the oldest beyond
-  /// kMostKept, and writes the file (atomically, creating its folder). Throws MeshError when
+  /// kMostKept, and writes the file (atomically, creating its folder). Throws OutputError when
   /// the file cannot be written; the list in memory is updated anyway.
   void add(const std::filesystem::path& path);
 

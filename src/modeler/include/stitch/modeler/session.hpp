@@ -115,8 +115,8 @@ struct ScriptHooks {
   std::function<ScriptResult(std::string_view line)> run_line;
 };
 
-/// Runs one line. Throws MeshError (or std::invalid_argument) saying what is wrong; the session
-/// is unchanged by a refused line.
+/// Runs one line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the
+/// session is unchanged by a refused line.
 ScriptResult run_script_line(Session& session, std::string_view line, const ScriptHooks& hooks);
 
 /// A script error with its 1-based line number.

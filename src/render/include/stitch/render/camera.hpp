@@ -54,7 +54,7 @@ struct ViewDirection {
 };
 ViewDirection view_direction(View view);
 
-/// Parses the names above; throws std::invalid_argument listing them otherwise.
+/// Parses the names above; throws stitch::UsageError listing them otherwise.
 View parse_view(const std::string& name);
 std::string to_string(View view);
 
@@ -62,7 +62,7 @@ std::string to_string(View view);
 Camera frame_view(View view, const BoundingBox& box, double aspect);
 /// Looks from `eye` at `target`; near/far planes are chosen to contain `box`. The image's up is
 /// world +y (+z when looking along y), not the named views' +z: explicit eyes keep the roll they
-/// had, so existing commands and their pictures stay as they were. Throws std::invalid_argument
+/// had, so existing commands and their pictures stay as they were. Throws UsageError
 /// when eye == target.
 Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box);
 /// Frames the sphere (center, radius) seen from direction `from` (pointing from the center

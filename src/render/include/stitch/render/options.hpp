@@ -1,5 +1,5 @@
 // Parsing the renderer's command-line values, shared by `stitch render`, `stitch compare` and
-// anything else that takes them. Every function throws std::invalid_argument with a message
+// anything else that takes them. Every function throws stitch::UsageError with a message
 // naming the bad value and what was expected.
 #pragma once
 

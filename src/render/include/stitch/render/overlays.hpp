@@ -67,7 +67,7 @@ struct ExtraordinaryPoint {
 /// Every extraordinary point, vertices first, each in index order; holes have none.
 std::vector<ExtraordinaryPoint> extraordinary_points(const HalfedgeMesh& mesh,
                                                      const KgonSet& kgons);
-/// The one with the largest K (ties: the first in the order above); throws std::invalid_argument
+/// The one with the largest K (ties: the first in the order above); throws UsageError
 /// when there is none (a mesh of quads with every valence 4, e.g. a torus).
 const ExtraordinaryPoint& highest_valence_point(const std::vector<ExtraordinaryPoint>& points);
 

@@ -34,7 +34,7 @@ enum class ShadingMode {
 };
 
 /// Parses "shaded", "zebra", "isophote", "levels", "patches", "checker"; throws
-/// std::invalid_argument.
+/// UsageError.
 ShadingMode parse_shading_mode(const std::string& name);
 std::string to_string(ShadingMode mode);
 
