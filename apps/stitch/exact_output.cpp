@@ -60,7 +60,7 @@ bool is_exact_output(const std::string& path) {
 
 std::string smooth_output_extensions() {
   return fmt::format("{}, .json (Bezier patches), .step, .stp, .igs, .iges",
-                     kSurfaceMeshExtensions);
+                     extension_list(kSurfaceMeshExtensions));
 }
 
 void check_exact_outputs(const std::string& out, const ExactOutputOptions& options) {

@@ -17,6 +17,7 @@
 
 #include "io_detail.hpp"
 #include "mesh_writer.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {
@@ -52,7 +53,8 @@ double parse_number(std::string_view token, const std::string& where) {
 double parse_double(std::string_view token, const std::string& where) {
   const double value = parse_number(token, where);
   if (!std::isfinite(value))
-    throw InputError(fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
+    throw InputError(
+        fmt::format("{}: coordinate '{}' is not finite", where, limits::quoted(token)));
   return value;
 }
 
@@ -107,10 +109,6 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
 
 namespace {
 
-std::string supported_list() {
-  return ".obj, .off, .ply, .stl, .glb, .gltf";
-}
-
 constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
@@ -132,7 +130,7 @@ void check_tags(const std::string& path, const PolygonSoup& soup) {
     for (int v : vertices)
       if (v < 0 || v >= nv)
         throw OutputError(fmt::format("cannot write {}: a {} tag refers to vertex {} of {}", path,
-                                    what, v + 1, nv));
+                                      what, v + 1, nv));
   };
   for (const SoupCrease& c : soup.creases) check(c.sharpness, {c.a, c.b}, "crease");
   for (const SoupCorner& c : soup.corners) check(c.sharpness, {c.vertex}, "corner");
@@ -172,6 +170,12 @@ std::string read_regular_file(const std::string& path,
   return std::move(buffer).str();
 }
 
+std::string extension_list(std::span<const std::string_view> extensions) {
+  std::string list;
+  for (std::string_view e : extensions) list += (list.empty() ? "" : ", ") + std::string(e);
+  return list;
+}
+
 std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -183,9 +187,10 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
                               const std::function<void(double)>& progress) {
   const std::string ext = file_extension(path);
   const bool gltf = ext == ".glb" || ext == ".gltf";
-  if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl" && !gltf)
+  if (std::find(kMeshReadExtensions.begin(), kMeshReadExtensions.end(), ext) ==
+      kMeshReadExtensions.end())
     throw UsageError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                limits::quoted(ext), supported_list()));
+                                 limits::quoted(ext), extension_list(kMeshReadExtensions)));
   // Reading the bytes is the first third of the work, parsing them the rest.
   auto part = [&progress](double from, double to) -> std::function<void(double)> {
     if (!progress) return {};
@@ -255,8 +260,8 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     write_mesh_file(path,
                     [&](OutputFile& out) { write_stl(out, stream, soup.positions, kComment); });
   else
-    throw OutputError(fmt::format(
-        "cannot write {}: unknown extension '{}' (supported: .obj, .off, .ply, .stl)", path, ext));
+    throw OutputError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                  ext, extension_list(kMeshWriteExtensions)));
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
@@ -267,7 +272,8 @@ void write_file_atomically(const std::string& path, const std::function<void(std
                            bool binary) {
   write_file_atomically_at(path, [&](const std::string& temporary) {
     std::ofstream out(temporary, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
-    if (!out) throw OutputError(fmt::format("cannot write {}: {}", temporary, std::strerror(errno)));
+    if (!out)
+      throw OutputError(fmt::format("cannot write {}: {}", temporary, std::strerror(errno)));
     write(out);
     out.flush();
     if (!out) throw OutputError(fmt::format("cannot write {}: write error (disk full?)", path));
@@ -293,7 +299,7 @@ std::filesystem::path create_temporary(const std::filesystem::path& folder,
   }
   if (fd < 0)
     throw OutputError(fmt::format("cannot write {}: cannot create a file in '{}': {}", path,
-                                folder.string(), std::strerror(errno)));
+                                  folder.string(), std::strerror(errno)));
   ::close(fd);
   return temporary;
 }

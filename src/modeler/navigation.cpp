@@ -83,12 +83,15 @@ void OrbitView::zoom(double steps) {
   distance = std::clamp(distance * std::pow(0.9, steps), 1e-60, 1e60);
 }
 
-void OrbitView::frame(const Vec3& center, double radius) {
+void OrbitView::frame(const Vec3& center, double radius, double aspect) {
   target = center;
-  distance = std::max(radius, 1e-6) / std::sin(rad(fov_y_deg) / 2) * 1.05;
+  // The sphere touches the narrower pair of frustum sides.
+  const double half_y = rad(fov_y_deg) / 2;
+  const double half_x = std::atan(std::tan(half_y) * std::max(aspect, 1e-3));
+  distance = std::max(radius, 1e-6) / std::sin(std::min(half_x, half_y)) * 1.05;
 }
 
-void OrbitView::set_standard(View view, const BoundingBox& box) {
+void OrbitView::set_standard(View view, const BoundingBox& box, double aspect) {
   const auto [from, up] = view_direction(view);
   const double deg = 180.0 / std::numbers::pi;
   // Exactly +-90 straight up and down: projects refuse a pitch beyond that.
@@ -100,7 +103,7 @@ void OrbitView::set_standard(View view, const BoundingBox& box) {
     // (camera(): up = (-sin yaw, cos yaw, 0) at the top, (sin yaw, -cos yaw, 0) at the bottom).
     yaw_deg = pitch_deg > 0 ? std::atan2(-up.x(), up.y()) * deg : std::atan2(up.x(), -up.y()) * deg;
   }
-  if (!box.empty()) frame(box.center(), box.radius());
+  if (!box.empty()) frame(box.center(), box.radius(), aspect);
 }
 
 Ray pixel_ray(const Camera& camera, double x, double y, int width, int height) {

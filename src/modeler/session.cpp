@@ -97,7 +97,7 @@ constexpr double kMostZoomSteps = 100;
 
 Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
   rebuild();
-  view.set_standard(View::iso, mesh_bounds());
+  view.set_standard(View::iso, mesh_bounds(), view_aspect());
 }
 
 void Session::remember(Change change) {
@@ -167,6 +167,11 @@ void Session::fall_back_from_cc(const std::string& why) {
       surface.rebuild(document.mesh(), document.kgon_options(), display.method, display.resolution);
 }
 
+double Session::view_aspect() const {
+  const double width = display.split ? viewport_width / 2 : viewport_width;
+  return width / std::max(viewport_height, 1e-9);
+}
+
 BoundingBox Session::mesh_bounds() const {
   BoundingBox box;
   for (Vertex v : document.mesh().vertices()) box.extend(document.mesh().position(v));
@@ -192,7 +197,8 @@ void open_file(Session& session, const std::string& path) {
   session.path = path;
   session.selection.reset();
   session.rebuild();
-  if (!is_project_path(path)) session.view.set_standard(View::iso, session.mesh_bounds());
+  if (!is_project_path(path))
+    session.view.set_standard(View::iso, session.mesh_bounds(), session.view_aspect());
 }
 
 void save_file(Session& session, const std::string& path) {
@@ -296,7 +302,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     std::vector<int> params;
     for (size_t i = 2; i < w.size(); ++i) params.push_back(integer(w[i], "a primitive parameter"));
     s.apply(s.document.replace({make_primitive(w[1], params), {}}, "primitive " + w[1]));
-    s.view.set_standard(View::iso, s.mesh_bounds());
+    s.view.set_standard(View::iso, s.mesh_bounds(), s.view_aspect());
     result.message = "new " + w[1];
   } else if (cmd == "move-vertex" || cmd == "translate-vertex") {
     expect(w, 4, 4, "move-vertex V X Y Z  or  translate-vertex V DX DY DZ");
@@ -437,15 +443,15 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     }
   } else if (cmd == "view") {
     expect(w, 1, 1, "view front|back|left|right|top|bottom|iso");
-    s.view.set_standard(parse_view(w[1]), s.mesh_bounds());
+    s.view.set_standard(parse_view(w[1]), s.mesh_bounds(), s.view_aspect());
   } else if (cmd == "frame") {
     expect(w, 1, 1, "frame all|selection");
     if (w[1] == "all") {
       const BoundingBox b = s.mesh_bounds();
-      if (!b.empty()) s.view.frame(b.center(), b.radius());
+      if (!b.empty()) s.view.frame(b.center(), b.radius(), s.view_aspect());
     } else if (w[1] == "selection") {
       if (!s.selection) throw MeshError("frame selection: nothing is selected");
-      s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius());
+      s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius(), s.view_aspect());
     } else {
       throw MeshError("usage: frame all|selection");
     }
@@ -479,7 +485,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     if (path.empty())
       throw MeshError(fmt::format(
           "usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
-          kSurfaceMeshExtensions));
+          extension_list(kSurfaceMeshExtensions)));
     result.message = export_surface(s, path);
   } else if (cmd == "append") {
     std::string path = rest_after_first_word(strip_comment(raw));
@@ -544,7 +550,9 @@ std::optional<ScriptError> run_script(Session& session, const std::vector<std::s
   if (quit) *quit = false;
   for (size_t i = 0; i < lines.size(); ++i) {
     try {
-      if (run_script_line(session, lines[i], hooks).quit) {
+      const ScriptResult r =
+          hooks.run_line ? hooks.run_line(lines[i]) : run_script_line(session, lines[i], hooks);
+      if (r.quit) {
         if (quit) *quit = true;
         return std::nullopt;
       }

@@ -52,7 +52,8 @@ KgonControl control_from(const json& j, const std::string& what) {
 
 bool is_project_path(const std::string& path) {
   const std::string ext = file_extension(path);
-  return ext == ".stitch" || ext == ".json";
+  return std::find(kProjectExtensions.begin(), kProjectExtensions.end(), ext) !=
+         kProjectExtensions.end();
 }
 
 std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,

@@ -50,7 +50,7 @@ void check_extension(const std::string& path) {
   const std::string ext = file_extension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
     throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                ext, kSurfaceMeshExtensions));
+                                ext, extension_list(kSurfaceMeshExtensions)));
 }
 
 /// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.

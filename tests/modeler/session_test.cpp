@@ -196,5 +196,50 @@ TEST(ModelerSession, ExportWritesTheSurfaceAsShown) {
   EXPECT_TRUE(run_script(s, {"export"}, {}));
 }
 
+TEST(ModelerSession, ScriptLoopRunsLinesThroughTheApplicationsHook) {
+  // The application's lines go through hooks.run_line; the loop keeps the numbering, stops at
+  // the first error and at quit.
+  Session s(make_cube());
+  std::vector<std::string> seen;
+  ScriptHooks hooks;
+  hooks.run_line = [&](std::string_view line) {
+    seen.emplace_back(line);
+    if (line == "window-only") return ScriptResult{};
+    return run_script_line(s, line, hooks);
+  };
+  EXPECT_FALSE(run_script(s, {"window-only", "select face 1"}, hooks));
+  EXPECT_EQ(seen, (std::vector<std::string>{"window-only", "select face 1"}));
+  ASSERT_TRUE(s.selection);
+  const auto error = run_script(s, {"window-only", "select face 99", "select none"}, hooks);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->line, 2);
+  EXPECT_TRUE(s.selection);  // the line after the error did not run
+  bool quit = false;
+  EXPECT_FALSE(run_script(s, {"quit", "select none"}, hooks, &quit));
+  EXPECT_TRUE(quit);
+  EXPECT_TRUE(s.selection);
+}
+
+TEST(ModelerSession, FramingFitsANarrowViewport) {
+  // A viewport half as wide as high: the horizontal angle is the narrower one, so the model's
+  // sphere must fit in it (tolerance 1e-9 on exact trigonometry).
+  Session s(make_cube());
+  s.viewport_width = 0.5;
+  ASSERT_FALSE(run_script(s, {"frame all"}, {}));
+  const double half_y = s.view.fov_y_deg * M_PI / 360.0;
+  const double half_x = std::atan(std::tan(half_y) * 0.5);
+  EXPECT_GE(s.view.distance * std::sin(half_x) + 1e-9, s.mesh_bounds().radius());
+  const double narrow = s.view.distance;
+  s.viewport_width = 2.0;  // wide: framed by the vertical angle, nearer
+  ASSERT_FALSE(run_script(s, {"frame all"}, {}));
+  EXPECT_LT(s.view.distance, narrow);
+  EXPECT_GE(s.view.distance * std::sin(half_y) + 1e-9, s.mesh_bounds().radius());
+  // Split, each half of the 1 x 1 viewport is 0.5 wide: framed as the narrow viewport was
+  // (the same computation: exactly equal).
+  s.viewport_width = 1.0;
+  ASSERT_FALSE(run_script(s, {"split asc", "frame all"}, {}));
+  EXPECT_EQ(s.view.distance, narrow);
+}
+
 }  // namespace
 }  // namespace stitch::modeler

@@ -1,69 +1,18 @@
 // End to end: the real stitch-modeler under Xvfb with Mesa's software renderer, driven by a
 // script. Skipped only when xvfb-run is not installed (CI installs the xvfb package).
 #include <gtest/gtest.h>
-#include <stb_image.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/modeler/project.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
+#include "xvfb_support.hpp"
 
 namespace stitch::modeler {
 namespace {
-
-bool have_xvfb_run() {
-  return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
-}
-
-/// Runs the modeler under a fresh virtual X server; returns its exit status. The server number
-/// search starts at a number from the process id, so tests run in parallel (ctest -j) do not
-/// race for the same display (`xvfb-run -a` alone can).
-int run_modeler(const std::string& args, const std::string& log) {
-  const std::string server = std::to_string(100 + ::getpid() % 800);
-  const std::string command = "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -n " + server +
-                              " -s '-screen 0 1280x1024x24' " + std::string(STITCH_MODELER) + " " +
-                              args + " > '" + log + "' 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct Png {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgba;
-};
-
-Png load_png(const std::string& path) {
-  Png p;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &p.width, &p.height, &channels, 4);
-  if (!data) return p;
-  p.rgba.assign(data, data + static_cast<size_t>(p.width) * p.height * 4);
-  stbi_image_free(data);
-  return p;
-}
-
-/// Number of distinct colours: a blank (one-colour) image has 1.
-size_t colours(const Png& p) {
-  std::set<unsigned> seen;
-  for (size_t i = 0; i + 3 < p.rgba.size(); i += 4)
-    seen.insert(p.rgba[i] << 16 | p.rgba[i + 1] << 8 | p.rgba[i + 2]);
-  return seen.size();
-}
 
 /// Fraction of pixels whose colour differs by more than 24 levels in some channel (more than
 /// antialiasing noise) inside the window's middle third, where the model is drawn between the

@@ -18,9 +18,11 @@
 // display's method.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "stitch/eval/surface.hpp"
 #include "stitch/kgon/kgon.hpp"
@@ -39,6 +41,8 @@ struct ProjectFile {
   std::map<std::string, std::string> sections;
 };
 
+/// The extensions of project files, the usual one first.
+inline constexpr std::array<std::string_view, 2> kProjectExtensions{".stitch", ".json"};
 /// ".stitch" and ".json" files are projects.
 bool is_project_path(const std::string& path);
 

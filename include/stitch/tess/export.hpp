@@ -1,12 +1,15 @@
 // Writing tessellated surfaces.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "stitch/eval/surface.hpp"
 #include "stitch/eval/uv_surface.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/tess/surface_mesh.hpp"
 
 namespace stitch {
@@ -31,8 +34,10 @@ struct SurfaceFileOptions {
 /// that differ on the two sides of a seam, and are written without them.
 bool surface_file_takes_uvs(const std::string& path);
 
-/// The extensions write_surface_mesh and write_smooth_surface take, for messages.
-inline constexpr const char* kSurfaceMeshExtensions = ".obj, .ply, .off, .stl, .glb, .gltf";
+/// The extensions write_surface_mesh and write_smooth_surface take (extension_list of
+/// mesh/io.hpp makes the text for messages).
+inline constexpr std::array<std::string_view, 6> kSurfaceMeshExtensions{".obj", ".ply", ".off",
+                                                                        ".stl", ".glb", ".gltf"};
 
 /// Writes a welded surface by extension: .obj (with vn), .ply (binary with normals unless
 /// options.ascii_ply), .off, .stl (binary), and glTF 2.0 with normals: .glb, or .gltf with its

@@ -31,10 +31,11 @@ struct OrbitView {
   void pan(double dx_px, double dy_px, double height_px);
   /// Positive steps move closer (by 10% each).
   void zoom(double steps);
-  /// Keeps the direction, shows the whole sphere (center, radius).
-  void frame(const Vec3& center, double radius);
+  /// Keeps the direction, shows the whole sphere (center, radius) in a viewport of this width /
+  /// height: a narrow one is framed by its horizontal angle.
+  void frame(const Vec3& center, double radius, double aspect = 1.0);
   /// One of the standard views of camera.hpp (view_direction), framing `box`.
-  void set_standard(View view, const BoundingBox& box);
+  void set_standard(View view, const BoundingBox& box, double aspect = 1.0);
 };
 
 /// A ray from the eye through pixel (x, y) (origin top-left) of a width x height viewport.

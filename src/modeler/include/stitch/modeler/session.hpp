@@ -23,8 +23,9 @@
 //   export PATH                      the smooth surface as shown (method, resolution, K-gon
 //                                    controls): .obj .ply .off .stl .glb .gltf, or .json for the
 //                                    Bézier patches
-// (paths run to the end of the line, so they may contain blanks). The application adds
-// `ui on|off` (show or hide its panels), the one line about the window rather than the session.
+// (paths run to the end of the line, so they may contain blanks). The application adds the
+// lines about its window rather than the session (`ui on|off`, `dialog ...`, `layout PATH`,
+// apps/modeler/commands.cpp), through ScriptHooks::run_line.
 #pragma once
 
 #include <functional>
@@ -51,6 +52,11 @@ struct Session {
   UpdateStats last_update;
   /// Set when the last line could not show its method (cc refused the mesh), else empty.
   std::string warning;
+  /// The size of the area the model is drawn in (the application keeps it current), so that
+  /// framing fits the model between the panels.
+  double viewport_width = 1.0, viewport_height = 1.0;
+  /// Width / height of one view: the viewport, or half of it in a split view.
+  [[nodiscard]] double view_aspect() const;
 
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
@@ -95,18 +101,22 @@ void save_file(Session& session, const std::string& path);
 std::string append_file(Session& session, const std::string& path, const Vec3& offset);
 
 /// What a script line needs from the application.
-struct ScriptHooks {
-  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
-  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
-};
-
 struct ScriptResult {
   bool quit = false;
   std::string message;  ///< what happened, for the status bar / log
 };
 
-/// Runs one line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the session
-/// is unchanged by a refused line.
+struct ScriptHooks {
+  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
+  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
+  /// When set, run_script runs each line through this instead of run_script_line: the
+  /// application adds its own lines (`ui off`) and uploads what a line changed. It throws on a
+  /// bad line, as run_script_line does.
+  std::function<ScriptResult(std::string_view line)> run_line;
+};
+
+/// Runs one line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the
+/// session is unchanged by a refused line.
 ScriptResult run_script_line(Session& session, std::string_view line, const ScriptHooks& hooks);
 
 /// A script error with its 1-based line number.
@@ -114,8 +124,8 @@ struct ScriptError {
   int line = 0;
   std::string message;
 };
-/// Runs lines until the end or `quit`; stops at the first error and returns it. `quit` tells
-/// whether the script asked to quit.
+/// Runs lines (through hooks.run_line when set) until the end or `quit`; stops at the first
+/// error and returns it. `quit` tells whether the script asked to quit.
 std::optional<ScriptError> run_script(Session& session, const std::vector<std::string>& lines,
                                       const ScriptHooks& hooks, bool* quit = nullptr);
 

@@ -1,0 +1,26 @@
+// Running script lines in the application: the session's lines (session.hpp) plus the
+// application's own (`ui on|off`), each followed by uploading what it changed. The GUI's buttons,
+// the command-line field and `--script` all run lines through run_app_line, and a script file
+// runs through the library's run_script loop.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "app_state.hpp"
+
+namespace stitch::modeler::app {
+
+/// Runs one line and uploads what it changed. Throws on a bad line (which changes nothing).
+ScriptResult run_app_line(App& app, std::string_view line);
+/// Runs one line the way the GUI does: the message or the error goes to the status bar.
+void run_line(App& app, const std::string& line);
+/// Runs the script file `path` (library run_script); an error is printed as `PATH:LINE:
+/// message`. Returns 0, or 2 after an error; `quit` tells whether the script asked to quit.
+int run_script_file(App& app, const std::string& path, bool& quit);
+
+/// Writes the unsaved work to the autosave project, if autosaving and modified.
+void write_autosave(App& app);
+void remove_autosave(const App& app);
+
+}  // namespace stitch::modeler::app
