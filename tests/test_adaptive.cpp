@@ -136,7 +136,7 @@ TEST(Adaptive, TighterToleranceRefinesAndTheRateIsClamped) {
   const AdaptiveMesh coarse = tessellate_adaptive(mesh, surface, {1e6});
   EXPECT_EQ(coarse.max_rate, 1);
   EXPECT_EQ(coarse.triangles.size(), surface.corners().size() * 2);
-  EXPECT_THROW(tessellate_adaptive(mesh, surface, {0.0}), MeshError);
+  EXPECT_THROW(tessellate_adaptive(mesh, surface, {0.0}), Error);
 }
 
 TEST(Adaptive, OpenMeshKeepsItsBoundaryWithoutCracksInside) {

@@ -375,7 +375,7 @@ TEST(Boundaries, TwoBoundaryLoopsMeetingAtAVertexAreRefused) {
   PolygonSoup soup;
   soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
   soup.faces = {{0, 1, 2}, {0, 3, 4}};
-  EXPECT_THROW(build_mesh(soup), MeshError);
+  EXPECT_THROW(build_mesh(soup), Error);
 }
 
 class OpenSubdivFeatureShapes : public ::testing::TestWithParam<std::string> {};

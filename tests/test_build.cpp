@@ -16,7 +16,7 @@ namespace {
 using stitch::BuildOptions;
 using stitch::BuildReport;
 using stitch::HalfedgeMesh;
-using stitch::MeshError;
+using stitch::Error;
 using stitch::PolygonSoup;
 using stitch::test::error_of;
 

@@ -253,7 +253,7 @@ TEST(CatmullClark, IgnoresDeletedElementsAndFaceStarts) {
       }
     }
   }
-  EXPECT_THROW((void)after.evaluate(HalfedgeMesh::halfedge(diagonal.edge, 0), 0.5, 0.5), MeshError);
+  EXPECT_THROW((void)after.evaluate(HalfedgeMesh::halfedge(diagonal.edge, 0), 0.5, 0.5), Error);
 }
 
 // A mesh OpenSubdiv cannot represent is evaluated through one or two Catmull-Clark steps,

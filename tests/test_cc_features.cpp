@@ -129,7 +129,7 @@ class DescriptorSurface {
       for (int k = 0; k < 3; ++k) xyz.push_back(mesh.position(v)[k]);
     for (size_t f = 0; f < faces.size(); ++f) {
       if (!factory.InitVertexSurface(static_cast<int>(f), &surfaces_[f]))
-        throw MeshError("Bfr gives face " + std::to_string(faces[f].idx + 1) + " no surface");
+        throw Error("Bfr gives face " + std::to_string(faces[f].idx + 1) + " no surface");
       points_[f].resize(3 * static_cast<size_t>(surfaces_[f].GetNumPatchPoints()));
       surfaces_[f].PreparePatchPoints(xyz.data(), kXyz, points_[f].data(), kXyz);
     }

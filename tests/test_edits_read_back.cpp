@@ -70,7 +70,7 @@ bool try_apply(HalfedgeMesh& mesh, const std::string& line, Census census) {
   try {
     apply_operation(mesh, line, census);
     return true;
-  } catch (const MeshError&) {
+  } catch (const Error&) {
     EXPECT_EQ(mesh, before) << line << ": a refused operation changed the mesh";
     return false;
   }

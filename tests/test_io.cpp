@@ -20,7 +20,7 @@
 namespace {
 
 using stitch::HalfedgeMesh;
-using stitch::MeshError;
+using stitch::Error;
 using stitch::PolygonSoup;
 using stitch::Vec3;
 using stitch::test::error_of;
@@ -408,15 +408,15 @@ TEST(WriteFileAtomically, AFailingWriteLeavesThePreviousFileAndNoTemporary) {
   EXPECT_THROW(stitch::write_file_atomically(path,
                                              [](std::ostream& out) {
                                                out << "half of a file";
-                                               throw MeshError("the writer failed");
+                                               throw Error("the writer failed");
                                              }),
-               MeshError);
+               Error);
   EXPECT_EQ(read_file(path), "previous content\n");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.obj"});
 
   // A refused format does not touch the file either.
   EXPECT_THROW(stitch::write_mesh(folder.file("out.xyz"), stitch::read_mesh(example("cube"))),
-               MeshError);
+               Error);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.obj"});
 
   // A successful write replaces the content and leaves only the target.
@@ -430,7 +430,7 @@ TEST(WriteFileAtomically, RefusesToReplaceAFolder) {
   std::filesystem::create_directory(folder.file("target.obj"));
   EXPECT_THROW(stitch::write_file_atomically(folder.file("target.obj"),
                                              [](std::ostream& out) { out << "x"; }),
-               MeshError);
+               Error);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"target.obj"});
 }
 

@@ -29,7 +29,7 @@ TEST(RandomEdits, EveryMethodGivesFiniteOutputAndMdcStaysC1) {
       m.garbage_collection();
       try {
         apply_operation(m, test::random_operation(m, rng));
-      } catch (const MeshError&) {
+      } catch (const Error&) {
       }
     }
     m.garbage_collection();
@@ -38,7 +38,7 @@ TEST(RandomEdits, EveryMethodGivesFiniteOutputAndMdcStaysC1) {
       std::optional<Surface> surface;
       try {
         surface.emplace(m, method);
-      } catch (const MeshError& e) {
+      } catch (const Error& e) {
         FAIL() << to_string(method) << ", trial " << trial << ": " << e.what();
       }
       const SurfaceMesh s = tessellate(m, *surface, {3, true});

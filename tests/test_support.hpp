@@ -18,12 +18,12 @@ inline std::string example_path(const std::string& name) {
   return std::string(STITCH_EXAMPLES_DIR) + "/" + name;
 }
 
-/// The message of the MeshError `f` throws ("" when it throws none).
+/// The message of the Error `f` throws ("" when it throws none).
 template <class F>
 std::string error_of(F&& f) {
   try {
     f();
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     return e.what();
   }
   return "";

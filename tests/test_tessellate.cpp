@@ -81,7 +81,7 @@ TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
 
 TEST(Tessellate, RefusesAResolutionBelowOne) {
   const HalfedgeMesh tet = test::tetrahedron_mesh();
-  EXPECT_THROW(tessellate(tet, Surface(tet, Method::mdc), {0, true}), MeshError);
+  EXPECT_THROW(tessellate(tet, Surface(tet, Method::mdc), {0, true}), Error);
 }
 
 }  // namespace

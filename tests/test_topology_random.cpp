@@ -219,7 +219,7 @@ void random_operation(HalfedgeMesh& m, Rng& rng, int& refusals) {
       EXPECT_EQ(a.components, b.components);
       m = std::move(r);
     }
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     ++refusals;
     EXPECT_FALSE(std::string(e.what()).empty());
     EXPECT_EQ(m, before_mesh) << "refused but changed: " << e.what();

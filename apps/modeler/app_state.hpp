@@ -62,8 +62,9 @@ struct MouseGesture {
 /// What the panels' fields hold between frames.
 struct PanelFields {
   std::array<char, 512> command_line{};
-  float extrude_distance = 0.5f;
+  double extrude_distance = 0.5;
   int connect_twist = 0;
+  bool connect_least_twist = true;  ///< connect-faces picks the twist (least_twist)
   int primitive_index = 1;
   bool kgon_global = false;  ///< edit the global K-gon control whatever is selected
 };

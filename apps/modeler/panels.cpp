@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "file_dialog.hpp"
+#include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "viewport.hpp"
 #include "widgets.hpp"
@@ -25,11 +26,6 @@ constexpr const char* kSplits[] = {"off", "mdc", "asc", "cc"};
 constexpr const char* kModes[] = {"shaded", "zebra", "isophote", "levels", "patches", "input"};
 constexpr const char* kOverlays[] = {"mesh", "kgons", "nets", "tess"};
 constexpr const char* kViews[] = {"front", "back", "left", "right", "top", "bottom", "iso"};
-
-/// "edge 1 5@2" -> "1 5@2": an element's numbers as operation lines take them.
-std::string numbers_of(const std::string& description) {
-  return description.substr(description.find(' ') + 1);
-}
 
 void picking_section(App& app, Widgets& ui) {
   const Session& s = app.session;
@@ -48,77 +44,99 @@ void operators_section(App& app, Widgets& ui) {
   const HalfedgeMesh& m = s.document.mesh();
   const std::optional<Pick>& sel = s.selection;
   const std::optional<Pick>& prev = app.picking.previous;
-  auto op_button = [&](const char* label, const std::string& line, bool enabled) {
-    if (ui.button(label, enabled)) run_line(app, line);
+  // The picks make typed operations; a button runs its operation's line (what the history and
+  // scripts see). The local operators' can_* checks cost the degree of the elements, so they
+  // enable the buttons every frame and give the refusal as a tooltip; delete-face, open-face and
+  // the remeshings can take a pass over the mesh, so those are only tried when clicked (the
+  // refusal then goes to the status bar).
+  enum class Check { every_frame, on_click };
+  auto op_button = [&](const char* label, const std::optional<Operation>& op, Check check) {
+    const Verdict verdict = op && check == Check::every_frame ? can_apply(m, *op) : Verdict{};
+    if (ui.button(label, op && verdict.applies())) run_line(app, format_operation(m, *op));
+    if (!verdict.refusal().empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("%s", verdict.refusal().c_str());
   };
   auto row_label = [&](const char* text) {
     ImGui::AlignTextToFramePadding();
     ui.text(text);
     ImGui::SameLine(ems(4.5f));
   };
+  auto picked = [&](const std::optional<Pick>& p, PickKind kind) { return p && p->kind == kind; };
   ui.text_disabled("Two picks: from the previous to the selected");
-  const bool two_corners =
-      sel && prev && sel->kind == PickKind::corner && prev->kind == PickKind::corner;
-  op_button("Insert edge",
-            two_corners ? "insert-edge " + numbers_of(describe(m, *prev)) + " " +
-                              numbers_of(describe(m, *sel))
-                        : "",
-            two_corners);
+  std::optional<Operation> insert, connect;
+  if (picked(sel, PickKind::corner) && picked(prev, PickKind::corner))
+    insert = ops::InsertEdge{Corner(prev->index), Corner(sel->index)};
+  if (picked(sel, PickKind::face) && picked(prev, PickKind::face)) {
+    HandleOptions handle;
+    if (!app.fields.connect_least_twist) handle.twist = app.fields.connect_twist;
+    connect = ops::ConnectFaces{Face(prev->index), Face(sel->index), handle};
+  }
+  op_button("Insert edge", insert, Check::every_frame);
   ImGui::SameLine();
-  const bool face = sel && sel->kind == PickKind::face;
-  const bool two_faces = face && prev && prev->kind == PickKind::face;
-  op_button("Connect faces",
-            two_faces ? fmt::format("connect-faces {} {} {}", prev->index + 1, sel->index + 1,
-                                    app.fields.connect_twist)
-                      : "",
-            two_faces);
+  op_button("Connect faces", connect, Check::every_frame);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(ems(5.5f));
-  ui.input_int("twist", &app.fields.connect_twist);
+  ui.checkbox("least twist", &app.fields.connect_least_twist);
+  if (!app.fields.connect_least_twist) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ems(5.5f));
+    ui.input_int("twist", &app.fields.connect_twist);
+  }
 
   row_label("Edge:");
-  const bool edge = sel && sel->kind == PickKind::edge;
-  const std::string e = edge ? numbers_of(describe(m, *sel)) : "";
-  op_button("Delete##edge", "delete-edge " + e, edge);
+  const bool edge = picked(sel, PickKind::edge);
+  const Halfedge h = edge ? Halfedge(sel->index) : Halfedge();
+  const Edge e = edge ? HalfedgeMesh::edge(h) : Edge();
+  auto on_edge = [&](auto op) { return edge ? std::optional<Operation>(op) : std::nullopt; };
+  op_button("Delete##edge", on_edge(ops::DeleteEdge{e}), Check::every_frame);
   ImGui::SameLine();
-  op_button("Subdivide", "subdivide-edge " + e, edge);
+  op_button("Subdivide", on_edge(ops::SubdivideEdge{e}), Check::every_frame);
   ImGui::SameLine();
-  op_button("Collapse", "collapse-edge " + e, edge);
+  op_button("Collapse", on_edge(ops::CollapseEdge{e, edge ? m.origin(h) : Vertex()}),
+            Check::every_frame);
   ImGui::SameLine();
   // Sharp features: an infinitely sharp crease (OpenSubdiv's 10) or none; a vertex corner.
-  const bool sharp_edge = edge && m.sharpness(HalfedgeMesh::edge(Halfedge(sel->index))) > 0;
+  const bool sharp_edge = edge && m.sharpness(e) > 0;
   op_button(sharp_edge ? "Smooth##edge" : "Crease",
-            fmt::format("crease {} {}", e, sharp_edge ? 0.0 : infinitely_sharp), edge);
+            on_edge(ops::SetCrease{e, sharp_edge ? 0.0 : infinitely_sharp}), Check::every_frame);
 
   row_label("Vertex:");
-  const bool vertex = sel && sel->kind == PickKind::vertex;
+  const bool vertex = picked(sel, PickKind::vertex);
   const bool corner_vertex = vertex && m.sharpness(Vertex(sel->index)) > 0;
-  op_button(
-      corner_vertex ? "Smooth##vertex" : "Corner",
-      vertex ? fmt::format("corner {} {}", sel->index + 1, corner_vertex ? 0.0 : infinitely_sharp)
-             : "",
-      vertex);
+  op_button(corner_vertex ? "Smooth##vertex" : "Corner",
+            vertex ? std::optional<Operation>(
+                         ops::SetCorner{Vertex(sel->index), corner_vertex ? 0.0 : infinitely_sharp})
+                   : std::nullopt,
+            Check::every_frame);
 
   row_label("Face:");
-  const std::string f = face ? std::to_string(sel->index + 1) : "";
-  op_button("Extrude", fmt::format("extrude-face {} {}", f, app.fields.extrude_distance), face);
+  const bool face = picked(sel, PickKind::face);
+  const Face f = face ? Face(sel->index) : Face();
+  auto on_face = [&](auto op) { return face ? std::optional<Operation>(op) : std::nullopt; };
+  op_button("Extrude", on_face(ops::ExtrudeFace{f, app.fields.extrude_distance, 1.0}),
+            Check::every_frame);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ems(6.5f));
-  ImGui::InputFloat("##distance", &app.fields.extrude_distance, 0.1f, 0.5f, "%.2f");
+  ImGui::InputDouble("##distance", &app.fields.extrude_distance, 0.1, 0.5, "%.2f");
   ImGui::SameLine();
-  op_button("Delete##face", "delete-face " + f, face);
-  const bool hole = face && m.is_hole(Face(sel->index));
+  op_button("Delete##face", on_face(ops::DeleteFace{f}), Check::on_click);
+  const bool hole = face && m.is_hole(f);
   ImGui::SameLine();
-  op_button(hole ? "Fill hole" : "Open", (hole ? "fill-hole " : "open-face ") + f, face);
+  if (hole)
+    op_button("Fill hole", on_face(ops::FillHole{f}), Check::every_frame);
+  else
+    op_button("Open", on_face(ops::OpenFace{f}), Check::on_click);
 
   row_label("Remesh:");
-  op_button("doo-sabin", "doo-sabin", true);
+  auto remesh_button = [&](Remeshing scheme) {
+    op_button(remeshing_name(scheme), ops::Remesh{scheme}, Check::on_click);
+  };
+  remesh_button(Remeshing::doo_sabin);
   ImGui::SameLine();
-  op_button("vertex-insertion", "vertex-insertion", true);
+  remesh_button(Remeshing::vertex_insertion);
   ImGui::SetCursorPosX(ems(4.5f));  // under the row's first button
-  op_button("catmull-clark", "catmull-clark", true);
+  remesh_button(Remeshing::catmull_clark);
   ImGui::SameLine();
-  op_button("dual", "dual", true);
+  remesh_button(Remeshing::dual);
 
   const auto names = primitive_names();
   int& chosen = app.fields.primitive_index;
@@ -130,7 +148,7 @@ void operators_section(App& app, Widgets& ui) {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  op_button("New from primitive", "primitive " + names[chosen], true);
+  if (ui.button("New from primitive")) run_line(app, "primitive " + names[chosen]);
 }
 
 void kgon_section(App& app, Widgets& ui) {

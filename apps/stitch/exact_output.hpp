@@ -28,7 +28,7 @@ bool is_exact_output(const std::string& path);
 std::string smooth_output_extensions();
 
 /// Refuses, before any work, what would fail later: an unknown unit, a CAD output in a build
-/// without OpenCASCADE, a --patches name that is not .json. Throws MeshError.
+/// without OpenCASCADE, a --patches name that is not .json. Throws stitch::Error.
 void check_exact_outputs(const std::string& out, const ExactOutputOptions& options);
 
 /// Writes `out` when it is an exact output, and --patches when given, reporting the patch set

@@ -29,7 +29,7 @@ struct InputOptions {
 /// Adds the positional IN and --fill-holes.
 void add_input_options(CLI::App* cmd, InputOptions& in);
 /// Reads and checks the mesh, printing warnings (dropped vertices, filled holes, 2-gons,
-/// valence-2 vertices) to stderr. Throws MeshError on bad input. `report` (optional) receives
+/// valence-2 vertices) to stderr. Throws stitch::Error on bad input. `report` (optional) receives
 /// the build report, e.g. the texture coordinates of the corners. A project (.stitch) brings
 /// its K-gon controls and, unless --method was given, its method; a --kgon-controls file is
 /// read against the mesh here, so its numbers are checked before any work. `progress`

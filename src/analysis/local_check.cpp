@@ -9,17 +9,15 @@
 #include <unordered_map>
 
 #include "eval/patch_sampler.hpp"
+#include "mesh/sort_unique.hpp"
 #include "stitch/mesh/limits.hpp"
+#include "stitch/topology/operation.hpp"
 
 namespace stitch {
 
 namespace {
 
-template <class T>
-void sort_unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
+using detail::sort_unique;
 
 bool has_patch(const HalfedgeMesh& m, Corner c) {
   return c.idx >= 0 && c.idx < m.halfedge_capacity() && !m.is_deleted(c) && !m.is_hole(c);
@@ -184,17 +182,13 @@ std::vector<std::string> corner_names(const HalfedgeMesh& m, const std::vector<C
   }
   std::vector<std::string> names;
   for (Corner c : corners) {
-    const Vertex v = m.origin(c);
-    const Face f = m.face(c);
-    int occurrences = 0, k = 0;
-    for (Halfedge h : m.face_loop(f))
-      if (m.origin(h) == v) {
-        ++occurrences;
-        if (h == c) k = occurrences;
-      }
-    std::string name = fmt::format("{}@{}", as_written ? vertex_number[v.idx] : v.idx + 1,
-                                   as_written ? face_number[f.idx] : f.idx + 1);
-    if (occurrences > 1) name += fmt::format("#{}", k);
+    std::string name = corner_name(m, c);  // V@F or V@F#k in the mesh's own numbers
+    if (as_written) {
+      // The same corner in the file's numbers; the occurrence does not depend on numbering.
+      const size_t hash = name.find('#');
+      name = fmt::format("{}@{}{}", vertex_number[m.origin(c).idx], face_number[m.face(c).idx],
+                         hash == std::string::npos ? "" : name.substr(hash));
+    }
     names.push_back(std::move(name));
   }
   return names;

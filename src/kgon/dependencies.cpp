@@ -4,17 +4,14 @@
 // (the live surface's tests compare every update with a rebuild).
 #include <algorithm>
 
+#include "mesh/sort_unique.hpp"
 #include "stitch/kgon/kgon.hpp"
 
 namespace stitch {
 
 namespace {
 
-template <class T>
-void sort_unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
+using detail::sort_unique;
 
 template <class T>
 void append_sorted(std::vector<T>& to, const std::vector<T>& from) {

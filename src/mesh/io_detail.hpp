@@ -25,12 +25,12 @@ namespace stitch::io_detail {
 std::string at_line(const std::string& path, int line);
 
 /// A number as from_chars reads it (a leading '+' allowed), NaN and infinity included; throws
-/// MeshError naming `where` otherwise.
+/// stitch::Error naming `where` otherwise.
 double parse_number(std::string_view token, const std::string& where);
 
-/// Parses a whole token as a finite double; throws MeshError naming `where` otherwise.
+/// Parses a whole token as a finite double; throws stitch::Error naming `where` otherwise.
 double parse_double(std::string_view token, const std::string& where);
-/// Parses a whole token as an integer; throws MeshError naming `where` otherwise.
+/// Parses a whole token as an integer; throws stitch::Error naming `where` otherwise.
 long long parse_integer(std::string_view token, const std::string& where);
 
 /// Whitespace-separated tokens of a line, with a trailing `#` comment removed.
@@ -52,7 +52,7 @@ class LineReader {
   int line_ = 0;
 };
 
-/// Throws MeshError naming the line when the line holds a byte that cannot be in a text file.
+/// Throws stitch::Error naming the line when the line holds a byte that cannot be in a text file.
 void require_text(std::string_view line, const std::string& path, int line_number);
 
 /// `progress` (optional) gets the fraction of the text parsed, every so many lines.

@@ -212,7 +212,7 @@ void write_blocks(OutputFile& out, std::int64_t count, std::int64_t block,
             free.push(chunk.text);
             if (written) written(chunk.end - chunk.begin);
           }));
-  if (next < count) throw MeshError("internal error: a block buffer went missing");
+  if (next < count) throw Error("internal error: a block buffer went missing");
 }
 
 void OutputBuffer::reserve(size_t capacity) {
@@ -350,7 +350,7 @@ void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
 void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
                std::string_view comment, const WriteProgress& report) {
   if (mesh.triangles > std::numeric_limits<std::uint32_t>::max())
-    throw MeshError(
+    throw OutputError(
         fmt::format("{} triangles are more than binary STL can hold (2^32 - 1)", mesh.triangles));
   Progress progress(report, mesh.num_faces);
   std::array<char, 80> header{};
@@ -386,10 +386,10 @@ void write_mesh_file(const std::string& path, const std::function<void(OutputFil
     try {
       write(out);
       out.close();
-    } catch (const MeshError& e) {
+    } catch (const Error& e) {
       // The writers do not know the file's name; every message about a file names it.
       if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
-      throw MeshError(fmt::format("cannot write {}: {}", path, e.what()));
+      throw_with_message(e, fmt::format("cannot write {}: {}", path, e.what()));
     }
   });
 }

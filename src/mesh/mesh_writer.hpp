@@ -106,7 +106,7 @@ class OutputBuffer {
 
 /// Formats [0, count) in blocks of `block` items, format(begin, end, text) for several blocks at
 /// once on all cores, and writes the texts to `out` in block order; written(items) after each.
-/// Throws MeshError when the file cannot take them.
+/// Throws stitch::Error when the file cannot take them.
 void write_blocks(OutputFile& out, std::int64_t count, std::int64_t block,
                   const std::function<void(std::int64_t, std::int64_t, OutputBuffer&)>& format,
                   const std::function<void(std::int64_t)>& written = {});

@@ -32,7 +32,7 @@ struct SurfaceRing {
   [[nodiscard]] bool boundary() const { return edges.size() > faces.size(); }
 };
 
-/// Empty when every face around v is a hole. Throws MeshError when the surface's boundary
+/// Empty when every face around v is a hole. Throws stitch::Error when the surface's boundary
 /// passes v more than once: OpenSubdiv would take v as non-manifold and sharpen it.
 SurfaceRing surface_ring(const HalfedgeMesh& mesh, Vertex v);
 
@@ -47,7 +47,7 @@ float osd_vertex_sharpness(const HalfedgeMesh& mesh, Vertex v, const SurfaceRing
 /// OpenSubdiv's Catmull-Clark topology of a mesh without deleted elements, with its features:
 /// hole faces are left out (their edges become OpenSubdiv's boundary), crease and corner
 /// sharpness are tagged. Vertex i is the mesh's; face f is the f-th face outside holes (the
-/// numbering of to_polygon_soup), its vertices in loop order from halfedge(f). Throws MeshError
+/// numbering of to_polygon_soup), its vertices in loop order from halfedge(f). Throws stitch::Error
 /// when the mesh has deleted elements or OpenSubdiv refuses the topology. A face-vertex
 /// description cannot tell several edges between the same two vertices apart: check before
 /// calling.
@@ -60,7 +60,7 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(
 /// on creases, corners and the boundary placed by Sdc's crease and corner rules (fractional
 /// sharpness blended), and the tags of the refined mesh subdivided (semi-sharp values drop by
 /// one). The limit surface outside holes is unchanged, as for the step without features.
-/// Throws MeshError as surface_ring does.
+/// Throws stitch::Error as surface_ring does.
 CatmullClarkRefinement catmark_refinement_with_features(const HalfedgeMesh& mesh,
                                                         BoundaryInterpolation boundary);
 

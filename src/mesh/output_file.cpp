@@ -19,15 +19,15 @@ constexpr size_t kGather = 64 * 1024;
 // and leaves more for the final fsync.
 constexpr std::int64_t kHandOver = 32 * 1024 * 1024;
 
-MeshError write_error() {
-  return MeshError(fmt::format("write error: {}", std::strerror(errno)));
+OutputError write_error() {
+  return OutputError(fmt::format("write error: {}", std::strerror(errno)));
 }
 
 }  // namespace
 
 OutputFile::OutputFile(const std::string& path)
     : fd_(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666)) {
-  if (fd_ < 0) throw MeshError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+  if (fd_ < 0) throw OutputError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
 }
 
 OutputFile::~OutputFile() {

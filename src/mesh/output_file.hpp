@@ -15,13 +15,13 @@ namespace stitch::io_detail {
 
 class OutputFile {
  public:
-  /// Creates `path` or truncates it. Throws MeshError naming `path` when it cannot.
+  /// Creates `path` or truncates it. Throws stitch::Error naming `path` when it cannot.
   explicit OutputFile(const std::string& path);
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
 
-  /// Appends bytes. Throws MeshError with the system's reason (a full disk: "No space left on
+  /// Appends bytes. Throws stitch::Error with the system's reason (a full disk: "No space left on
   /// device") when they cannot be written.
   void write(const char* data, size_t size);
   OutputFile& operator<<(std::string_view text) {

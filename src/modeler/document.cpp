@@ -200,13 +200,13 @@ Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgon
 Change Document::move_vertices(const std::vector<Vertex>& vertices,
                                const std::vector<Vec3>& positions, bool merge) {
   if (vertices.size() != positions.size())
-    throw MeshError("move_vertices: one position per vertex is needed");
+    throw UsageError("move_vertices: one position per vertex is needed");
   for (size_t i = 0; i < vertices.size(); ++i) {
     const Vertex v = vertices[i];
     if (v.idx < 0 || v.idx >= state_.mesh.vertex_capacity() || state_.mesh.is_deleted(v))
-      throw MeshError(fmt::format("move: there is no vertex {}", v.idx + 1));
+      throw UsageError(fmt::format("move: there is no vertex {}", v.idx + 1));
     if (!positions[i].allFinite())
-      throw MeshError(fmt::format("move: vertex {} would get a non-finite position", v.idx + 1));
+      throw UsageError(fmt::format("move: vertex {} would get a non-finite position", v.idx + 1));
   }
   Change c;
   c.kind = Change::Kind::geometry;
@@ -246,11 +246,11 @@ Change Document::set_kgon_control(const KgonTarget& target, const KgonControl& c
         target.kind == KgonKind::face     ? i < m.face_capacity() && !m.is_deleted(Face(i))
         : target.kind == KgonKind::vertex ? i < m.vertex_capacity() && !m.is_deleted(Vertex(i))
                                           : i < m.edge_capacity() && !m.is_deleted(Edge(i));
-    if (!exists) throw MeshError(fmt::format("kgon: there is no such element ({})", i + 1));
+    if (!exists) throw UsageError(fmt::format("kgon: there is no such element ({})", i + 1));
   }
   if (!control.offset.allFinite() || !std::isfinite(control.scale) ||
       !std::isfinite(control.rotate_deg))
-    throw MeshError("kgon: the control values must be finite");
+    throw UsageError("kgon: the control values must be finite");
   KgonOptions after = state_.kgons;
   if (target.global()) {
     after.global = control;
@@ -309,7 +309,7 @@ void Document::record(Command command) {
 }
 
 Change Document::undo() {
-  if (done_.empty()) throw MeshError("undo: there is nothing to undo");
+  if (done_.empty()) throw UsageError("undo: there is nothing to undo");
   Command command = std::move(done_.back());
   done_.pop_back();
   Change c = apply(command, false);
@@ -319,7 +319,7 @@ Change Document::undo() {
 }
 
 Change Document::redo() {
-  if (undone_.empty()) throw MeshError("redo: there is nothing to redo");
+  if (undone_.empty()) throw UsageError("redo: there is nothing to redo");
   Command command = std::move(undone_.back());
   undone_.pop_back();
   Change c = apply(command, true);

@@ -127,7 +127,7 @@ void LiveSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc
 
 UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
                                  Method method, int resolution) {
-  if (resolution < 1) throw MeshError("the resolution must be at least 1");
+  if (resolution < 1) throw UsageError("the resolution must be at least 1");
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
@@ -333,7 +333,7 @@ UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions&
 
 UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options,
                                         int resolution) {
-  if (resolution < 1) throw MeshError("the resolution must be at least 1");
+  if (resolution < 1) throw UsageError("the resolution must be at least 1");
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method_);
   resolution_ = resolution;

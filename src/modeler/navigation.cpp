@@ -121,7 +121,7 @@ PickKind parse_pick_kind(const std::string& name) {
   if (name == "edge") return PickKind::edge;
   if (name == "face") return PickKind::face;
   if (name == "corner") return PickKind::corner;
-  throw MeshError(
+  throw UsageError(
       fmt::format("unknown element kind '{}' (expected vertex, edge, face or corner)", name));
 }
 

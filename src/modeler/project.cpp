@@ -24,16 +24,16 @@ json vec_json(const Vec3& p) {
 }
 
 Vec3 vec_from(const json& j, const std::string& what) {
-  if (!j.is_array() || j.size() != 3) throw MeshError(what + " must be an array of 3 numbers");
+  if (!j.is_array() || j.size() != 3) throw InputError(what + " must be an array of 3 numbers");
   const Vec3 p(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
   limits::check_coordinates(p, what);
   return p;
 }
 
-/// A section of the project the core reader passed through, or a MeshError naming it.
+/// A section of the project the core reader passed through, or an InputError naming it.
 json section(const ProjectFile& file, const char* name) {
   const auto it = file.sections.find(name);
-  if (it == file.sections.end()) throw MeshError(fmt::format("the project has no \"{}\"", name));
+  if (it == file.sections.end()) throw InputError(fmt::format("the project has no \"{}\"", name));
   return json::parse(it->second);
 }
 
@@ -81,7 +81,7 @@ Project project_from_json(const std::string& text, const std::string& source) {
     p.view.fov_y_deg = v.value("fov", 30.0);
     if (!(p.view.distance > 0 && std::isfinite(p.view.distance)) ||
         !(p.view.fov_y_deg > 0 && p.view.fov_y_deg < 180))
-      throw MeshError("the view needs a positive distance and a field of view in (0, 180)");
+      throw InputError("the view needs a positive distance and a field of view in (0, 180)");
     limits::check_range(p.view.yaw_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                         "the view's yaw");
     limits::check_range(p.view.pitch_deg, -90, 90, "the view's pitch");
@@ -89,23 +89,22 @@ Project project_from_json(const std::string& text, const std::string& source) {
     const json d = section(file, "display");
     p.display.method = parse_method(d.at("method").get<std::string>());
     p.display.resolution = d.at("resolution").get<int>();
-    if (p.display.resolution < 1 || p.display.resolution > 64)
-      throw MeshError(fmt::format("the resolution {} is not in 1..64", p.display.resolution));
+    limits::check_resolution(p.display.resolution, "the display's resolution");
     p.display.mode = parse_shading_mode(d.at("mode").get<std::string>());
     p.display.input_polygons = d.value("input", false);
     for (const json& o : d.value("overlays", json::array())) {
       const auto name = o.get<std::string>();
       const auto* it = std::find(std::begin(overlay_names), std::end(overlay_names), name);
       if (it == std::end(overlay_names))
-        throw MeshError("unknown overlay '" + limits::quoted(name) + "'");
+        throw InputError("unknown overlay '" + limits::quoted(name) + "'");
       p.display.overlays[it - std::begin(overlay_names)] = true;
     }
     p.display.markers = d.value("markers", false);
     if (d.contains("split") && !d["split"].is_null())
       p.display.split = parse_method(d["split"].get<std::string>());
     return p;
-  } catch (const std::exception& e) {  // MeshError, JSON type errors, bad names
-    throw MeshError(fmt::format("{}: {}", source, e.what()));
+  } catch (const std::exception& e) {  // stitch::Error, JSON type errors, bad names
+    throw InputError(fmt::format("{}: {}", source, e.what()));
   }
 }
 

@@ -31,7 +31,7 @@ double number(const std::string& text, const std::string& what) {
   double v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v))
-    throw MeshError(
+    throw UsageError(
         fmt::format("{} must be a finite number, not '{}'", what, limits::quoted(text)));
   return v;
 }
@@ -40,24 +40,24 @@ int integer(const std::string& text, const std::string& what) {
   int v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end != text.data() + text.size())
-    throw MeshError(fmt::format("{} must be an integer, not '{}'", what, limits::quoted(text)));
+    throw UsageError(fmt::format("{} must be an integer, not '{}'", what, limits::quoted(text)));
   return v;
 }
 
 void expect(const std::vector<std::string>& w, size_t min, size_t max, const char* usage) {
-  if (w.size() - 1 < min || w.size() - 1 > max) throw MeshError(fmt::format("usage: {}", usage));
+  if (w.size() - 1 < min || w.size() - 1 > max) throw UsageError(fmt::format("usage: {}", usage));
 }
 
 bool on_off(const std::string& text) {
   if (text == "on") return true;
   if (text == "off") return false;
-  throw MeshError(fmt::format("expected on or off, not '{}'", limits::quoted(text)));
+  throw UsageError(fmt::format("expected on or off, not '{}'", limits::quoted(text)));
 }
 
 Vertex vertex_number(const HalfedgeMesh& m, const std::string& text) {
   const int n = integer(text, "a vertex number");
   if (n < 1 || n > m.vertex_capacity() || m.is_deleted(Vertex(n - 1)))
-    throw MeshError(fmt::format("there is no vertex {}", limits::quoted(text)));
+    throw UsageError(fmt::format("there is no vertex {}", limits::quoted(text)));
   return Vertex(n - 1);
 }
 
@@ -82,7 +82,7 @@ Vec3 offset_from(const std::string& text) {
     start = comma + 1;
   }
   if (parts.size() != 3)
-    throw MeshError(fmt::format("the offset must be X,Y,Z, not '{}'", limits::quoted(text)));
+    throw UsageError(fmt::format("the offset must be X,Y,Z, not '{}'", limits::quoted(text)));
   const Vec3 p(number(parts[0], "x"), number(parts[1], "y"), number(parts[2], "z"));
   limits::check_coordinates(p, "the offset");
   return p;
@@ -122,7 +122,7 @@ const UpdateStats& Session::apply(const Change& change) {
   if (change.kind == Change::Kind::topology) selection.reset();
   try {
     last_update = surface.update(document.mesh(), document.kgon_options(), change);
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     fall_back_from_cc(e.what());
   }
   // Checked where the edit changed the surface, so its cost follows the edit; a full update
@@ -151,7 +151,7 @@ void Session::rebuild() {
   try {
     last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
                                   display.resolution);
-  } catch (const MeshError& e) {
+  } catch (const Error& e) {
     fall_back_from_cc(e.what());
   }
 }
@@ -160,7 +160,7 @@ void Session::fall_back_from_cc(const std::string& why) {
   // Only the Catmull-Clark method can refuse a mesh (should OpenSubdiv reject its topology or
   // give a face no limit surface); the edit stands and the display switches to the paper's
   // method.
-  if (display.method != Method::cc) throw MeshError(why);
+  if (display.method != Method::cc) throw UsageError(why);
   display.method = Method::mdc;
   warning = why + "; showing mdc instead";
   last_update =
@@ -340,7 +340,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       } else {
         const int f = integer(w[2], "a face number");
         if (f < 1 || f > mesh.face_capacity() || mesh.is_deleted(Face(f - 1)))
-          throw MeshError(fmt::format("there is no face {}", w[2]));
+          throw UsageError(fmt::format("there is no face {}", w[2]));
         p.index = f - 1;
       }
     }
@@ -355,14 +355,14 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     }
     const KgonTarget t = target.value_or(KgonTarget{});
     if (w.size() <= i)
-      throw MeshError(
+      throw UsageError(
           "usage: kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset");
     KgonControl c = s.document.kgon_control(t);
     const std::string& what = w[i];
     const size_t args = w.size() - i - 1;
     auto need = [&](size_t n) {
       if (args != n)
-        throw MeshError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
+        throw UsageError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
     };
     if (what == "scale") {
       need(1);
@@ -384,7 +384,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       need(0);
       c = KgonControl{};
     } else {
-      throw MeshError(fmt::format(
+      throw UsageError(fmt::format(
           "unknown K-gon control '{}' (scale, rotate, offset, regularize, reset)", what));
     }
     s.apply(s.document.set_kgon_control(t, c));
@@ -426,7 +426,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     } else {
       const auto* it = std::find(std::begin(overlay_words), std::end(overlay_words), w[1]);
       if (it == std::end(overlay_words))
-        throw MeshError(
+        throw UsageError(
             fmt::format("unknown overlay '{}' (mesh, kgons, nets, tess, markers)", w[1]));
       s.display.overlays[it - std::begin(overlay_words)] = on;
     }
@@ -450,10 +450,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       const BoundingBox b = s.mesh_bounds();
       if (!b.empty()) s.view.frame(b.center(), b.radius(), s.view_aspect());
     } else if (w[1] == "selection") {
-      if (!s.selection) throw MeshError("frame selection: nothing is selected");
+      if (!s.selection) throw UsageError("frame selection: nothing is selected");
       s.view.frame(s.selection->point, 0.25 * s.mesh_bounds().radius(), s.view_aspect());
     } else {
-      throw MeshError("usage: frame all|selection");
+      throw UsageError("usage: frame all|selection");
     }
   } else if (cmd == "orbit") {
     expect(w, 2, 2, "orbit DYAW DPITCH");
@@ -470,20 +470,20 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     s.view.zoom(steps);
   } else if (cmd == "screenshot") {
     const std::string path = rest_after_first_word(strip_comment(raw));
-    if (path.empty()) throw MeshError("usage: screenshot PATH");
-    if (!hooks.screenshot) throw MeshError("screenshot: not available here");
+    if (path.empty()) throw UsageError("usage: screenshot PATH");
+    if (!hooks.screenshot) throw UsageError("screenshot: not available here");
     hooks.screenshot(path);
     result.message = "wrote " + path;
   } else if (cmd == "save") {
     std::string path = rest_after_first_word(strip_comment(raw));
     if (path.empty()) path = s.path;
-    if (path.empty()) throw MeshError("save: the document has no file yet; write save PATH");
+    if (path.empty()) throw UsageError("save: the document has no file yet; write save PATH");
     save_file(s, path);
     result.message = "saved " + path;
   } else if (cmd == "export") {
     const std::string path = rest_after_first_word(strip_comment(raw));
     if (path.empty())
-      throw MeshError(fmt::format(
+      throw UsageError(fmt::format(
           "usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
           extension_list(kSurfaceMeshExtensions)));
     result.message = export_surface(s, path);
@@ -493,16 +493,16 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     // `--offset X,Y,Z` closes the line, so the path before it may contain blanks.
     const auto parts = split_words(path);
     if (!parts.empty() && parts.back() == "--offset")
-      throw MeshError("usage: append PATH [--offset X,Y,Z]");
+      throw UsageError("usage: append PATH [--offset X,Y,Z]");
     if (parts.size() >= 2 && parts[parts.size() - 2] == "--offset") {
       offset = offset_from(std::string(parts.back()));
       path.erase(path.find_last_not_of(" \t", path.rfind("--offset") - 1) + 1);
     }
-    if (path.empty()) throw MeshError("usage: append PATH [--offset X,Y,Z]");
+    if (path.empty()) throw UsageError("usage: append PATH [--offset X,Y,Z]");
     result.message = append_file(s, path, offset);
   } else if (cmd == "open") {
     const std::string path = rest_after_first_word(strip_comment(raw));
-    if (path.empty()) throw MeshError("usage: open PATH");
+    if (path.empty()) throw UsageError("usage: open PATH");
     open_file(s, path);
     result.message = "opened " + path;
   } else if (cmd == "info") {
@@ -517,7 +517,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   } else if (cmd == "check") {
     expect(w, 0, 0, "check");
     if (s.surface.method() == Method::cc)
-      throw MeshError("check: the Catmull-Clark surface has no patches of its own to check");
+      throw UsageError("check: the Catmull-Clark surface has no patches of its own to check");
     s.check_surface_near(s.surface.corners());  // every patch: a pass over the whole surface
     const SurfaceProblems& p = s.surface_problems();
     if (p.empty())

@@ -1,6 +1,5 @@
 // What reads what between control nets and K-gons; see src/kgon/dependencies.cpp.
-#include <algorithm>
-
+#include "mesh/sort_unique.hpp"
 #include "stitch/net/control_net.hpp"
 
 namespace stitch {
@@ -18,8 +17,7 @@ std::vector<Corner> nets_reading(const HalfedgeMesh& mesh, const KgonElements& k
       out.push_back(mesh.next(h));  // its previous edge
     }
   std::erase_if(out, [&](Corner c) { return mesh.is_hole(c); });
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  detail::sort_unique(out);
   return out;
 }
 

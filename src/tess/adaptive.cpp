@@ -242,7 +242,7 @@ class Builder {
   int reserve(int count) {
     const auto first = static_cast<std::int64_t>(out_.positions.size());
     if (first + count > std::numeric_limits<int>::max())
-      throw MeshError(
+      throw UsageError(
           "the adaptive tessellation has more than 2^31 - 1 vertices: raise --tolerance");
     const auto size = static_cast<size_t>(first + count);
     out_.positions.resize(size);
@@ -256,7 +256,7 @@ class Builder {
   Sample sample(Corner c, int vertex, const Eigen::Vector2d& uv) {
     const SurfacePoint p = sampler_.evaluate(c, uv.x(), uv.y());
     if (!p.position.allFinite() || !p.normal.allFinite())
-      throw MeshError(
+      throw InputError(
           fmt::format("the surface is not finite at ({}, {}) on the patch of corner "
                       "half-edge {}",
                       uv.x(), uv.y(), c.idx));
@@ -293,13 +293,13 @@ class Builder {
 AdaptiveMesh tessellate_adaptive(const HalfedgeMesh& mesh, const Surface& surface,
                                  const AdaptiveOptions& options) {
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-    throw MeshError(fmt::format("the tolerance must be positive, not {}", options.tolerance));
-  if (options.max_rate < 1) throw MeshError("the largest rate must be at least 1");
+    throw UsageError(fmt::format("the tolerance must be positive, not {}", options.tolerance));
+  if (options.max_rate < 1) throw UsageError("the largest rate must be at least 1");
   Eigen::AlignedBox3d box;
   for (int v = 0; v < mesh.vertex_capacity(); ++v)
     if (!mesh.is_deleted(Vertex(v))) box.extend(mesh.position(Vertex(v)));
   const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
-  if (!(diagonal > 0)) throw MeshError("the mesh has no extent to measure the tolerance against");
+  if (!(diagonal > 0)) throw InputError("the mesh has no extent to measure the tolerance against");
   AdaptiveMesh out;
   Builder builder(mesh, surface, out);
   builder.choose_rates(options.tolerance * diagonal, options.max_rate);
@@ -313,7 +313,7 @@ void write_adaptive_mesh(const std::string& path, const AdaptiveMesh& mesh,
   using namespace io_detail;
   const std::string ext = file_extension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw MeshError(fmt::format(
+    throw OutputError(fmt::format(
         "cannot write {}: an adaptive tessellation is written as .obj, .ply, .off or .stl", path));
   const bool normals = ext == ".obj" || ext == ".ply";
   const MeshStream stream =

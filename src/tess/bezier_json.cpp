@@ -98,8 +98,8 @@ class Reader {
     if (!value.is_array() || value.size() != 3) throw error(where, "is not [x, y, z]");
     return {number(value[0], where), number(value[1], where), number(value[2], where)};
   }
-  [[nodiscard]] MeshError error(const std::string& where, const std::string& what) const {
-    return MeshError(fmt::format("{}: {} {}", path_, where, what));
+  [[nodiscard]] InputError error(const std::string& where, const std::string& what) const {
+    return InputError(fmt::format("{}: {} {}", path_, where, what));
   }
 
  private:
@@ -120,7 +120,7 @@ PatchSet read_bezier_json(const std::string& path) {
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw MeshError(fmt::format("{}: not JSON: {}", path, e.what()));
+    throw InputError(fmt::format("{}: not JSON: {}", path, e.what()));
   }
   const Reader r(path);
   const json& format = r.member(doc, "format", "the file");

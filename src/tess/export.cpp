@@ -26,18 +26,18 @@ namespace {
 constexpr std::string_view kComment =
     "stitch surface (bicubic Bezier patches, modified de Casteljau)";
 
-void check_surface(const std::string& path, const SurfaceMesh& mesh) {
+void check_writable(const std::string& path, const SurfaceMesh& mesh) {
   const int nv = mesh.num_vertices();
   if (mesh.normals.size() != mesh.positions.size())
-    throw MeshError(
+    throw OutputError(
         fmt::format("cannot write {}: {} positions but {} normals", path, nv, mesh.normals.size()));
   for (const auto& quad : mesh.quads)
     for (int v : quad)
       if (v < 0 || v >= nv)
-        throw MeshError(
+        throw OutputError(
             fmt::format("cannot write {}: a quad refers to sample {} of {}", path, v, nv));
   if (const int bad = first_non_finite_sample(mesh); bad >= 0)
-    throw MeshError(fmt::format("cannot write {}: sample {} has a non-finite position or normal",
+    throw OutputError(fmt::format("cannot write {}: sample {} has a non-finite position or normal",
                                 path, bad + 1));
 }
 
@@ -49,7 +49,7 @@ bool is_gltf(const std::string& path) {
 void check_extension(const std::string& path) {
   const std::string ext = file_extension(path);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw MeshError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
                                 ext, extension_list(kSurfaceMeshExtensions)));
 }
 
@@ -70,7 +70,7 @@ std::vector<Eigen::Vector2d> grid_uvs(const UvSurface& uvs, const std::vector<Co
                     });
   for (size_t i = 0; i < out.size(); ++i)
     if (!out[i].allFinite())
-      throw MeshError(fmt::format("texture coordinate {} is not finite", i + 1));
+      throw OutputError(fmt::format("texture coordinate {} is not finite", i + 1));
   return out;
 }
 
@@ -145,12 +145,12 @@ bool surface_file_takes_uvs(const std::string& path) {
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
                         const SurfaceFileOptions& options) {
   if (is_gltf(path)) {
-    check_surface(path, mesh);
+    check_writable(path, mesh);
     write_gltf(path, mesh, file_extension(path) == ".glb");
     return;
   }
   check_extension(path);
-  check_surface(path, mesh);
+  check_writable(path, mesh);
   const bool normals = file_extension(path) != ".off" && file_extension(path) != ".stl";
   detail::write_stream(
       path, io_detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
@@ -162,7 +162,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
                                        const SurfaceFileOptions& options) {
   if (is_gltf(path) && options.uvs) {
     const TexturedMesh whole = textured_mesh(mesh, surface, resolution, *options.uvs);
-    check_surface(path, whole.mesh);
+    check_writable(path, whole.mesh);
     write_gltf(path, whole.mesh, file_extension(path) == ".glb", &whole.texcoords);
     return {static_cast<std::int64_t>(whole.mesh.positions.size()),
             static_cast<std::int64_t>(whole.mesh.quads.size()),
@@ -187,7 +187,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
     layout.evaluate(surface, begin, end, positions, normals);
     for (std::int64_t i = 0; i < end - begin; ++i)
       if (!positions[i].allFinite() || !normals[i].allFinite())
-        throw MeshError(
+        throw OutputError(
             fmt::format("sample {} has a non-finite position or normal", begin + i + 1));
   };
   stream.vertices = [&](std::int64_t begin, std::int64_t end, io_detail::VertexBlock& block) {
@@ -205,7 +205,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   if (texcoords) {
     stream.num_texcoords = per_patch * static_cast<std::int64_t>(surface.corners().size());
     if (stream.num_texcoords > std::numeric_limits<int>::max())
-      throw MeshError(fmt::format(
+      throw OutputError(fmt::format(
           "cannot write {}: {} texture coordinates are more than 2^31 - 1; use a lower resolution",
           path, stream.num_texcoords));
     stream.texcoords = [&](std::int64_t begin, std::int64_t end,
@@ -218,7 +218,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
              s < std::min(end, (k + 1) * per_patch); ++s) {
           const Eigen::Vector2d& uv = grid[static_cast<size_t>(s - k * per_patch)];
           if (!uv.allFinite())
-            throw MeshError(fmt::format("texture coordinate {} is not finite", s + 1));
+            throw OutputError(fmt::format("texture coordinate {} is not finite", s + 1));
           block[static_cast<size_t>(s - begin)] = uv;
         }
       }
@@ -278,12 +278,12 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
 
 void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
                                const UvSurface* uvs) {
-  check_surface(path, mesh);
+  check_writable(path, mesh);
   const size_t nv = mesh.positions.size();
   if (mesh.uv.size() != nv || mesh.patch.size() != nv)
-    throw MeshError(fmt::format("cannot write {}: the samples lack (u, v) or patch numbers", path));
+    throw UsageError(fmt::format("cannot write {}: the samples lack (u, v) or patch numbers", path));
   if (file_extension(path) != ".ply")
-    throw MeshError(fmt::format("cannot write {}: samples are written as .ply only", path));
+    throw UsageError(fmt::format("cannot write {}: samples are written as .ply only", path));
   std::vector<Eigen::Vector2d> st;
   if (uvs) {
     st.resize(nv);
@@ -294,7 +294,7 @@ void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
         });
     for (size_t i = 0; i < nv; ++i)
       if (!st[i].allFinite())
-        throw MeshError(fmt::format("cannot write {}: sample {} has non-finite texture coordinates",
+        throw OutputError(fmt::format("cannot write {}: sample {} has non-finite texture coordinates",
                                     path, i + 1));
   }
   // s t come after `patch`, so readers that know the records without them read on unchanged.

@@ -105,9 +105,9 @@ tinygltf::Model make_model(const SurfaceMesh& mesh, const std::vector<Eigen::Vec
 void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
                 const std::vector<Eigen::Vector2f>* texcoords) {
   if (mesh.positions.empty() || mesh.quads.empty())
-    throw MeshError(fmt::format("cannot write {}: the surface is empty", path));
+    throw OutputError(fmt::format("cannot write {}: the surface is empty", path));
   if (texcoords && texcoords->size() != mesh.positions.size())
-    throw MeshError(fmt::format("cannot write {}: {} texture coordinates for {} vertices", path,
+    throw OutputError(fmt::format("cannot write {}: {} texture coordinates for {} vertices", path,
                                 texcoords->size(), mesh.positions.size()));
   tinygltf::Model model = make_model(mesh, texcoords);
   tinygltf::TinyGLTF writer;
@@ -116,7 +116,7 @@ void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
         path,
         [&](std::ostream& out) {
           if (!writer.WriteGltfSceneToStream(&model, out, false, true))
-            throw MeshError(fmt::format("cannot write {}: glTF serialization failed", path));
+            throw OutputError(fmt::format("cannot write {}: glTF serialization failed", path));
         },
         true);
     return;
@@ -128,7 +128,7 @@ void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
   model.buffers[0].data.clear();
   std::ostringstream text;
   if (!writer.WriteGltfSceneToStream(&model, text, true, false))
-    throw MeshError(fmt::format("cannot write {}: glTF serialization failed", path));
+    throw OutputError(fmt::format("cannot write {}: glTF serialization failed", path));
   nlohmann::json doc = nlohmann::json::parse(text.str());
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", bin_path.filename().string()}};
   // The buffer is written under a name of its own first and takes its final name only once the
@@ -152,7 +152,7 @@ void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
   std::filesystem::rename(staged, bin_path, ec);
   if (ec) {
     std::filesystem::remove(staged, ec);
-    throw MeshError(fmt::format("cannot write {}: {}", bin_path.string(), ec.message()));
+    throw OutputError(fmt::format("cannot write {}: {}", bin_path.string(), ec.message()));
   }
 }
 

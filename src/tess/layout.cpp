@@ -11,7 +11,7 @@ namespace stitch {
 TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vector<Corner>& corners,
                                        int resolution, bool welded)
     : mesh_(mesh), corners_(corners), n_(resolution), welded_(welded) {
-  if (n_ < 1) throw MeshError("the resolution must be at least 1");
+  if (n_ < 1) throw UsageError("the resolution must be at least 1");
   const auto num_corners = static_cast<std::int64_t>(corners.size());
   const std::int64_t per_side = n_ - 1;
   if (!welded_) {
@@ -54,7 +54,7 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
   }
   // Output files and SurfaceMesh number vertices with 32-bit ints.
   if (num_vertices_ > std::numeric_limits<int>::max())
-    throw MeshError(
+    throw UsageError(
         fmt::format("{} corners at resolution {} make {} surface vertices, more than 2^31 - 1: use "
                     "a lower resolution",
                     num_corners, n_, num_vertices_));

@@ -155,7 +155,7 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
         break;
       }
       if (depth == options.max_depth)
-        throw MeshError(fmt::format(
+        throw UsageError(fmt::format(
             "the tolerance {} (relative) and {} degrees are not reached in {} splits (deviation "
             "{:.3g} relative, {:.3g} degrees): ask for a larger tolerance",
             options.tolerance, options.angle_tolerance_deg, depth, d.position / set.model_size,

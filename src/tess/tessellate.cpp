@@ -43,7 +43,7 @@ SurfaceMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
   // The input limits (limits.hpp) should make this impossible; whatever shows or writes these
   // samples (render, compare, the modeler) must not get a NaN.
   if (const int bad = first_non_finite_sample(out); bad >= 0)
-    throw MeshError(
+    throw InputError(
         fmt::format("the surface is not finite at sample {}{}", bad + 1,
                     options.sample_attributes
                         ? fmt::format(" (on the patch of corner half-edge {})", out.patch[bad])

@@ -158,8 +158,8 @@ TEST(CadUnits, DeclaredNotScaled) {
       EXPECT_LE(nearest, 1e-6 * rt.set.model_size) << ext;
     }
   }
-  EXPECT_THROW(cad::write_cad(folder.file("t.step"), rt.set, {"furlong", 0}), MeshError);
-  EXPECT_THROW(cad::write_cad(folder.file("t.brep"), rt.set), MeshError);
+  EXPECT_THROW(cad::write_cad(folder.file("t.step"), rt.set, {"furlong", 0}), Error);
+  EXPECT_THROW(cad::write_cad(folder.file("t.brep"), rt.set), Error);
 }
 
 TEST(CadWrite, FullDiskLeavesNothing) {

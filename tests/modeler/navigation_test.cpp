@@ -79,7 +79,7 @@ TEST(ModelerNavigation, PicksTheNearestFaceAndItsElements) {
   ASSERT_TRUE(e);
   EXPECT_EQ(describe(cube, *e), "edge 6 7@2");
   EXPECT_FALSE(pick(cube, Ray{Vec3(5, 5, 5), Vec3(1, 0, 0)}, PickKind::face));
-  EXPECT_THROW(parse_pick_kind("loop"), MeshError);
+  EXPECT_THROW(parse_pick_kind("loop"), Error);
 }
 
 }  // namespace

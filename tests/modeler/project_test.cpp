@@ -81,17 +81,17 @@ TEST(ModelerProject, BadFilesAreRefusedWithTheirName) {
       {
         try {
           project_from_json("{ not json", "broken.stitch");
-        } catch (const MeshError& e) {
+        } catch (const Error& e) {
           EXPECT_NE(std::string(e.what()).find("broken.stitch"), std::string::npos);
           throw;
         }
       },
-      MeshError);
+      Error);
   std::string text = project_to_json(sample());
   text.replace(text.find("\"asc\""), 5, "\"xyz\"");  // the method
-  EXPECT_THROW(project_from_json(text, "m.stitch"), MeshError);
-  EXPECT_THROW(project_from_json("{\"format\": \"other\"}", "x.stitch"), MeshError);
-  EXPECT_THROW(load_project("/nonexistent/file.stitch"), MeshError);
+  EXPECT_THROW(project_from_json(text, "m.stitch"), Error);
+  EXPECT_THROW(project_from_json("{\"format\": \"other\"}", "x.stitch"), Error);
+  EXPECT_THROW(load_project("/nonexistent/file.stitch"), Error);
 }
 
 TEST(ModelerProject, AutosavePaths) {

@@ -20,7 +20,7 @@ namespace stitch {
 /// surface around it as if the face were there); edge and vertex sharpness become crease and
 /// corner sharpness, semi-sharp values included; `boundary` is Sdc's boundary interpolation.
 /// Only corners outside holes have patches. A vertex where the surface's boundary passes more
-/// than once is refused (MeshError): OpenSubdiv would make it a non-manifold corner.
+/// than once is refused (stitch::Error): OpenSubdiv would make it a non-manifold corner.
 ///
 /// The constructor builds every face's Bfr surface (in parallel). OpenSubdiv cannot represent
 /// every mesh this library holds (2-sided faces, faces running along one edge twice or visiting
@@ -46,7 +46,7 @@ class CatmullClarkSurface {
   CatmullClarkSurface& operator=(CatmullClarkSurface&&) noexcept;
 
   /// Position, du and dv in the corner patch's own (u, v), unit normal du x dv, level 0.
-  /// Throws MeshError for a corner that is not a live half-edge of the mesh outside holes.
+  /// Throws stitch::Error for a corner that is not a live half-edge of the mesh outside holes.
   [[nodiscard]] SurfacePoint evaluate(Corner c, double u, double v) const;
 
  private:

@@ -32,7 +32,7 @@ UvMode parse_uv_mode(const std::string& text);
 
 class UvSurface {
  public:
-  /// Throws MeshError when a corner that makes a patch has no UV (a face --fill-holes added) or
+  /// Throws stitch::Error when a corner that makes a patch has no UV (a face --fill-holes added) or
   /// `uvs` does not belong to the mesh. Under `smooth`, a UV layout that is not a manifold mesh
   /// (build_mesh refuses it) or whose surface is not finite falls back to `linear`, with a
   /// warning saying why.

@@ -69,7 +69,7 @@ struct BuildReport {
   CornerUvs corner_uvs;
 };
 
-/// Builds the half-edge mesh, or throws MeshError naming the problem and where it is.
+/// Builds the half-edge mesh, or throws stitch::Error naming the problem and where it is.
 HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options = {},
                         BuildReport* report = nullptr);
 
@@ -77,7 +77,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options = {
 /// left out, so they read back as boundaries) and the sharpness tags.
 PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh);
 
-/// Throws MeshError saying why unless the mesh, written as a file (to_polygon_soup), reads back
+/// Throws stitch::Error saying why unless the mesh, written as a file (to_polygon_soup), reads back
 /// through build_mesh (2-sided faces allowed) with the same counts, components and genus. Every
 /// edit passes this before it is accepted, so everything stitch writes it can read again.
 void check_reads_back(const HalfedgeMesh& mesh);

@@ -20,7 +20,7 @@ namespace stitch {
 /// Texture coordinates (PolygonSoup::uvs, face_uvs): OBJ `vt` with `f v/vt` (every face or
 /// none), PLY per-vertex `s t` (or `texture_u texture_v`, `texture_s texture_t`, `u v`), glTF
 /// TEXCOORD_0 (v flipped to OBJ's convention: 0 at the bottom).
-/// Throws MeshError naming the file and line (or element) for anything malformed.
+/// Throws stitch::Error naming the file and line (or element) for anything malformed.
 /// `progress`, if set, is told how much of the work is done (0 to 1) from time to time: the
 /// bytes read, then the lines parsed (OBJ, the format of the largest meshes).
 PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings = nullptr,
@@ -39,7 +39,7 @@ void write_mesh(const std::string& path, const HalfedgeMesh& mesh);
 
 /// Runs `write` on a stream to a temporary file in the same folder as `path` and renames it
 /// into place when `write` returns; on any error the temporary file is removed, `path` is left
-/// as it was, and the error is rethrown (as MeshError for I/O failures).
+/// as it was, and the error is rethrown (as stitch::Error for I/O failures).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 /// The same for writers that can only write to a path (OpenCASCADE's): `write` gets the
@@ -50,7 +50,7 @@ void write_file_atomically_at(const std::string& path,
                               const std::function<void(const std::string& temporary)>& write);
 
 /// The bytes of a regular file (after following symbolic links). Pipes, devices and sockets
-/// are refused, since reading them may never end. Throws MeshError naming the file. `progress`
+/// are refused, since reading them may never end. Throws stitch::Error naming the file. `progress`
 /// (optional) gets the fraction of the bytes read.
 std::string read_regular_file(const std::string& path,
                               const std::function<void(double)>& progress = {});

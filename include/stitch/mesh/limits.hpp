@@ -46,10 +46,10 @@ std::string quoted(std::string_view token);
 /// (without saying which point: the caller names it).
 std::string coordinate_problem(const Vec3& p);
 
-/// Throws MeshError "<what> ..." when coordinate_problem(p) finds a problem.
+/// Throws stitch::Error "<what> ..." when coordinate_problem(p) finds a problem.
 void check_coordinates(const Vec3& p, std::string_view what);
 
-/// Throws MeshError when the longest side of the mesh's bounding box is below min_extent. Checked
+/// Throws stitch::Error when the longest side of the mesh's bounding box is below min_extent. Checked
 /// where a surface is built, not when a mesh is read: such a mesh is a valid mesh, which stitch
 /// edits, writes and reads back, but it has no normals to build a surface from.
 void check_extent(const HalfedgeMesh& mesh);

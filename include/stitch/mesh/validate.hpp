@@ -15,7 +15,7 @@ namespace stitch {
 /// an edge or a vertex with another hole; sharpness tags are finite and >= 0).
 std::vector<std::string> find_problems(const HalfedgeMesh& mesh);
 
-/// Throws MeshError with the first problems when find_problems() finds any.
+/// Throws stitch::Error with the first problems when find_problems() finds any.
 void validate(const HalfedgeMesh& mesh);
 
 struct TopologyStats {

@@ -18,7 +18,7 @@
 namespace stitch {
 
 /// Adds the file's per-element controls, numbered for `mesh`, to `kgons` (an entry replaces a
-/// control its element already has). Throws MeshError naming `source`, the entry and what is
+/// control its element already has). Throws stitch::Error naming `source`, the entry and what is
 /// wrong; `kgons` is then unchanged.
 void parse_kgon_controls(const std::string& text, const std::string& source,
                          const HalfedgeMesh& mesh, KgonOptions& kgons);

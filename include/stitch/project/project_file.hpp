@@ -50,7 +50,7 @@ bool is_project_path(const std::string& path);
 /// JSON). Per-element controls are written in the numbers the mesh gets when it is read back.
 std::string write_project_json(const HalfedgeMesh& mesh, const KgonOptions& kgons,
                                const std::map<std::string, std::string>& sections = {});
-/// Throws MeshError naming `source` and what is wrong. 2-sided faces are always allowed (the
+/// Throws stitch::Error naming `source` and what is wrong. 2-sided faces are always allowed (the
 /// topology operators make them); `build` adds e.g. fill_holes.
 ProjectFile parse_project_json(const std::string& text, const std::string& source,
                                BuildOptions build = {}, BuildReport* report = nullptr);

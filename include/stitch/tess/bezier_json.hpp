@@ -17,7 +17,7 @@ inline constexpr int kBezierJsonVersion = 1;
 void write_bezier_json(const std::string& path, const PatchSet& patches,
                        const KgonSet* kgons = nullptr);
 
-/// Reads a file written by write_bezier_json (K-gons are not read back). Throws MeshError
+/// Reads a file written by write_bezier_json (K-gons are not read back). Throws stitch::Error
 /// naming the file and the entry for anything that is not that format.
 PatchSet read_bezier_json(const std::string& path);
 

@@ -51,7 +51,7 @@ struct PatchSet {
 /// The patches of the surface: for mdc, every extraordinary root split to the smallest depth at
 /// which the innermost cells are within the tolerances; for asc, the roots as they are. Throws
 /// UsageError for cc (not a set of Bézier patches), a tolerance <= 0 or not finite,
-/// and MeshError when max_depth does not reach the tolerance.
+/// and stitch::Error when max_depth does not reach the tolerance.
 PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
                         const PatchSetOptions& options = {});
 

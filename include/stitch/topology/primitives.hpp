@@ -31,7 +31,7 @@ HalfedgeMesh make_prism(int n);
 HalfedgeMesh make_torus(int m, int n, double major_radius = 2.0, double minor_radius = 0.5);
 
 /// Builds a primitive by name with integer parameters (prism: n; torus: m n), as the command
-/// line and the operation lines spell them. Throws MeshError for an unknown name or bad params.
+/// line and the operation lines spell them. Throws stitch::Error for an unknown name or bad params.
 HalfedgeMesh make_primitive(const std::string& name, const std::vector<int>& params);
 
 /// The names make_primitive() accepts, with their parameters, for help texts.

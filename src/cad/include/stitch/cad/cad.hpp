@@ -26,7 +26,7 @@ std::optional<CadFormat> cad_format(const std::string& path);
 /// Length units a file can declare: "mm", "cm", "m", "in", "ft". The coordinates are written
 /// as they are and labelled with the unit, never scaled.
 inline constexpr const char* kCadUnits = "mm, cm, m, in, ft";
-/// Throws MeshError naming the known units when `units` is not one of them.
+/// Throws stitch::Error naming the known units when `units` is not one of them.
 void check_units(const std::string& units);
 
 struct CadOptions {
@@ -45,12 +45,12 @@ struct CadReport {
 };
 
 /// The faces of every patch sewn into shells, each closed shell a solid oriented outward; one
-/// shape (a compound when there is more than one). Throws MeshError for a patch OCCT refuses.
+/// shape (a compound when there is more than one). Throws stitch::Error for a patch OCCT refuses.
 TopoDS_Shape make_shape(const PatchSet& patches, const CadOptions& options = {},
                         CadReport* report = nullptr);
 
 /// Writes the shape as STEP AP214 or IGES 5.3 by the extension of `path`. Atomic: nothing is
-/// left at `path` unless the whole file was written. Throws MeshError (unknown extension or
+/// left at `path` unless the whole file was written. Throws stitch::Error (unknown extension or
 /// unit, write failures).
 CadReport write_cad(const std::string& path, const PatchSet& patches,
                     const CadOptions& options = {});
@@ -66,7 +66,7 @@ PolygonSoup triangulate(const TopoDS_Shape& shape, double deflection);
 void quiet_opencascade();
 
 /// Reads a STEP or IGES file (by extension) into one shape, for checks and viewers, with
-/// lengths in millimetres (OCCT's unit). Throws MeshError when it cannot be read.
+/// lengths in millimetres (OCCT's unit). Throws stitch::Error when it cannot be read.
 TopoDS_Shape read_cad(const std::string& path);
 
 }  // namespace stitch::cad

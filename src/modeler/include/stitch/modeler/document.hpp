@@ -65,7 +65,7 @@ class Document {
 
   /// Applies one `stitch edit --ops` line (apply_operation, which counts V, E, F and the Euler
   /// characteristic for the report but not genus and components, whose count would need a pass
-  /// over the whole mesh). Throws MeshError with the document unchanged when the line is
+  /// over the whole mesh). Throws stitch::Error with the document unchanged when the line is
   /// refused. A blank line changes nothing and records nothing.
   Change apply_operation(std::string_view line, OperationReport* report = nullptr);
   /// The same for a typed operation; its history label is format_operation's line.
@@ -75,7 +75,7 @@ class Document {
   /// Adds `other` (a valid mesh) as one more component, moved by `offset`, with its
   /// per-element K-gon controls, as one undoable step. Its elements are numbered after this
   /// mesh's, in their order; nothing already here is renumbered, so the step is a journal entry
-  /// like a local operation and the surface updates only the new patches. Throws MeshError with
+  /// like a local operation and the surface updates only the new patches. Throws stitch::Error with
   /// the document unchanged when the result would break a limit.
   Change append(const HalfedgeMesh& other, const KgonOptions& other_kgons, const Vec3& offset,
                 std::string label);
@@ -83,7 +83,7 @@ class Document {
   /// another one extends that command (one undo step per mouse drag).
   Change move_vertices(const std::vector<Vertex>& vertices, const std::vector<Vec3>& positions,
                        bool merge = false);
-  /// Sets the control of one element's K-gon (or the global one). Throws MeshError for an
+  /// Sets the control of one element's K-gon (or the global one). Throws stitch::Error for an
   /// element that does not exist.
   Change set_kgon_control(const KgonTarget& target, const KgonControl& control, bool merge = false);
   /// The control in effect for the target (the element's own, else the default).
@@ -91,7 +91,7 @@ class Document {
 
   [[nodiscard]] bool can_undo() const { return !done_.empty(); }
   [[nodiscard]] bool can_redo() const { return !undone_.empty(); }
-  /// Throw MeshError when there is nothing to undo / redo.
+  /// Throw stitch::Error when there is nothing to undo / redo.
   Change undo();
   Change redo();
   /// Labels of the done commands, oldest first, and of the undone ones, next redo last.

@@ -57,7 +57,7 @@ class LiveSurface {
   UpdateStats rebuild(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
                       int resolution);
   /// Brings the surface up to date with `mesh` and `options` after `change`. The functions that
-  /// can fail (cc on a mesh OpenSubdiv refuses) throw MeshError before changing anything.
+  /// can fail (cc on a mesh OpenSubdiv refuses) throw stitch::Error before changing anything.
   UpdateStats update(const HalfedgeMesh& mesh, const KgonOptions& options, const Change& change);
   UpdateStats set_method(const HalfedgeMesh& mesh, const KgonOptions& options, Method method);
   UpdateStats set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options, int resolution);

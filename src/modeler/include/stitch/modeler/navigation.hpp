@@ -46,7 +46,7 @@ struct Ray {
 Ray pixel_ray(const Camera& camera, double x, double y, int width, int height);
 
 enum class PickKind { vertex, edge, face, corner };
-/// Parses "vertex", "edge", "face", "corner"; throws MeshError otherwise.
+/// Parses "vertex", "edge", "face", "corner"; throws stitch::Error otherwise.
 PickKind parse_pick_kind(const std::string& name);
 std::string to_string(PickKind kind);
 

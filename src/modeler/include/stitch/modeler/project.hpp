@@ -35,7 +35,7 @@ struct Project {
 bool is_project_path(const std::string& path);
 
 std::string project_to_json(const Project& project);
-/// Throws MeshError naming `source` and what is wrong.
+/// Throws stitch::Error naming `source` and what is wrong.
 Project project_from_json(const std::string& text, const std::string& source);
 /// Atomic (write_file_atomically).
 void save_project(const std::string& path, const Project& project);

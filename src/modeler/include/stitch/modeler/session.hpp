@@ -90,14 +90,14 @@ struct Session {
 };
 
 /// Opens a mesh (OBJ/OFF/PLY) or project file into the session: a fresh history, the view framed
-/// (or the project's). Throws MeshError.
+/// (or the project's). Throws stitch::Error.
 void open_file(Session& session, const std::string& path);
 /// Saves the project (.stitch/.json) or the mesh (.obj/.off/.ply/.stl), atomically; the path
-/// becomes the document's. Throws MeshError. A mesh file has no place for K-gon controls: with
+/// becomes the document's. Throws stitch::Error. A mesh file has no place for K-gon controls: with
 /// any set, session.warning says so and the document stays modified (its autosave keeps them).
 void save_file(Session& session, const std::string& path);
 /// Adds the mesh or project at `path` to the document as one more component moved by `offset`
-/// (Document::append), one undo step. Returns what was added. Throws MeshError.
+/// (Document::append), one undo step. Returns what was added. Throws stitch::Error.
 std::string append_file(Session& session, const std::string& path, const Vec3& offset);
 
 /// What a script line needs from the application.

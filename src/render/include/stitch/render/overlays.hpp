@@ -112,7 +112,7 @@ MarkerSet extraordinary_markers(const std::vector<ExtraordinaryPoint>& points);
 /// degenerate quad per edge), flat normals, patch = face index, level 0. Holes are left out.
 SurfaceMesh input_faces(const HalfedgeMesh& mesh);
 /// Texture coordinates of input_faces' vertices: each corner's own UV, the mean of the face's
-/// UVs at its centre. Throws MeshError when a face has none (one --fill-holes added).
+/// UVs at its centre. Throws stitch::Error when a face has none (one --fill-holes added).
 std::vector<Eigen::Vector2d> input_face_texcoords(const HalfedgeMesh& mesh, const CornerUvs& uvs);
 
 }  // namespace stitch

@@ -39,7 +39,7 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
 /// The UV of every sample of `surface`: `uvs` at the sample's patch and (u, v).
 std::vector<Eigen::Vector2d> surface_texcoords(const SurfaceMesh& surface, const UvSurface& uvs);
 /// Fills scene.surface_texcoords from `uvs` and scene.input_texcoords from `corner_uvs` (the
-/// mesh's, which `uvs` was built on). Throws MeshError as input_face_texcoords does.
+/// mesh's, which `uvs` was built on). Throws stitch::Error as input_face_texcoords does.
 void add_texcoords(SceneGeometry& scene, const HalfedgeMesh& mesh, const CornerUvs& corner_uvs,
                    const UvSurface& uvs);
 
