@@ -51,7 +51,8 @@ class OutputError : public Error {
   throw Error(std::move(message));
 }
 
-/// The former name of Error, kept while code that throws it is given a kind.
+/// Error's name in stitch 0.1, kept so that code written against it still compiles; stitch itself
+/// throws the kinds above.
 using MeshError = Error;
 
 }  // namespace stitch
