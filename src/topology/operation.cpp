@@ -154,8 +154,23 @@ constexpr std::array<OperationInfo, 15> kTable{{
     {"dual", "dual", "no arguments", "the dual mesh: a vertex per face, a face per vertex", true},
 }};
 
-/// The row of the first remeshing; the schemes follow in Remeshing's order.
-constexpr size_t kFirstRemeshing = 11;
+/// The table's rows by name, so that the parser's cases cannot drift from the table's order; the
+/// remeshings follow the last in Remeshing's order.
+enum Row : size_t {
+  kInsertEdge,
+  kDeleteEdge,
+  kSubdivideEdge,
+  kCollapseEdge,
+  kExtrudeFace,
+  kConnectFaces,
+  kDeleteFace,
+  kOpenFace,
+  kFillHole,
+  kCrease,
+  kCorner,
+  kFirstRemeshing
+};
+static_assert(kFirstRemeshing + 4 == kTable.size());
 
 Operation parse_words(const HalfedgeMesh& mesh, const std::vector<std::string_view>& w) {
   const OperationInfo* info = find_operation(w[0]);
@@ -164,23 +179,23 @@ Operation parse_words(const HalfedgeMesh& mesh, const std::vector<std::string_vi
         fmt::format("unknown operation '{}' (known: {})", limits::quoted(w[0]), operation_names()));
   const size_t row = static_cast<size_t>(info - kTable.data());
   switch (row) {
-    case 0:
+    case kInsertEdge:
       expect_args(w, 2, 2, *info);
       return ops::InsertEdge{parse_corner(mesh, w[1]), parse_corner(mesh, w[2])};
-    case 1:
+    case kDeleteEdge:
       expect_args(w, 2, 2, *info);
       return ops::DeleteEdge{parse_edge(mesh, w[1], w[2])};
-    case 2:
+    case kSubdivideEdge:
       expect_args(w, 2, 2, *info);
       return ops::SubdivideEdge{parse_edge(mesh, w[1], w[2])};
-    case 3:
+    case kCollapseEdge:
       expect_args(w, 2, 2, *info);
       return ops::CollapseEdge{parse_edge(mesh, w[1], w[2]), vertex_arg(mesh, w[1])};
-    case 4:
+    case kExtrudeFace:
       expect_args(w, 2, 3, *info);
       return ops::ExtrudeFace{face_arg(mesh, w[1]), parse_double(w[2], "distance"),
                               w.size() > 3 ? parse_double(w[3], "scale") : 1.0};
-    case 5: {
+    case kConnectFaces: {
       expect_args(w, 2, 5, *info);
       ops::ConnectFaces op{face_arg(mesh, w[1]), face_arg(mesh, w[2]), {}};
       if (w.size() > 3 && w[3] != "auto") op.handle.twist = parse_int(w[3], "twist");
@@ -193,19 +208,19 @@ Operation parse_words(const HalfedgeMesh& mesh, const std::vector<std::string_vi
       if (w.size() > 5) op.handle.waist = parse_double(w[5], "waist");
       return op;
     }
-    case 6:
+    case kDeleteFace:
       expect_args(w, 1, 1, *info);
       return ops::DeleteFace{face_arg(mesh, w[1])};
-    case 7:
+    case kOpenFace:
       expect_args(w, 1, 1, *info);
       return ops::OpenFace{face_arg(mesh, w[1])};
-    case 8:
+    case kFillHole:
       expect_args(w, 1, 1, *info);
       return ops::FillHole{face_arg(mesh, w[1])};
-    case 9:
+    case kCrease:
       expect_args(w, 3, 3, *info);
       return ops::SetCrease{parse_edge(mesh, w[1], w[2]), parse_sharpness(w[3])};
-    case 10:
+    case kCorner:
       expect_args(w, 2, 2, *info);
       return ops::SetCorner{vertex_arg(mesh, w[1]), parse_sharpness(w[2])};
     default:
