@@ -55,7 +55,7 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, do
 }
 
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
-  // The command line's range; and SurfaceMesh numbers its samples with int, so their count
+  // The command line's range; and TessellatedMesh numbers its samples with int, so their count
   // (at most (resolution + 1)^2 per patch) must fit one.
   if (resolution < 1 || resolution > limits::max_resolution)
     throw py::value_error(
@@ -70,7 +70,7 @@ TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution,
   return {resolution, welded};
 }
 
-SurfaceMesh run_tessellate(const SurfaceHandle& s, const TessellationOptions& options) {
+TessellatedMesh run_tessellate(const SurfaceHandle& s, const TessellationOptions& options) {
   py::gil_scoped_release release;
   return tessellate(*s.mesh, *s.surface, options);
 }
@@ -80,7 +80,7 @@ double time_tessellate(const SurfaceHandle& s, int resolution, bool welded) {
   const TessellationOptions options = tessellation_options(s, resolution, welded);
   py::gil_scoped_release release;
   const auto start = std::chrono::steady_clock::now();
-  const SurfaceMesh result = tessellate(*s.mesh, *s.surface, options);
+  const TessellatedMesh result = tessellate(*s.mesh, *s.surface, options);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -186,15 +186,15 @@ void export_surface(const SurfaceHandle& s, const std::string& path, int resolut
   }
 }
 
-const SurfaceMesh& samples(const py::object& self) {
-  return self.cast<const SurfaceMesh&>();
+const TessellatedMesh& samples(const py::object& self) {
+  return self.cast<const TessellatedMesh&>();
 }
 
 }  // namespace
 
 void bind_surface(py::module_& m) {
   // Buffers stay where tessellate() put them: the arrays are views whose base is this object.
-  py::class_<SurfaceMesh>(m, "Tessellation",
+  py::class_<TessellatedMesh>(m, "Tessellation",
                           "The tessellated surface. Its arrays are read-only views of the "
                           "buffers the library filled (no copies); copy one to change it.")
       .def_property_readonly(
@@ -221,7 +221,7 @@ void bind_surface(py::module_& m) {
           "quads",
           [](const py::object& self) { return view_rows<int, 4>(samples(self).quads, self); },
           "(m, 4) int32 vertex indices, counter-clockwise seen from the normal side")
-      .def("__repr__", [](const SurfaceMesh& t) {
+      .def("__repr__", [](const TessellatedMesh& t) {
         return fmt::format("<stitch.Tessellation {} vertices, {} quads>", t.num_vertices(),
                            t.quads.size());
       });

@@ -317,7 +317,7 @@ TEST(Boundaries, DartKeepsOneTangentPlane) {
 }
 
 /// Boundary edges of a quad mesh (used by one quad) chained into loops.
-int count_boundary_loops(const SurfaceMesh& t) {
+int count_boundary_loops(const TessellatedMesh& t) {
   std::map<std::pair<int, int>, int> uses;
   for (const auto& q : t.quads)
     for (int k = 0; k < 4; ++k) {
@@ -358,7 +358,7 @@ TEST(Boundaries, WeldedOutputHasTheInputsBoundaryLoops) {
       const Surface s(*m, method);
       TessellationOptions options;
       options.resolution = 4;
-      const SurfaceMesh t = tessellate(*m, s, options);
+      const TessellatedMesh t = tessellate(*m, s, options);
       EXPECT_EQ(count_boundary_loops(t), topology_stats(*m).boundary_loops);
       std::vector<int> used(t.positions.size(), 0);
       for (const auto& q : t.quads)
@@ -390,7 +390,7 @@ TEST_P(OpenSubdivFeatureShapes, SmoothWithTheSameGuarantees) {
   const Surface s(m, Method::mdc, options);
   TessellationOptions t;
   t.resolution = 2;
-  const SurfaceMesh mesh = tessellate(m, s, t);
+  const TessellatedMesh mesh = tessellate(m, s, t);
   EXPECT_EQ(first_non_finite_sample(mesh), -1);
   EXPECT_EQ(count_boundary_loops(mesh), topology_stats(m).boundary_loops);
   EXPECT_LT(interior_jump_deg(m, s, options), kSmoothDeg);

@@ -174,7 +174,7 @@ TEST(ReadStl, BinaryAndAsciiWeldBackIntoTheClosedMesh) {
   TempFolder folder;
   // The smooth surface of the hole through a cube, as `stitch smooth -o x.stl` writes it.
   const HalfedgeMesh hole = read_mesh(test::example_path("cube_hole.obj"));
-  const SurfaceMesh surface = tessellate(hole, Surface(hole, Method::mdc), {3, true});
+  const TessellatedMesh surface = tessellate(hole, Surface(hole, Method::mdc), {3, true});
   const std::string binary = folder.file("hole.stl");
   write_surface_mesh(binary, surface);
   const TopologyStats stats = topology_stats(read_mesh(binary));

@@ -437,8 +437,8 @@ TEST(WriteFileAtomically, RefusesToReplaceAFolder) {
 // --- surface export ----------------------------------------------------------------------
 
 // Two quads side by side in the z = 0 plane, normals up.
-stitch::SurfaceMesh two_quads() {
-  stitch::SurfaceMesh mesh;
+stitch::TessellatedMesh two_quads() {
+  stitch::TessellatedMesh mesh;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 3; ++i) {
       mesh.positions.emplace_back(i, j, 0.1 * i * j);
@@ -453,7 +453,7 @@ stitch::SurfaceMesh two_quads() {
 
 TEST(WriteSurfaceMesh, WritesEveryFormatReadableBack) {
   TempFolder folder;
-  const stitch::SurfaceMesh mesh = two_quads();
+  const stitch::TessellatedMesh mesh = two_quads();
   const std::vector<std::vector<int>> quads = {{0, 1, 4, 3}, {1, 2, 5, 4}};
   for (const char* ext : {".obj", ".ply", ".off"}) {
     const std::string path = folder.file(std::string("surface") + ext);
@@ -491,7 +491,7 @@ TEST(WriteSurfaceMesh, WritesEveryFormatReadableBack) {
 
 TEST(WriteSurfaceSamplesPly, StoresEveryAttributeInBinary) {
   TempFolder folder;
-  const stitch::SurfaceMesh mesh = two_quads();
+  const stitch::TessellatedMesh mesh = two_quads();
   const std::string path = folder.file("samples.ply");
   stitch::write_surface_samples_ply(path, mesh);
   // The generic reader understands it (positions and quads) ...

@@ -41,7 +41,7 @@ TEST(RandomEdits, EveryMethodGivesFiniteOutputAndMdcStaysC1) {
       } catch (const Error& e) {
         FAIL() << to_string(method) << ", trial " << trial << ": " << e.what();
       }
-      const SurfaceMesh s = tessellate(m, *surface, {3, true});
+      const TessellatedMesh s = tessellate(m, *surface, {3, true});
       for (int i = 0; i < s.num_vertices(); ++i) {
         ASSERT_TRUE(s.positions[i].allFinite()) << "trial " << trial;
         ASSERT_TRUE(s.normals[i].allFinite()) << "trial " << trial;

@@ -102,7 +102,7 @@ TEST(SurfaceCheck, CleanClosedSurfacesHaveNoProblems) {
 
 TEST(SurfaceCheck, SurfaceMeshQuadsAndAPushedThroughVertex) {
   const PolygonSoup sphere = sphere_soup();
-  SurfaceMesh surface;
+  TessellatedMesh surface;
   surface.positions = sphere.positions;
   for (const auto& q : sphere.faces) surface.quads.push_back({q[0], q[1], q[2], q[3]});
   EXPECT_TRUE(check_surface(triangulate(surface)).clean());

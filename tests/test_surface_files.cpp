@@ -61,7 +61,7 @@ TEST(SmoothSurfaceFile, SameBytesWithOneOrTwoThreadsAndAsTessellatingFirst) {
       const auto two = written_with(2, mesh, surface, folder, ascii);
       EXPECT_EQ(one, two) << to_string(method);
       // Tessellating first (in memory) and writing that gives the same files.
-      const SurfaceMesh tessellated = tessellate(mesh, surface, {5, true});
+      const TessellatedMesh tessellated = tessellate(mesh, surface, {5, true});
       SurfaceFileOptions options;
       options.ascii_ply = ascii;
       size_t i = 0;
@@ -82,7 +82,7 @@ TEST(SmoothSurfaceFile, TessellationDoesNotDependOnThreads) {
     return tessellate(mesh, surface, {7, welded});
   };
   for (const bool welded : {true, false}) {
-    const SurfaceMesh a = run(1, welded), b = run(2, welded);
+    const TessellatedMesh a = run(1, welded), b = run(2, welded);
     EXPECT_EQ(a.positions, b.positions);
     EXPECT_EQ(a.normals, b.normals);
     EXPECT_EQ(a.quads, b.quads);
@@ -112,7 +112,7 @@ TEST(SmoothSurfaceFile, KgonsAndNetsDoNotDependOnThreads) {
 TEST(SmoothSurfaceFile, EveryFormatReadsBackAsTheSurface) {
   const HalfedgeMesh mesh = mixed_mesh();
   const Surface surface(mesh, Method::mdc);
-  const SurfaceMesh expected = tessellate(mesh, surface, {4, true});
+  const TessellatedMesh expected = tessellate(mesh, surface, {4, true});
   const TopologyStats input = topology_stats(mesh);
   TempFolder folder;
   for (const bool ascii : {false, true})
@@ -144,7 +144,7 @@ TEST(SmoothSurfaceFile, EveryFormatReadsBackAsTheSurface) {
 TEST(SmoothSurfaceFile, GltfReadsBackAsTheWeldedSurface) {
   const HalfedgeMesh mesh = mixed_mesh();
   const Surface surface(mesh, Method::mdc);
-  const SurfaceMesh expected = tessellate(mesh, surface, {4, true});
+  const TessellatedMesh expected = tessellate(mesh, surface, {4, true});
   TempFolder folder;
   for (const char* ext : {".glb", ".gltf"}) {
     const std::string path = folder.file(std::string("surface") + ext);

@@ -9,21 +9,21 @@
 namespace stitch {
 namespace {
 
-PolygonSoup as_soup(const SurfaceMesh& s) {
+PolygonSoup as_soup(const TessellatedMesh& s) {
   PolygonSoup soup;
   soup.positions = s.positions;
   for (const auto& q : s.quads) soup.faces.push_back({q[0], q[1], q[2], q[3]});
   return soup;
 }
 
-Vec3 quad_normal(const SurfaceMesh& s, const std::array<int, 4>& q) {
+Vec3 quad_normal(const TessellatedMesh& s, const std::array<int, 4>& q) {
   return (s.positions[q[2]] - s.positions[q[0]]).cross(s.positions[q[3]] - s.positions[q[1]]);
 }
 
 void expect_welded_surface_ok(const HalfedgeMesh& input, Method method, int resolution,
                               const std::string& name) {
   const Surface surface(input, method);
-  const SurfaceMesh s = tessellate(input, surface, {resolution, true});
+  const TessellatedMesh s = tessellate(input, surface, {resolution, true});
   for (int i = 0; i < s.num_vertices(); ++i) {
     ASSERT_TRUE(s.positions[i].allFinite()) << name;
     ASSERT_TRUE(s.normals[i].allFinite()) << name;
@@ -58,14 +58,14 @@ TEST(Tessellate, WeldedOutputIsAClosedOrientedManifoldWithTheInputsTopology) {
 
 TEST(Tessellate, NormalsPointOutwardOnAConvexShape) {
   const HalfedgeMesh cube = test::cube_mesh();
-  const SurfaceMesh s = tessellate(cube, Surface(cube, Method::mdc), {6, true});
+  const TessellatedMesh s = tessellate(cube, Surface(cube, Method::mdc), {6, true});
   for (int i = 0; i < s.num_vertices(); ++i) EXPECT_GT(s.normals[i].dot(s.positions[i]), 0);
 }
 
 TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
   const HalfedgeMesh tet = test::tetrahedron_mesh();
   const int n = 5;
-  const SurfaceMesh s = tessellate(tet, Surface(tet, Method::mdc), {n, false});
+  const TessellatedMesh s = tessellate(tet, Surface(tet, Method::mdc), {n, false});
   ASSERT_EQ(s.num_vertices(), 12 * (n + 1) * (n + 1));
   ASSERT_EQ(static_cast<int>(s.quads.size()), 12 * n * n);
   for (int i = 0; i < s.num_vertices(); ++i) {

@@ -559,7 +559,7 @@ TEST(UvWrite, GltfSplitsVerticesOnSeamsAndPassesTheValidator) {
   const Loaded input = load(in);
   const Surface surface(input.mesh, Method::mdc);
   const UvSurface uvs(input.mesh, input.report.corner_uvs);
-  const SurfaceMesh welded = tessellate(input.mesh, surface, {n, true});
+  const TessellatedMesh welded = tessellate(input.mesh, surface, {n, true});
   for (const char* out : {"s.glb", "s.gltf"}) {
     // Read back, the positions weld into the welded tessellation again, and each seam vertex
     // keeps one UV per side: one vt more per extra UV than the welded vertices.

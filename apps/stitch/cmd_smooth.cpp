@@ -154,7 +154,7 @@ void run_smooth(const SmoothArgs& a) {
   SurfaceFileCounts written;
   if (a.unwelded) {
     stage.begin(fmt::format("tessellating at resolution {}", a.resolution));
-    const SurfaceMesh samples = tessellate(mesh, surface, {a.resolution, false});
+    const TessellatedMesh samples = tessellate(mesh, surface, {a.resolution, false});
     stage.end();
     stage.begin("writing " + a.out);
     write_surface_samples_ply(a.out, samples, uvs.get());

@@ -41,7 +41,7 @@
 #include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/patches.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 #include "stitch/tess/tessellate.hpp"
 
 // analysis: continuity measured, surface checks

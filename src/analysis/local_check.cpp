@@ -112,7 +112,7 @@ LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>&
       }
     const bool focused = std::binary_search(focus_corners.begin(), focus_corners.end(), c);
     // The quads of tessellate() (counter-clockwise from the normal side), split as
-    // triangulate(SurfaceMesh) splits them, so the triangles are the whole check's.
+    // triangulate(TessellatedMesh) splits them, so the triangles are the whole check's.
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         const int q0 = grid[i * side + j], q1 = grid[(i + 1) * side + j],

@@ -93,7 +93,7 @@ bool segment_crosses_interior(const Vec3& p, const Vec3& q, const Vec3& a, const
 
 }  // namespace
 
-TriangleSoup triangulate(const SurfaceMesh& surface) {
+TriangleSoup triangulate(const TessellatedMesh& surface) {
   TriangleSoup soup;
   soup.positions = surface.positions;
   for (int q = 0; q < static_cast<int>(surface.quads.size()); ++q) {

@@ -141,7 +141,7 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   num_patches_ = static_cast<int>(patch_corners.size());
   std::vector<int> all(static_cast<size_t>(slots));
   std::iota(all.begin(), all.end(), 0);
-  tess_ = SurfaceMesh{};
+  tess_ = TessellatedMesh{};
   layout(slots, all);
   evaluate(corners(), cc.get());
   UpdateStats stats;
@@ -339,7 +339,7 @@ UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOpti
   resolution_ = resolution;
   std::vector<int> all(live_.size());
   std::iota(all.begin(), all.end(), 0);
-  tess_ = SurfaceMesh{};
+  tess_ = TessellatedMesh{};
   layout(static_cast<int>(live_.size()), all);
   evaluate(corners(), cc.get());
   UpdateStats stats;

@@ -40,7 +40,7 @@ SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const LiveSurface& 
   PatchGridSampler sample;
   if (surface.resolution() == n) {
     // The drawn samples: the same evaluate_patch at the same (i / n, j / n).
-    const SurfaceMesh& tess = surface.tessellation();
+    const TessellatedMesh& tess = surface.tessellation();
     const int per_patch = surface.vertices_per_patch();
     sample = [&tess, per_patch, n](Corner c, int i, int j) {
       return tess.positions[static_cast<size_t>(c.idx) * per_patch + i * (n + 1) + j];
@@ -68,7 +68,7 @@ SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const LiveSurface& 
 
 void add_problem_outlines(const LiveSurface& surface, const std::vector<Corner>& corners,
                           LineSet& lines) {
-  const SurfaceMesh& tess = surface.tessellation();
+  const TessellatedMesh& tess = surface.tessellation();
   const int n = surface.resolution(), per_patch = surface.vertices_per_patch();
   auto at = [&](Corner c, int i, int j) -> const Vec3& {
     return tess.positions[static_cast<size_t>(c.idx) * per_patch + i * (n + 1) + j];

@@ -185,7 +185,7 @@ LineSet control_net_lines(const std::vector<ControlNet>& nets, const std::vector
   return lines;
 }
 
-LineSet surface_mesh_lines(const SurfaceMesh& surface) {
+LineSet surface_mesh_lines(const TessellatedMesh& surface) {
   LineSet lines;
   for (const auto& q : surface.quads) {
     for (int i = 0; i < 4; ++i) {
@@ -205,8 +205,8 @@ MarkerSet extraordinary_markers(const std::vector<ExtraordinaryPoint>& points) {
   return markers;
 }
 
-SurfaceMesh input_faces(const HalfedgeMesh& mesh) {
-  SurfaceMesh out;
+TessellatedMesh input_faces(const HalfedgeMesh& mesh) {
+  TessellatedMesh out;
   const auto add_vertex = [&](const Vec3& p, const Vec3& n, int face) {
     out.positions.push_back(p);
     out.normals.push_back(n);

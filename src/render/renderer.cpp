@@ -75,7 +75,7 @@ GLuint link(const char* name, const char* vertex, const char* fragment,
   return program;
 }
 
-SurfaceVertex surface_vertex(const SurfaceMesh& s, int i) {
+SurfaceVertex surface_vertex(const TessellatedMesh& s, int i) {
   SurfaceVertex v{};
   for (int k = 0; k < 3; ++k) {
     v.position[k] = static_cast<float>(s.positions[i][k]);
@@ -86,7 +86,7 @@ SurfaceVertex surface_vertex(const SurfaceMesh& s, int i) {
   return v;
 }
 
-void check_attributes(const SurfaceMesh& s) {
+void check_attributes(const TessellatedMesh& s) {
   const size_t n = s.positions.size();
   if (s.normals.size() != n || (!s.patch.empty() && s.patch.size() != n) ||
       (!s.level.empty() && s.level.size() != n)) {
@@ -165,7 +165,7 @@ std::string to_string(ShadingMode mode) {
   return kModeNames[static_cast<size_t>(mode)];
 }
 
-std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface) {
+std::vector<PatchRange> patch_vertex_ranges(const TessellatedMesh& surface) {
   std::vector<PatchRange> ranges;
   for (int i = 0; i < static_cast<int>(surface.patch.size()); ++i) {
     if (ranges.empty() || ranges.back().patch != surface.patch[i]) {
@@ -232,7 +232,7 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 namespace {
 
-void check_quads(const SurfaceMesh& s) {
+void check_quads(const TessellatedMesh& s) {
   for (const auto& q : s.quads)
     for (const int i : q)
       if (i < 0 || i >= s.num_vertices())
@@ -240,14 +240,14 @@ void check_quads(const SurfaceMesh& s) {
             fmt::format("surface quad refers to vertex {} of {}", i, s.num_vertices()));
 }
 
-std::vector<SurfaceVertex> surface_vertices(const SurfaceMesh& s, int first, int count) {
+std::vector<SurfaceVertex> surface_vertices(const TessellatedMesh& s, int first, int count) {
   std::vector<SurfaceVertex> vertices(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) vertices[i] = surface_vertex(s, first + i);
   return vertices;
 }
 
 // Both triangles of quads [first, first + count), degenerate ones included.
-std::vector<std::uint32_t> quad_triangles(const SurfaceMesh& s, int first, int count) {
+std::vector<std::uint32_t> quad_triangles(const TessellatedMesh& s, int first, int count) {
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<size_t>(count) * 6);
   for (int k = first; k < first + count; ++k) {
@@ -282,7 +282,7 @@ void set_surface_attributes() {
 
 }  // namespace
 
-void Renderer::set_surface(const SurfaceMesh& s) {
+void Renderer::set_surface(const TessellatedMesh& s) {
   check_attributes(s);
   check_quads(s);
   const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
@@ -311,7 +311,7 @@ void Renderer::set_surface(const SurfaceMesh& s) {
   impl_->drop_texcoords();
 }
 
-void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
+void Renderer::set_block_surface(const TessellatedMesh& s, int vertices_per_block,
                                  int quads_per_block) {
   check_attributes(s);
   check_quads(s);
@@ -347,7 +347,7 @@ void Renderer::set_block_surface(const SurfaceMesh& s, int vertices_per_block,
   impl_->drop_texcoords();
 }
 
-void Renderer::update_surface_blocks(const SurfaceMesh& s, std::vector<int> blocks) {
+void Renderer::update_surface_blocks(const TessellatedMesh& s, std::vector<int> blocks) {
   Impl& r = *impl_;
   if (r.block_vertices == 0)
     throw std::logic_error("update_surface_blocks: no block surface has been uploaded");
@@ -413,7 +413,7 @@ void Renderer::set_surface_texcoords(const std::vector<Eigen::Vector2d>& texcoor
   r.textured = true;
 }
 
-void Renderer::update_surface_vertices(const SurfaceMesh& s, int first, int count) {
+void Renderer::update_surface_vertices(const TessellatedMesh& s, int first, int count) {
   check_attributes(s);
   if (s.num_vertices() != impl_->surface_vertices || first < 0 || count < 0 ||
       first + count > s.num_vertices()) {

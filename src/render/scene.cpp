@@ -36,7 +36,7 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
   return scene;
 }
 
-std::vector<Eigen::Vector2d> surface_texcoords(const SurfaceMesh& surface, const UvSurface& uvs) {
+std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface, const UvSurface& uvs) {
   if (surface.uv.size() != surface.positions.size() ||
       surface.patch.size() != surface.positions.size())
     throw std::invalid_argument("texture coordinates need every sample's patch and (u, v)");

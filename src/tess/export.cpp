@@ -26,7 +26,7 @@ namespace {
 constexpr std::string_view kComment =
     "stitch surface (bicubic Bezier patches, modified de Casteljau)";
 
-void check_writable(const std::string& path, const SurfaceMesh& mesh) {
+void check_writable(const std::string& path, const TessellatedMesh& mesh) {
   const int nv = mesh.num_vertices();
   if (mesh.normals.size() != mesh.positions.size())
     throw OutputError(
@@ -58,7 +58,7 @@ std::int64_t grid_size(int resolution) {
   return static_cast<std::int64_t>(resolution + 1) * (resolution + 1);
 }
 
-/// The UVs of every corner's (n + 1)^2 grid, corner after corner (SurfaceMesh order unwelded).
+/// The UVs of every corner's (n + 1)^2 grid, corner after corner (TessellatedMesh order unwelded).
 std::vector<Eigen::Vector2d> grid_uvs(const UvSurface& uvs, const std::vector<Corner>& corners,
                                       int resolution) {
   const std::int64_t per = grid_size(resolution);
@@ -78,13 +78,13 @@ std::vector<Eigen::Vector2d> grid_uvs(const UvSurface& uvs, const std::vector<Co
 /// it different UVs (a seam) is split, one copy per distinct UV as glTF stores it (float). A
 /// vertex is split only where the floats differ: elsewhere the patches agree to round-off.
 struct TexturedMesh {
-  SurfaceMesh mesh;                        ///< positions, normals and quads only
+  TessellatedMesh mesh;                        ///< positions, normals and quads only
   std::vector<Eigen::Vector2f> texcoords;  ///< glTF's: v down from the top
 };
 
 TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                            const UvSurface& uvs) {
-  const SurfaceMesh whole = tessellate(mesh, surface, {resolution, true, false});
+  const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true, false});
   const std::vector<Eigen::Vector2d> grid = grid_uvs(uvs, surface.corners(), resolution);
   const int n = resolution;
   TexturedMesh out;
@@ -142,7 +142,7 @@ bool surface_file_takes_uvs(const std::string& path) {
   return file_extension(path) == ".obj" || is_gltf(path);
 }
 
-void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
+void write_surface_mesh(const std::string& path, const TessellatedMesh& mesh,
                         const SurfaceFileOptions& options) {
   if (is_gltf(path)) {
     check_writable(path, mesh);
@@ -169,7 +169,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
             static_cast<std::int64_t>(whole.texcoords.size())};
   }
   if (is_gltf(path)) {  // glTF holds its buffer whole: tessellate, then write
-    const SurfaceMesh whole = tessellate(mesh, surface, {resolution, true});
+    const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true});
     write_surface_mesh(path, whole, options);
     return {whole.num_vertices(), static_cast<std::int64_t>(whole.quads.size())};
   }
@@ -276,7 +276,7 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
   return bytes;
 }
 
-void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
+void write_surface_samples_ply(const std::string& path, const TessellatedMesh& mesh,
                                const UvSurface* uvs) {
   check_writable(path, mesh);
   const size_t nv = mesh.positions.size();

@@ -45,7 +45,7 @@ int add_accessor(tinygltf::Model& model, int view, int component, int type, size
 
 /// glTF stores 32-bit floats; the normals are normalized again after rounding so that they are
 /// unit to float precision, as the specification asks.
-tinygltf::Model make_model(const SurfaceMesh& mesh, const std::vector<Eigen::Vector2f>* texcoords) {
+tinygltf::Model make_model(const TessellatedMesh& mesh, const std::vector<Eigen::Vector2f>* texcoords) {
   const size_t nv = mesh.positions.size();
   std::vector<float> positions(3 * nv), normals(3 * nv);
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
@@ -102,7 +102,7 @@ tinygltf::Model make_model(const SurfaceMesh& mesh, const std::vector<Eigen::Vec
 
 }  // namespace
 
-void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
+void write_gltf(const std::string& path, const TessellatedMesh& mesh, bool binary,
                 const std::vector<Eigen::Vector2f>* texcoords) {
   if (mesh.positions.empty() || mesh.quads.empty())
     throw OutputError(fmt::format("cannot write {}: the surface is empty", path));

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
@@ -12,7 +12,7 @@ namespace stitch {
 /// .gltf with the extension .bin (written first, so the .gltf never refers to a missing file).
 /// `texcoords`, if given, holds one UV per vertex in glTF's convention (v down from the top) and
 /// becomes TEXCOORD_0.
-void write_gltf(const std::string& path, const SurfaceMesh& mesh, bool binary,
+void write_gltf(const std::string& path, const TessellatedMesh& mesh, bool binary,
                 const std::vector<Eigen::Vector2f>* texcoords = nullptr);
 
 }  // namespace stitch

@@ -52,7 +52,7 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
     first_extra_ = first_block_ + num_corners * (per_side * per_side + 2 * per_side);
     num_vertices_ = first_extra_ + static_cast<std::int64_t>(extra) * per_side;
   }
-  // Output files and SurfaceMesh number vertices with 32-bit ints.
+  // Output files and TessellatedMesh number vertices with 32-bit ints.
   if (num_vertices_ > std::numeric_limits<int>::max())
     throw UsageError(
         fmt::format("{} corners at resolution {} make {} surface vertices, more than 2^31 - 1: use "

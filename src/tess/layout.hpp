@@ -59,7 +59,7 @@ class TessellationLayout {
   /// Positions and unit normals of output vertices [begin, end): the position of the first
   /// sample, the normalized sum of all sharing samples' normals in a fixed order (the result
   /// does not depend on threads). With `attributes`, also the first sample's (u, v), corner
-  /// half-edge and level into the SurfaceMesh-like arrays (null to skip).
+  /// half-edge and level into the TessellatedMesh-like arrays (null to skip).
   void evaluate(const Surface& surface, std::int64_t begin, std::int64_t end, Vec3* positions,
                 Vec3* normals, const SampleAttributes& attributes = {}) const;
 

@@ -8,11 +8,11 @@
 
 namespace stitch {
 
-SurfaceMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
+TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                        const TessellationOptions& options) {
   const TessellationLayout layout(mesh, surface.corners(), options.resolution, options.welded);
   const auto nv = static_cast<size_t>(layout.num_vertices());
-  SurfaceMesh out;
+  TessellatedMesh out;
   out.positions.resize(nv);
   out.normals.resize(nv);
   if (options.sample_attributes) {

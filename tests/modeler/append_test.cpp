@@ -21,7 +21,7 @@ void expect_surface_rebuilt_exactly(const Session& s) {
   TessellationOptions t;
   t.resolution = s.surface.resolution();
   t.welded = false;
-  const SurfaceMesh expected = tessellate(mesh, fresh, t);
+  const TessellatedMesh expected = tessellate(mesh, fresh, t);
   const int per = s.surface.vertices_per_patch();
   const auto corners = mesh.patch_corners();
   ASSERT_EQ(expected.num_vertices(), static_cast<int>(corners.size()) * per);

@@ -24,8 +24,8 @@ void expect_same_as_rebuild(const LiveSurface& live, const HalfedgeMesh& mesh,
   TessellationOptions t;
   t.resolution = live.resolution();
   t.welded = false;
-  const SurfaceMesh expected = tessellate(mesh, fresh, t);
-  const SurfaceMesh& got = live.tessellation();
+  const TessellatedMesh expected = tessellate(mesh, fresh, t);
+  const TessellatedMesh& got = live.tessellation();
   // Live corner k's block in `expected` is corner c's slot in `got` (blocks indexed by corner).
   const int per = live.vertices_per_patch(), per_quads = live.quads_per_patch();
   const auto corners = mesh.patch_corners();

@@ -27,7 +27,7 @@ TEST(Overlays, CountsMatchTheMesh) {
   // Every 4x4 net has 4 rows and 4 columns of 3 segments; one net per corner (24).
   EXPECT_EQ(control_net_lines(surface.bezier().nets, surface.corners()).num_segments(), 24 * 24);
   // input_faces: one degenerate quad per face edge, fanned around the face centre.
-  const SurfaceMesh faces = input_faces(cube);
+  const TessellatedMesh faces = input_faces(cube);
   EXPECT_EQ(faces.quads.size(), 24u);
   EXPECT_EQ(faces.num_vertices(), 6 * 5);
 }

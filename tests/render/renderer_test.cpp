@@ -36,7 +36,7 @@ class RendererTest : public ::testing::Test {
 
   static std::unique_ptr<OffscreenContext> context_;
   std::unique_ptr<Renderer> renderer_;
-  SurfaceMesh sphere_;
+  TessellatedMesh sphere_;
   Camera camera_;
 };
 std::unique_ptr<OffscreenContext> RendererTest::context_;
@@ -120,7 +120,7 @@ TEST_F(RendererTest, UpdatingOnePatchChangesOnlyThatPatch) {
   style.mode = ShadingMode::patches;
   const Image before = render(style);
   // Push the +x patch (patch 0, seen in the iso view) outwards.
-  SurfaceMesh moved = sphere_;
+  TessellatedMesh moved = sphere_;
   for (int i = ranges[0].first_vertex; i < ranges[0].first_vertex + ranges[0].num_vertices; ++i) {
     moved.positions[i] *= 1.3;
   }
@@ -141,7 +141,7 @@ TEST_F(RendererTest, BlockUpdatesDrawWhatAFullUploadDraws) {
   ASSERT_EQ(sphere_.quads.size(), 6u * kBlockQuads);
   RenderStyle style;
   style.mode = ShadingMode::patches;
-  auto full_upload_image = [&](const SurfaceMesh& s) {
+  auto full_upload_image = [&](const TessellatedMesh& s) {
     renderer_->set_surface(s);
     const Image im = render(style);
     renderer_->set_block_surface(sphere_, kBlockVertices, kBlockQuads);
@@ -153,13 +153,13 @@ TEST_F(RendererTest, BlockUpdatesDrawWhatAFullUploadDraws) {
 
   // Block 0 pushed out, block 2 emptied (degenerate quads, as for a deleted corner), the last
   // block dropped.
-  SurfaceMesh edited = sphere_;
+  TessellatedMesh edited = sphere_;
   for (int i = 0; i < kBlockVertices; ++i) edited.positions[i] *= 1.3;
   for (int q = 2 * kBlockQuads; q < 3 * kBlockQuads; ++q) {
     const int base = 2 * kBlockVertices;
     edited.quads[q] = {base, base, base, base};
   }
-  const auto drop_last = [&](SurfaceMesh& s) {
+  const auto drop_last = [&](TessellatedMesh& s) {
     s.positions.resize(5 * kBlockVertices);
     s.normals.resize(5 * kBlockVertices);
     s.uv.resize(5 * kBlockVertices);
@@ -178,7 +178,7 @@ TEST_F(RendererTest, BlockUpdatesDrawWhatAFullUploadDraws) {
   EXPECT_EQ(test::mean_difference(whole, render(style)), 0.0);
 
   // Growing past the room kept (6 + 3 + 16 blocks) uploads everything again.
-  SurfaceMesh big = sphere_;
+  TessellatedMesh big = sphere_;
   for (int copy = 0; copy < 4; ++copy) {
     const int offset = big.num_vertices();
     for (int i = 0; i < sphere_.num_vertices(); ++i) {

@@ -5,15 +5,15 @@
 #include <cstdlib>
 
 #include "stitch/render/image.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch::test {
 
 /// A unit sphere as six patches (the faces of a cube projected outwards), each its own
 /// (n + 1)^2 vertex block as an unwelded tessellation has; level = ring distance from the
 /// patch's corner (0, 0), so every level colour appears.
-inline SurfaceMesh cube_sphere(int n) {
-  SurfaceMesh s;
+inline TessellatedMesh cube_sphere(int n) {
+  TessellatedMesh s;
   for (int face = 0; face < 6; ++face) {
     const int axis = face / 2;
     const double sign = face % 2 == 0 ? 1.0 : -1.0;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "stitch/mesh/build.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
@@ -21,7 +21,7 @@ struct TriangleSoup {
 };
 
 /// Each quad split along its 0-2 diagonal (two triangles with source = the quad's index).
-TriangleSoup triangulate(const SurfaceMesh& surface);
+TriangleSoup triangulate(const TessellatedMesh& surface);
 /// Each polygon fanned from its first corner; vertices at exactly equal positions are merged
 /// first, so a file written without shared vertices still has its adjacency.
 TriangleSoup triangulate(const PolygonSoup& soup);

@@ -10,7 +10,7 @@
 #include "stitch/eval/surface.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/formats.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
@@ -42,7 +42,7 @@ inline constexpr std::array<std::string_view, 6> kSurfaceMeshExtensions{".obj", 
 /// Writes a welded surface by extension: .obj (with vn), .ply (binary with normals unless
 /// options.ascii_ply), .off, .stl (binary), and glTF 2.0 with normals: .glb, or .gltf with its
 /// buffer in a .bin beside it. Atomic (see write_file_atomically).
-void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh,
+void write_surface_mesh(const std::string& path, const TessellatedMesh& mesh,
                         const SurfaceFileOptions& options = {});
 
 /// What write_smooth_surface wrote.
@@ -71,7 +71,7 @@ std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bo
 /// Writes every sample with its patch attributes as binary little-endian PLY: double x y z
 /// nx ny nz u v and int patch, so continuity can be checked from the file alone; with `uvs`, also
 /// double s t, the sample's texture coordinates. Atomic.
-void write_surface_samples_ply(const std::string& path, const SurfaceMesh& mesh,
+void write_surface_samples_ply(const std::string& path, const TessellatedMesh& mesh,
                                const UvSurface* uvs = nullptr);
 
 }  // namespace stitch

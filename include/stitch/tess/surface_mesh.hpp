@@ -1,26 +1,12 @@
-// The tessellated surface: a quad mesh of limit-surface samples with their analytic normals.
+// Kept for code written against stitch 0.1, which called the tessellation's output SurfaceMesh;
+// pmp-library and geometry-central use that name for the input mesh, so stitch now says
+// TessellatedMesh. New code includes stitch/tess/tessellated_mesh.hpp.
 #pragma once
 
-#include <Eigen/Core>
-#include <array>
-#include <vector>
-
-#include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
-struct SurfaceMesh {
-  std::vector<Vec3> positions;
-  std::vector<Vec3> normals;              ///< unit, per vertex
-  std::vector<Eigen::Vector2d> uv;        ///< the sample's (u, v) in its patch
-  std::vector<int> patch;                 ///< the corner (half-edge index) whose patch it lies on
-  std::vector<int> level;                 ///< hierarchy level of the sub-patch it came from
-  std::vector<std::array<int, 4>> quads;  ///< counter-clockwise seen from the normal side
-
-  [[nodiscard]] int num_vertices() const { return static_cast<int>(positions.size()); }
-};
-
-/// The first sample whose position or normal is not finite, or -1 when there is none.
-int first_non_finite_sample(const SurfaceMesh& mesh);
+using SurfaceMesh [[deprecated("use stitch::TessellatedMesh")]] = TessellatedMesh;
 
 }  // namespace stitch

@@ -2,21 +2,21 @@
 #pragma once
 
 #include "stitch/eval/surface.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
 struct TessellationOptions {
   int resolution = 8;  ///< segments per patch side, >= 1
   bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
-  /// Fill SurfaceMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
+  /// Fill TessellatedMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
   bool sample_attributes = true;
 };
 
 /// Welded: one watertight, consistently oriented mesh with the input's genus; a sample shared by
 /// several patches takes the normalized mean of their normals (identical up to round-off where
 /// the surface is smooth). Unwelded: every patch's own (resolution+1)^2 grid.
-SurfaceMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
+TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                        const TessellationOptions& options = {});
 
 }  // namespace stitch

@@ -27,7 +27,7 @@
 
 #include "stitch/eval/surface.hpp"
 #include "stitch/modeler/document.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch::modeler {
 
@@ -72,7 +72,7 @@ class LiveSurface {
   /// How many patches there are (live corners).
   [[nodiscard]] int num_patches() const { return num_patches_; }
   /// One block per half-edge slot (see above).
-  [[nodiscard]] const SurfaceMesh& tessellation() const { return tess_; }
+  [[nodiscard]] const TessellatedMesh& tessellation() const { return tess_; }
   /// The corners whose patches the last update re-evaluated, in increasing order (every live
   /// corner after a full rebuild).
   [[nodiscard]] const std::vector<Corner>& recomputed() const { return recomputed_; }
@@ -100,7 +100,7 @@ class LiveSurface {
   std::vector<ControlNet> nets_;
   std::vector<std::uint8_t> live_;  ///< per slot (half-edge): has a patch
   int num_patches_ = 0;
-  SurfaceMesh tess_;
+  TessellatedMesh tess_;
   std::vector<Corner> recomputed_;
   std::vector<int> relaid_;
 };

@@ -12,7 +12,7 @@
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/net/control_net.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
@@ -105,12 +105,12 @@ LineSet sharp_curve_lines(const HalfedgeMesh& mesh, const Surface& surface, int 
 /// The 4x4 grid lines of the nets of `corners`.
 LineSet control_net_lines(const std::vector<ControlNet>& nets, const std::vector<Corner>& corners);
 /// The edges of every quad of a tessellation (the output polygon mesh).
-LineSet surface_mesh_lines(const SurfaceMesh& surface);
+LineSet surface_mesh_lines(const TessellatedMesh& surface);
 MarkerSet extraordinary_markers(const std::vector<ExtraordinaryPoint>& points);
 
-/// The input polygons as a drawable SurfaceMesh: each face fanned around its centroid (one
+/// The input polygons as a drawable TessellatedMesh: each face fanned around its centroid (one
 /// degenerate quad per edge), flat normals, patch = face index, level 0. Holes are left out.
-SurfaceMesh input_faces(const HalfedgeMesh& mesh);
+TessellatedMesh input_faces(const HalfedgeMesh& mesh);
 /// Texture coordinates of input_faces' vertices: each corner's own UV, the mean of the face's
 /// UVs at its centre. Throws stitch::Error when a face has none (one --fill-holes added).
 std::vector<Eigen::Vector2d> input_face_texcoords(const HalfedgeMesh& mesh, const CornerUvs& uvs);

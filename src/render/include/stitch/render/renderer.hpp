@@ -4,7 +4,7 @@
 // whatever framebuffer is bound (an offscreen target from image.hpp, or the modeler's window).
 // Create, use and destroy it with the same context current.
 //
-// Surface buffers are laid out for partial updates: the vertex buffer is the SurfaceMesh's own
+// Surface buffers are laid out for partial updates: the vertex buffer is the TessellatedMesh's own
 // vertex array, so a tessellation with one contiguous vertex block per patch (tessellate with
 // welded = false) lets an editor re-upload only the patches it changed (patch_vertex_ranges +
 // update_surface_vertices). A block surface (set_block_surface) also gives each block its own
@@ -18,7 +18,7 @@
 
 #include "stitch/render/camera.hpp"
 #include "stitch/render/overlays.hpp"
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
@@ -65,13 +65,13 @@ struct RenderStyle {
   void show(Overlay o, bool on = true) { overlays[static_cast<int>(o)] = on; }
 };
 
-/// Vertex ranges of a tessellation, one per maximal run of equal SurfaceMesh::patch values.
+/// Vertex ranges of a tessellation, one per maximal run of equal TessellatedMesh::patch values.
 struct PatchRange {
   int patch = -1;
   int first_vertex = 0;
   int num_vertices = 0;
 };
-std::vector<PatchRange> patch_vertex_ranges(const SurfaceMesh& surface);
+std::vector<PatchRange> patch_vertex_ranges(const TessellatedMesh& surface);
 
 class Renderer {
  public:
@@ -84,22 +84,22 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   /// Uploads vertices and quads (replacing any previous surface).
-  void set_surface(const SurfaceMesh& surface);
+  void set_surface(const TessellatedMesh& surface);
   /// Re-uploads vertices [first, first + count) of `surface`, which must have the same vertex
   /// count and quads as the one given to set_surface. Throws std::out_of_range.
-  void update_surface_vertices(const SurfaceMesh& surface, int first, int count);
+  void update_surface_vertices(const TessellatedMesh& surface, int first, int count);
   /// Uploads a surface made of equal blocks (`quads_per_block` quads over `vertices_per_block`
   /// vertices each, in block order: the modeler's LiveSurface layout) so that blocks can later
   /// be replaced one at a time: every quad keeps both triangles in the index buffer (the
   /// degenerate quads of an empty block draw nothing), and the buffers keep room to grow.
   /// Throws std::invalid_argument when the sizes do not divide into blocks.
-  void set_block_surface(const SurfaceMesh& surface, int vertices_per_block, int quads_per_block);
+  void set_block_surface(const TessellatedMesh& surface, int vertices_per_block, int quads_per_block);
   /// Brings the uploaded block surface to `surface` by re-uploading the listed blocks (vertices
   /// and triangles) and any blocks added at the end; blocks removed at the end stop being
   /// drawn. Past the room kept it uploads everything again, with more room. Throws
   /// std::logic_error without a block surface, std::invalid_argument when the block sizes
   /// differ, std::out_of_range for a block the surface does not have.
-  void update_surface_blocks(const SurfaceMesh& surface, std::vector<int> blocks);
+  void update_surface_blocks(const TessellatedMesh& surface, std::vector<int> blocks);
   /// Texture coordinates of the uploaded surface's vertices, for ShadingMode::checker. They live
   /// in a buffer of their own, so the surface's vertex layout, its partial updates and the other
   /// modes do not change. set_surface, set_block_surface and update_surface_blocks drop them

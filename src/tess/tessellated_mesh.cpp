@@ -1,8 +1,8 @@
-#include "stitch/tess/surface_mesh.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
 
-int first_non_finite_sample(const SurfaceMesh& mesh) {
+int first_non_finite_sample(const TessellatedMesh& mesh) {
   for (size_t i = 0; i < mesh.positions.size(); ++i)
     if (!mesh.positions[i].allFinite() || (i < mesh.normals.size() && !mesh.normals[i].allFinite()))
       return static_cast<int>(i);
