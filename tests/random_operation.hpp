@@ -12,7 +12,7 @@ namespace stitch::test {
 
 /// A random operation line on the mesh (it may be refused: then the mesh is unchanged).
 inline std::string random_operation(const HalfedgeMesh& m, std::mt19937& rng) {
-  const auto faces = m.faces();
+  const auto faces = m.faces().to_vector();
   const Face f = faces[rng() % faces.size()];
   const auto loop = m.face_loop(f);
   const Halfedge h = loop[rng() % loop.size()];

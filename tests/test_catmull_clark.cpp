@@ -210,7 +210,7 @@ TEST(CatmullClark, DerivativesAreInThePatchParameters) {
 TEST(CatmullClark, EvaluatesConcurrently) {
   const HalfedgeMesh mesh = load("catmark_torus");
   const CatmullClarkSurface cc(mesh);
-  const auto corners = mesh.halfedges();
+  const auto corners = mesh.halfedges().to_vector();
   std::vector<Vec3> serial;
   for (Corner c : corners) serial.push_back(cc.evaluate(c, 0.25, 0.75).position);
   std::vector<Vec3> parallel(corners.size());

@@ -244,11 +244,11 @@ TEST_P(CcBoundaryShapes, SurfaceIsBfrsOfTheFaceVertexDescription) {
 TEST_P(CcBoundaryShapes, RefinementWithFeaturesIsFarsLevel1) {
   HalfedgeMesh mesh = load(GetParam());
   // Fractional tags (blended masks) besides the shapes' own creases of sharpness 6.
-  const auto edges = mesh.edges();
+  const auto edges = mesh.edges().to_vector();
   for (size_t i = 0; i < edges.size(); i += 7)
     if (!mesh.is_boundary(edges[i]))
       mesh.set_sharpness(edges[i], 0.3 + 0.1 * static_cast<double>(i % 23));
-  const auto vertices = mesh.vertices();
+  const auto vertices = mesh.vertices().to_vector();
   for (size_t i = 0; i < vertices.size(); i += 11) mesh.set_sharpness(vertices[i], 0.5 + (i % 3));
   const double tol = 1e-12 * mesh_size(mesh);
   const std::vector<int> face_number = surface_face_numbers(mesh);
@@ -335,7 +335,7 @@ TEST(CcFeatures, CubeWithAllEdgesInfinitelySharpHasFlatFaces) {
   HalfedgeMesh cube = make_cube();
   ASSERT_EQ(cube.num_edges(), 12);
   for (Edge e : cube.edges()) cube.set_sharpness(e, infinitely_sharp);
-  expect_flat_faces_and_corners(cube, cube.faces(), "sharp cube");
+  expect_flat_faces_and_corners(cube, cube.faces().to_vector(), "sharp cube");
 
   // Without the tags the faces bulge: the check above can fail.
   const CatmullClarkSurface smooth(make_cube());
@@ -350,7 +350,7 @@ TEST(CcFeatures, SharpCubeWithATwoSidedFaceHasFlatFacesThroughTheRefinementRoute
   HalfedgeMesh mesh = make_cube();
   const Face two_gon = test::double_with_two_gon(mesh, mesh.halfedge(Face(0)));
   for (Edge e : mesh.edges()) mesh.set_sharpness(e, infinitely_sharp);
-  std::vector<Face> cube_faces = mesh.faces();
+  std::vector<Face> cube_faces = mesh.faces().to_vector();
   std::erase(cube_faces, two_gon);
   ASSERT_EQ(cube_faces.size(), 6U);
   expect_flat_faces_and_corners(mesh, cube_faces, "sharp cube with a 2-gon");

@@ -119,7 +119,7 @@ TEST(EditsReadBack, ConnectFacesOverEveryFacePairAndTwistOfThePlatonicSolids) {
 
 /// A random connect-faces line between two faces of equal degree, when there are any.
 std::string random_connect(const HalfedgeMesh& m, std::mt19937& rng) {
-  const std::vector<Face> faces = m.faces();
+  const std::vector<Face> faces = m.faces().to_vector();
   const Face f = faces[rng() % faces.size()];
   std::vector<Face> same;
   for (Face g : faces)

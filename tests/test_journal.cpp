@@ -58,7 +58,7 @@ TEST(MeshJournal, UndoesAndRedoesRandomEditsExactlyAndListsEveryChange) {
     const int ops = 1 + static_cast<int>(rng() % 6);
     for (int k = 0; k < ops; ++k) {
       std::string line = test::random_operation(m, rng);
-      const auto faces = m.faces();
+      const auto faces = m.faces().to_vector();
       const Face f = faces[rng() % faces.size()];
       const Halfedge h = m.halfedge(f);
       if (rng() % 4 == 0) line = fmt::format("delete-face {}", f.idx + 1);

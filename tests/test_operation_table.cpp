@@ -85,9 +85,9 @@ TEST(OperationTable, RefusalsAreTopologyErrors) {
 
 /// A random typed operation on the mesh's live elements, any of the fifteen, valid or not.
 Operation random_typed_operation(const HalfedgeMesh& m, std::mt19937& rng) {
-  const auto faces = m.faces();
-  const auto edges = m.edges();
-  const auto vertices = m.vertices();
+  const auto faces = m.faces().to_vector();
+  const auto edges = m.edges().to_vector();
+  const auto vertices = m.vertices().to_vector();
   auto pick_face = [&] { return faces[rng() % faces.size()]; };
   auto pick_corner = [&] {
     const auto loop = m.face_loop(pick_face());

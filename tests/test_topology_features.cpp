@@ -418,7 +418,7 @@ TEST(TopologyFeatures, UndoOfAnOpenFaceThatMergedRestoresTheMesh) {
 
 /// A random operation line that may involve holes and tags (or be refused).
 std::string random_feature_operation(const HalfedgeMesh& m, std::mt19937& rng) {
-  const auto faces = m.faces();
+  const auto faces = m.faces().to_vector();
   const Face f = faces[rng() % faces.size()], g = faces[rng() % faces.size()];
   const auto loop = m.face_loop(f);
   const Halfedge h = loop[rng() % loop.size()];

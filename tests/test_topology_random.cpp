@@ -44,12 +44,12 @@ HalfedgeMesh random_primitive(Rng& rng) {
 }
 
 Halfedge random_halfedge(const HalfedgeMesh& m, Rng& rng) {
-  const std::vector<Halfedge> hs = m.halfedges();
+  const std::vector<Halfedge> hs = m.halfedges().to_vector();
   return hs[uniform(rng, 0, static_cast<int>(hs.size()) - 1)];
 }
 
 Face random_face(const HalfedgeMesh& m, Rng& rng) {
-  const std::vector<Face> fs = m.faces();
+  const std::vector<Face> fs = m.faces().to_vector();
   return fs[uniform(rng, 0, static_cast<int>(fs.size()) - 1)];
 }
 

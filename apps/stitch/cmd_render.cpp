@@ -141,7 +141,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--size", args->size, "image size WxH")->capture_default_str();
   cmd->add_option("--view", args->view,
                   "front, back, left, right, top, bottom or iso (default), framing the model");
-  cmd->add_option("--eye", args->eye, "camera position x,y,z (with --target)");
+  cmd->add_option("--eye", args->eye,
+                  "camera position x,y,z (with --target); z is up in the image");
   cmd->add_option("--target", args->target,
                   "point looked at, x,y,z (default: the centre of the model)");
   cmd->add_flag("--focus-ev", args->focus_ev,

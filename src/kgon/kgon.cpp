@@ -223,9 +223,9 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
 
   // Every step writes only its own element's entries (a face's corners, a vertex's fan, an
   // edge's four corners), so each runs over its elements in parallel with the same result.
-  const std::vector<Face> faces = m.faces();
-  const std::vector<Vertex> vertices = m.vertices();
-  const std::vector<Edge> edges = m.edges();
+  const std::vector<Face> faces = m.faces().to_vector();
+  const std::vector<Vertex> vertices = m.vertices().to_vector();
+  const std::vector<Edge> edges = m.edges().to_vector();
   std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
   tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
     face_normal[faces[i].idx] = newell_normal(face_points(m, faces[i]));

@@ -7,15 +7,6 @@
 namespace stitch {
 
 namespace {
-template <class H>
-std::vector<H> live(int capacity, const std::vector<std::uint8_t>& deleted) {
-  std::vector<H> out;
-  out.reserve(capacity);
-  for (int i = 0; i < capacity; ++i)
-    if (!deleted[i]) out.emplace_back(i);
-  return out;
-}
-
 /// Element numbers are `int`: refuse to grow past limits::max_halfedges rather than overflow.
 void check_room(int capacity, int more, const char* what) {
   if (capacity > limits::max_halfedges - more)
@@ -25,26 +16,6 @@ void check_room(int capacity, int more, const char* what) {
                     limits::max_halfedges, what));
 }
 }  // namespace
-
-std::vector<Vertex> HalfedgeMesh::vertices() const {
-  return live<Vertex>(vertex_capacity(), vertex_deleted_);
-}
-std::vector<Edge> HalfedgeMesh::edges() const {
-  return live<Edge>(edge_capacity(), edge_deleted_);
-}
-std::vector<Face> HalfedgeMesh::faces() const {
-  return live<Face>(face_capacity(), face_deleted_);
-}
-std::vector<Halfedge> HalfedgeMesh::halfedges() const {
-  std::vector<Halfedge> out;
-  out.reserve(halfedge_capacity());
-  for (int e = 0; e < edge_capacity(); ++e)
-    if (!edge_deleted_[e]) {
-      out.emplace_back(2 * e);
-      out.emplace_back(2 * e + 1);
-    }
-  return out;
-}
 
 bool HalfedgeMesh::has_features() const {
   for (int f = 0; f < face_capacity(); ++f)

@@ -20,9 +20,10 @@ double deg_to_rad(double d) {
   return d * std::numbers::pi / 180.0;
 }
 
-// A vector not parallel to `dir`, for an up vector when the requested one is degenerate.
-Vec3 fallback_up(const Vec3& dir) {
-  return std::abs(dir.normalized().y()) < 0.99 ? Vec3::UnitY() : Vec3::UnitZ();
+// Screen-up for a camera looking along `dir`: world z, as for the standard views and the
+// primitives, except when looking (almost) straight down or up z, where +y is up as in `top`.
+Vec3 world_up(const Vec3& dir) {
+  return std::abs(dir.normalized().z()) < 0.99 ? Vec3::UnitZ() : Vec3::UnitY();
 }
 
 void set_clip_planes(Camera& camera, const BoundingBox& box) {
@@ -45,7 +46,7 @@ View parse_view(const std::string& name) {
     if (name == kViewNames[i]) return static_cast<View>(i);
   }
   throw UsageError("unknown view '" + name +
-                              "' (expected front, back, left, right, top, bottom or iso)");
+                   "' (expected front, back, left, right, top, bottom or iso)");
 }
 
 std::string to_string(View view) {
@@ -61,7 +62,7 @@ Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double 
   const double distance = std::max(radius, 1e-9) / std::sin(std::min(half_fov_x, half_fov_y));
   camera.target = center;
   camera.eye = center + distance * dir;
-  camera.up = fallback_up(dir);
+  camera.up = world_up(dir);
   BoundingBox clip = scene;
   clip.extend(center + Vec3::Constant(radius));
   clip.extend(center - Vec3::Constant(radius));
@@ -127,7 +128,7 @@ Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box) {
   Camera camera;
   camera.eye = eye;
   camera.target = target;
-  camera.up = fallback_up(target - eye);
+  camera.up = world_up(target - eye);
   set_clip_planes(camera, box);
   return camera;
 }
@@ -135,7 +136,7 @@ Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box) {
 Eigen::Matrix4f view_matrix(const Camera& camera) {
   const Vec3 f = (camera.target - camera.eye).normalized();
   Vec3 s = f.cross(camera.up);
-  if (s.norm() < 1e-9) s = f.cross(fallback_up(f));
+  if (s.norm() < 1e-9) s = f.cross(world_up(f));
   s.normalize();
   const Vec3 u = s.cross(f);
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();

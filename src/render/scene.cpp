@@ -36,7 +36,8 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
   return scene;
 }
 
-std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface, const UvSurface& uvs) {
+std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
+                                               const UvSurface& uvs) {
   if (surface.uv.size() != surface.positions.size() ||
       surface.patch.size() != surface.positions.size())
     throw std::invalid_argument("texture coordinates need every sample's patch and (u, v)");
@@ -67,7 +68,9 @@ void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_pol
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
                     double radius_patches) {
   const Vec3 n = point.normal.normalized();
-  // Tilt towards the world's up (or z when the normal is vertical) so the view is oblique.
+  // Tilt the eye off the normal so the view is oblique: towards +y (or +z when the normal is
+  // along y). Not towards z, the image's up: a point on the wall of a hole through z would then
+  // be seen along the tube, where the zebra stripes of the whole wall crowd the close-up.
   Vec3 towards = Vec3::UnitY() - Vec3::UnitY().dot(n) * n;
   if (towards.norm() < 1e-6) towards = Vec3::UnitZ() - Vec3::UnitZ().dot(n) * n;
   const double tilt = 30.0 * std::numbers::pi / 180.0;

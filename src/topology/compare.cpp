@@ -37,12 +37,11 @@ bool same_up_to_renumbering(const HalfedgeMesh& a, const HalfedgeMesh& b) {
   if (a.num_vertices() != b.num_vertices() || a.num_edges() != b.num_edges() ||
       a.num_faces() != b.num_faces())
     return false;
-  const std::vector<Vertex> va = a.vertices();
-  if (va != b.vertices()) return false;
-  for (Vertex v : va)
+  if (a.vertices() != b.vertices()) return false;
+  for (Vertex v : a.vertices())
     if (a.position(v) != b.position(v) || a.sharpness(v) != b.sharpness(v)) return false;
   std::vector<int> map(a.halfedge_capacity(), -1), used(b.halfedge_capacity(), 0);
-  for (Vertex v : va) {
+  for (Vertex v : a.vertices()) {
     const Halfedge ra = a.halfedge(v);
     if (map[ra.idx] >= 0) continue;  // its component is matched already
     bool matched = false;

@@ -67,7 +67,7 @@ EdgeRemoval plan_edge_removal(const HalfedgeMesh& m, std::vector<std::uint8_t> g
   // The successor of a kept half-edge x is found by turning clockwise around target(x) past the
   // removed edges. twin(x) is kept, so this terminates.
   plan.next.assign(m.halfedge_capacity(), -1);
-  const std::vector<Halfedge> halfedges = m.halfedges();
+  const std::vector<Halfedge> halfedges = m.halfedges().to_vector();
   auto recompute = [&] {
     for (Halfedge x : halfedges) {
       if (removed(x)) continue;

@@ -207,9 +207,9 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
   // Dense numbers of the live elements; corner c of edge k and side s is number 2k + s.
   std::vector<int> vid(m.vertex_capacity(), -1), fid(m.face_capacity(), -1),
       eid(m.edge_capacity(), -1);
-  const auto vertices = m.vertices();
-  const auto faces = m.faces();
-  const auto edges = m.edges();
+  const auto vertices = m.vertices().to_vector();
+  const auto faces = m.faces().to_vector();
+  const auto edges = m.edges().to_vector();
   for (size_t i = 0; i < vertices.size(); ++i) vid[vertices[i].idx] = static_cast<int>(i);
   for (size_t i = 0; i < faces.size(); ++i) fid[faces[i].idx] = static_cast<int>(i);
   for (size_t i = 0; i < edges.size(); ++i) eid[edges[i].idx] = static_cast<int>(i);

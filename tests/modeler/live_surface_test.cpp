@@ -103,7 +103,7 @@ TEST(ModelerLiveSurface, VertexMovesRecomputeExactlyTheChangedPatches) {
       Document doc(c.mesh);
       LiveSurface live;
       live.rebuild(doc.mesh(), doc.kgon_options(), method, 3);
-      const auto vertices = doc.mesh().vertices();
+      const auto vertices = doc.mesh().vertices().to_vector();
       std::uniform_int_distribution<size_t> pick(0, vertices.size() - 1);
       std::uniform_real_distribution<double> step(-0.3, 0.3);
       for (int i = 0; i < 4; ++i) {
@@ -126,11 +126,14 @@ TEST(ModelerLiveSurface, KgonEditsRecomputeExactlyTheChangedPatches) {
     KgonControl k;
     k.scale = 0.7;
     k.rotate_deg = 12;
-    check_update(live, doc, doc.set_kgon_control({KgonKind::face, doc.mesh().faces()[0].idx}, k));
     check_update(live, doc,
-                 doc.set_kgon_control({KgonKind::vertex, doc.mesh().vertices()[1].idx}, k));
+                 doc.set_kgon_control({KgonKind::face, doc.mesh().faces().to_vector()[0].idx}, k));
+    check_update(
+        live, doc,
+        doc.set_kgon_control({KgonKind::vertex, doc.mesh().vertices().to_vector()[1].idx}, k));
     k.offset = Vec3(0.05, 0.0, -0.02);
-    check_update(live, doc, doc.set_kgon_control({KgonKind::edge, doc.mesh().edges()[2].idx}, k));
+    check_update(live, doc,
+                 doc.set_kgon_control({KgonKind::edge, doc.mesh().edges().to_vector()[2].idx}, k));
     k.regularize = true;
     check_update(live, doc, doc.set_kgon_control({}, k));  // the global control
     check_update(live, doc, doc.undo());
@@ -231,7 +234,7 @@ TEST(ModelerLiveSurface, RandomTopologyEditsStayExact) {
     std::string line;
     switch (i % 5) {
       case 0: {  // split a face between two of its corners
-        const Face f = pick_from(m.faces());
+        const Face f = pick_from(m.faces().to_vector());
         const auto loop = m.face_loop(f);
         const Pick a{PickKind::corner, pick_from(loop).idx},
             b{PickKind::corner, pick_from(loop).idx};
@@ -239,19 +242,21 @@ TEST(ModelerLiveSurface, RandomTopologyEditsStayExact) {
         break;
       }
       case 1:
-        line = "subdivide-edge " +
-               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        line =
+            "subdivide-edge " +
+            without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges().to_vector()).idx}));
         break;
       case 2:
-        line = "delete-edge " +
-               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        line = "delete-edge " + without_kind(describe(
+                                    m, {PickKind::edge, pick_from(m.halfedges().to_vector()).idx}));
         break;
       case 3:
-        line = "collapse-edge " +
-               without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges()).idx}));
+        line =
+            "collapse-edge " +
+            without_kind(describe(m, {PickKind::edge, pick_from(m.halfedges().to_vector()).idx}));
         break;
       default:
-        line = "extrude-face " + std::to_string(pick_from(m.faces()).idx + 1) + " 0.2";
+        line = "extrude-face " + std::to_string(pick_from(m.faces().to_vector()).idx + 1) + " 0.2";
         break;
     }
     SCOPED_TRACE(line);

@@ -63,11 +63,11 @@ TEST(ModelerProject, ControlsFollowTheirElementsThroughCompaction) {
   // The same K-gons, built from both meshes, compared in live-element order.
   const KgonSet a = build_kgons(p.state.mesh, p.state.kgons),
                 b = build_kgons(q.state.mesh, q.state.kgons);
-  const auto fa = p.state.mesh.faces(), fb = q.state.mesh.faces();
+  const auto fa = p.state.mesh.faces().to_vector(), fb = q.state.mesh.faces().to_vector();
   ASSERT_EQ(fa.size(), fb.size());
   for (size_t i = 0; i < fa.size(); ++i)
     EXPECT_EQ(a.face[fa[i].idx].points, b.face[fb[i].idx].points);
-  const auto va = p.state.mesh.vertices(), vb = q.state.mesh.vertices();
+  const auto va = p.state.mesh.vertices().to_vector(), vb = q.state.mesh.vertices().to_vector();
   for (size_t i = 0; i < va.size(); ++i)
     EXPECT_EQ(a.vertex[va[i].idx].points, b.vertex[vb[i].idx].points);
   double sum_a = 0, sum_b = 0;  // edges are renumbered: compare the sets through a checksum

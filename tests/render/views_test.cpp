@@ -61,6 +61,41 @@ TEST(Views, ZIsUpAndEachViewFacesItsSideOfTheCube) {
   EXPECT_GT(iso.up.z(), 0.8);
 }
 
+// Explicit eyes (--eye) and close-ups (--focus-ev) keep the same convention: world +z shows
+// straight up in the image, except looking straight down or up z, where +y does (as in top).
+TEST(Views, ExplicitEyesAndCloseUpsKeepZUp) {
+  BoundingBox box;
+  box.extend(Vec3(-1, -1, -1));
+  box.extend(Vec3(1, 1, 1));
+  struct Case {
+    Camera camera;
+    Vec3 up;  ///< the world direction the image must show straight up
+  };
+  const Case cases[] = {
+      {look_at(Vec3(3, -4, 5), Vec3::Zero(), box), Vec3::UnitZ()},
+      {look_at(Vec3(2.5, -4, -3), Vec3::Zero(), box), Vec3::UnitZ()},
+      {look_at(Vec3(-6, 0.5, 0.2), Vec3::Zero(), box), Vec3::UnitZ()},
+      {look_at(Vec3(0, 0, 5), Vec3::Zero(), box), Vec3::UnitY()},
+      {look_at(Vec3(0, 0, -5), Vec3::Zero(), box), Vec3::UnitY()},
+      {frame_sphere(Vec3::Zero(), 0.5, Vec3(1, 1, 1), 1.0, box), Vec3::UnitZ()},
+      {frame_sphere(Vec3::Zero(), 0.5, -Vec3::UnitX(), 1.0, box), Vec3::UnitZ()},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(::testing::Message() << "eye " << c.camera.eye.transpose());
+    const Eigen::Matrix4f m = projection_matrix(c.camera, 1.0) * view_matrix(c.camera);
+    auto ndc = [&](const Vec3& p) {
+      const Eigen::Vector4f q = m * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
+      return Eigen::Vector2f(q.x() / q.w(), q.y() / q.w());
+    };
+    // The target projects to the centre; a point above it (in world `up`) straight above the
+    // centre, up to float round-off of the projection.
+    const Eigen::Vector2f centre = ndc(c.camera.target);
+    const Eigen::Vector2f above = ndc(c.camera.target + 0.1 * c.up);
+    EXPECT_GT(above.y() - centre.y(), 0.01f);
+    EXPECT_NEAR(above.x(), centre.x(), 1e-5f);
+  }
+}
+
 /// The centre of the drawn pixels relative to the image's centre, image y pointing up; in
 /// pixels.
 Eigen::Vector2d drawn_centre(const std::string& path) {

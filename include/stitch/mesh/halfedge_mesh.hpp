@@ -38,11 +38,11 @@
 #include <vector>
 
 #include "stitch/error.hpp"
+#include "stitch/mesh/element_range.hpp"
 
 namespace stitch {
 
 using Vec3 = Eigen::Vector3d;
-
 
 /// OpenSubdiv's infinite sharpness: tags at or above it make a crease or corner (method.md).
 inline constexpr double infinitely_sharp = 10.0;
@@ -155,11 +155,20 @@ class HalfedgeMesh {
   [[nodiscard]] bool is_deleted(Halfedge h) const { return is_deleted(edge(h)); }
   [[nodiscard]] bool is_deleted(Face f) const { return face_deleted_[f.idx] != 0; }
 
-  /// Live elements in index order.
-  [[nodiscard]] std::vector<Vertex> vertices() const;
-  [[nodiscard]] std::vector<Edge> edges() const;
-  [[nodiscard]] std::vector<Halfedge> halfedges() const;
-  [[nodiscard]] std::vector<Face> faces() const;
+  /// Live elements in index order, as ranges that build no list (see element_range.hpp for
+  /// what they see when the mesh changes during the loop; to_vector() takes a copy).
+  [[nodiscard]] ElementRange<Vertex> vertices() const {
+    return {vertex_deleted_, vertex_capacity(), num_vertices()};
+  }
+  [[nodiscard]] ElementRange<Edge> edges() const {
+    return {edge_deleted_, edge_capacity(), num_edges()};
+  }
+  [[nodiscard]] ElementRange<Halfedge> halfedges() const {
+    return {edge_deleted_, halfedge_capacity(), num_halfedges(), 1};
+  }
+  [[nodiscard]] ElementRange<Face> faces() const {
+    return {face_deleted_, face_capacity(), num_faces()};
+  }
 
   /// The half-edges of the face's loop, starting at halfedge(f), in loop order.
   [[nodiscard]] std::vector<Halfedge> face_loop(Face f) const;

@@ -61,12 +61,12 @@ std::string to_string(View view);
 /// The camera that shows the whole box from `view`, filling the smaller image side.
 Camera frame_view(View view, const BoundingBox& box, double aspect);
 /// Looks from `eye` at `target`; near/far planes are chosen to contain `box`. The image's up is
-/// world +y (+z when looking along y), not the named views' +z: explicit eyes keep the roll they
-/// had, so existing commands and their pictures stay as they were. Throws UsageError
-/// when eye == target.
+/// world +z, as in the named views (+y when looking straight along z, as in `top`). Throws
+/// UsageError when eye == target.
 Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box);
 /// Frames the sphere (center, radius) seen from direction `from` (pointing from the center
-/// towards the eye); `scene` sets the clipping planes so the rest of the model is not cut.
+/// towards the eye), with world +z up in the image (+y when `from` is along z); `scene` sets the
+/// clipping planes so the rest of the model is not cut.
 Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double aspect,
                     const BoundingBox& scene);
 
