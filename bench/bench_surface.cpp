@@ -95,7 +95,7 @@ struct StageTime {
 void BM_compare(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
-  const std::vector<Corner> corners = mesh.halfedges();
+  const std::vector<Corner> corners = mesh.halfedges().to_vector();
   const stitch::TessellationOptions options{kResolution, true};
   StageTime mdc, cc, mdc_eval, cc_eval, mdc_build, cc_build;
   for (auto _ : state) {
