@@ -26,23 +26,6 @@ struct SurfaceHandle {
   std::shared_ptr<const Surface> surface;
 };
 
-KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
-                         const std::string& construction) {
-  limits::check_range(scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
-  limits::check_range(rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                      "kgon_rotate");
-  KgonOptions o;
-  o.global.scale = scale;
-  o.global.rotate_deg = rotate_deg;
-  o.global.regularize = regularize;
-  if (construction == "doo-sabin")
-    o.construction = KgonConstruction::doo_sabin;
-  else if (construction != "openings")
-    throw py::value_error(
-        fmt::format("kgon_construction must be 'openings' or 'doo-sabin', not '{}'", construction));
-  return o;
-}
-
 SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, double kgon_scale,
                            double kgon_rotate, bool regularize, const std::string& construction) {
   const Method m = parse_method(method);
@@ -192,11 +175,28 @@ const TessellatedMesh& samples(const py::object& self) {
 
 }  // namespace
 
+KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
+                         const std::string& construction) {
+  limits::check_range(scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
+  limits::check_range(rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                      "kgon_rotate");
+  KgonOptions o;
+  o.global.scale = scale;
+  o.global.rotate_deg = rotate_deg;
+  o.global.regularize = regularize;
+  if (construction == "doo-sabin")
+    o.construction = KgonConstruction::doo_sabin;
+  else if (construction != "openings")
+    throw py::value_error(
+        fmt::format("kgon_construction must be 'openings' or 'doo-sabin', not '{}'", construction));
+  return o;
+}
+
 void bind_surface(py::module_& m) {
   // Buffers stay where tessellate() put them: the arrays are views whose base is this object.
   py::class_<TessellatedMesh>(m, "Tessellation",
-                          "The tessellated surface. Its arrays are read-only views of the "
-                          "buffers the library filled (no copies); copy one to change it.")
+                              "The tessellated surface. Its arrays are read-only views of the "
+                              "buffers the library filled (no copies); copy one to change it.")
       .def_property_readonly(
           "vertices",
           [](const py::object& self) {
