@@ -1,12 +1,14 @@
 #include "stitch/tess/incremental_surface.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
 #include <numeric>
 
+#include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
 
 namespace stitch {
@@ -98,18 +100,24 @@ std::vector<Corner> IncrementalSurface::changed_nets(const HalfedgeMesh& mesh,
 
 void IncrementalSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
   const int per_patch = vertices_per_patch();
-  const BezierRule rule = method_ == Method::asc ? BezierRule::asc : BezierRule::mdc;
-  tbb::parallel_for(size_t{0}, patches.size(), [&](size_t q) {
-    const Corner c = patches[q];
-    for (int s = 0; s < per_patch; ++s) {
-      const double u = grid_.uv(s).x(), v = grid_.uv(s).y();
-      const SurfacePoint sp = cc ? cc->evaluate(c, u, v) : evaluate_patch(nets_[c.idx], u, v, rule);
-      const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
-      tess_.positions[at] = sp.position;
-      tess_.normals[at] = sp.normal;
-      tess_.level[at] = sp.level;
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, patches.size(), 16),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      // As tessellate samples: grid points from the sampler's tables, the
+                      // same numbers as evaluating each point on its own.
+                      PatchSampler sampler = cc ? PatchSampler(*cc, resolution())
+                                                : PatchSampler(method_, nets_, resolution());
+                      for (size_t q = range.begin(); q < range.end(); ++q) {
+                        const Corner c = patches[q];
+                        for (int s = 0; s < per_patch; ++s) {
+                          const SurfacePoint sp =
+                              sampler.evaluate_grid(c, grid_.row(s), grid_.column(s));
+                          const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
+                          tess_.positions[at] = sp.position;
+                          tess_.normals[at] = sp.normal;
+                          tess_.level[at] = sp.level;
+                        }
+                      }
+                    });
   recomputed_ = patches;
 }
 
