@@ -26,6 +26,11 @@ struct MeshHandle {
 KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
                          const std::string& construction);
 
+/// Raises ValueError unless 1 <= resolution <= limits::max_resolution and a tessellation of
+/// `mesh` at that resolution, (resolution + 1)^2 samples per half-edge, can number its samples
+/// with int.
+void check_tessellation_size(const HalfedgeMesh& mesh, int resolution);
+
 /// stitch.Mesh, stitch.read, stitch.primitive.
 void bind_mesh(py::module_& m);
 /// stitch.Surface and the stitch.Tessellation it returns.

@@ -4,8 +4,6 @@
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 
-#include <climits>
-
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "stitch/mesh/limits.hpp"
@@ -28,15 +26,7 @@ std::unique_ptr<IncrementalHandle> make_incremental(const MeshHandle& mesh,
                                                     bool regularize,
                                                     const std::string& construction) {
   const Method m = parse_method(method);
-  limits::check_resolution(resolution, "resolution");
-  // One block of (resolution + 1)^2 samples per half-edge, numbered with int.
-  const double samples =
-      static_cast<double>(mesh.mesh->halfedge_capacity()) * (resolution + 1) * (resolution + 1);
-  if (samples > INT_MAX)
-    throw py::value_error(fmt::format(
-        "resolution {} gives {:.0f} samples on {} half-edges, more than the {} a tessellation "
-        "can number",
-        resolution, samples, mesh.mesh->halfedge_capacity(), INT_MAX));
+  check_tessellation_size(*mesh.mesh, resolution);
   auto h = std::make_unique<IncrementalHandle>();
   h->mesh = mesh.mesh;
   h->options = kgon_options(kgon_scale, kgon_rotate, regularize, construction);

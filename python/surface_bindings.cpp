@@ -38,18 +38,7 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, do
 }
 
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
-  // The command line's range; and TessellatedMesh numbers its samples with int, so their count
-  // (at most (resolution + 1)^2 per patch) must fit one.
-  if (resolution < 1 || resolution > limits::max_resolution)
-    throw py::value_error(
-        fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
-  const double samples =
-      static_cast<double>(s.mesh->num_halfedges()) * (resolution + 1) * (resolution + 1);
-  if (samples > INT_MAX)
-    throw py::value_error(fmt::format(
-        "resolution {} gives up to {:.0f} samples on {} patches, more than the {} a tessellation "
-        "can number",
-        resolution, samples, s.mesh->num_halfedges(), INT_MAX));
+  check_tessellation_size(*s.mesh, resolution);
   return {resolution, welded};
 }
 
@@ -174,6 +163,21 @@ const TessellatedMesh& samples(const py::object& self) {
 }
 
 }  // namespace
+
+void check_tessellation_size(const HalfedgeMesh& mesh, int resolution) {
+  // The command line's range; and TessellatedMesh numbers its samples with int, so their count
+  // (at most (resolution + 1)^2 per half-edge) must fit one.
+  if (resolution < 1 || resolution > limits::max_resolution)
+    throw py::value_error(
+        fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
+  const double samples =
+      static_cast<double>(mesh.halfedge_capacity()) * (resolution + 1) * (resolution + 1);
+  if (samples > INT_MAX)
+    throw py::value_error(
+        fmt::format("resolution {} gives up to {:.0f} samples on {} half-edges, more than the {} a "
+                    "tessellation can number",
+                    resolution, samples, mesh.halfedge_capacity(), INT_MAX));
+}
 
 KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
                          const std::string& construction) {

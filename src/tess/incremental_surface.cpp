@@ -36,6 +36,16 @@ std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions&
   return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
 }
 
+SurfaceUpdateStats update_stats(size_t candidates, size_t recomputed, bool full,
+                                const Stopwatch& watch) {
+  SurfaceUpdateStats stats;
+  stats.full = full;
+  stats.candidate_patches = static_cast<int>(candidates);
+  stats.recomputed_patches = static_cast<int>(recomputed);
+  stats.milliseconds = watch.ms();
+  return stats;
+}
+
 template <class T>
 void resize_to(std::vector<T>& v, int n) {
   v.resize(static_cast<size_t>(n));
@@ -300,12 +310,7 @@ SurfaceUpdateStats IncrementalSurface::update(const HalfedgeMesh& mesh, const Kg
   }
   std::sort(changed.begin(), changed.end());
   evaluate(changed, cc.get());
-  SurfaceUpdateStats stats;
-  stats.full = cc != nullptr;
-  stats.candidate_patches = static_cast<int>(candidates.size());
-  stats.recomputed_patches = static_cast<int>(changed.size());
-  stats.milliseconds = watch.ms();
-  return stats;
+  return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
 }
 
 SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh,
@@ -330,12 +335,7 @@ SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh
   std::vector<Corner> changed = changed_nets(mesh, candidates);
   if (cc) changed = candidates;  // the limit surface ignores the nets
   evaluate(changed, cc.get());
-  SurfaceUpdateStats stats;
-  stats.full = cc != nullptr;
-  stats.candidate_patches = static_cast<int>(candidates.size());
-  stats.recomputed_patches = static_cast<int>(changed.size());
-  stats.milliseconds = watch.ms();
-  return stats;
+  return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
 }
 
 SurfaceUpdateStats IncrementalSurface::set_method(const HalfedgeMesh& mesh,

@@ -74,5 +74,5 @@ def test_bad_positions_are_refused_and_change_nothing():
     with pytest.raises(stitch.StitchError, match="vertex 6"):
         live.update_positions(bad)
     assert np.array_equal(live.tessellation.vertices, before)
-    with pytest.raises(stitch.UsageError, match="resolution"):
+    with pytest.raises(ValueError, match="resolution must be 1 to 1024"):
         stitch.IncrementalSurface(mesh, resolution=0)
