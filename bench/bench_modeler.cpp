@@ -2,21 +2,21 @@
 // nets, and the re-tessellated patches at resolution 8, unwelded as the renderer takes it), on
 // tori of about 1k, 10k and 100k quads (make_torus(m, n)). Not timed: the GPU upload.
 //   modeler_vertex_move   one vertex moved (alternately up and back down, so the mesh stays
-//                         the same): Document::move_vertices + LiveSurface::update, which
+//                         the same): Document::move_vertices + IncrementalSurface::update, which
 //                         rebuilds only the K-gons and nets around the vertex and re-evaluates
 //                         only the patches whose nets changed.
 //   modeler_insert_edge   insert-edge splitting one quad along its diagonal (apply_operation,
 //                         which also recounts the topology for its report, and the document's
-//                         undo snapshots) + LiveSurface::update, which compares the mesh with
-//                         the previous one and rebuilds only around what changed. Undoing it
+//                         undo snapshots) + IncrementalSurface::update, which compares the mesh
+//                         with the previous one and rebuilds only around what changed. Undoing it
 //                         between iterations is not timed.
-//   modeler_insert_edge_surface_only   the same, timing only LiveSurface::update.
+//   modeler_insert_edge_surface_only   the same, timing only IncrementalSurface::update.
 // Counters: faces, patches (corners) in the mesh, recomputed = patches re-evaluated per edit.
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
 #include "stitch/modeler/document.hpp"
-#include "stitch/modeler/live_surface.hpp"
+#include "stitch/tess/incremental_surface.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace {
@@ -32,12 +32,12 @@ HalfedgeMesh torus_for(int64_t faces) {
 
 void modeler_vertex_move(benchmark::State& state) {
   Document doc(torus_for(state.range(0)));
-  LiveSurface live;
+  IncrementalSurface live;
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 8);
   const Vertex v(doc.mesh().num_vertices() / 2);
   const Vec3 start = doc.mesh().position(v);
   int step = 0;
-  UpdateStats last;
+  SurfaceUpdateStats last;
   for (auto _ : state) {
     const Vec3 p = start + (step++ % 2 == 0 ? 0.05 : 0.0) * Vec3::UnitZ();
     last = live.update(doc.mesh(), doc.kgon_options(), doc.move_vertices({v}, {p}, true));
@@ -48,10 +48,10 @@ void modeler_vertex_move(benchmark::State& state) {
   state.counters["recomputed"] = last.recomputed_patches;
 }
 
-/// `surface_only`: time just LiveSurface::update, not the document's side of the edit.
+/// `surface_only`: time just IncrementalSurface::update, not the document's side of the edit.
 void insert_edge(benchmark::State& state, bool surface_only) {
   Document doc(torus_for(state.range(0)));
-  LiveSurface live;
+  IncrementalSurface live;
   live.rebuild(doc.mesh(), doc.kgon_options(), Method::mdc, 8);
   const Face f(doc.mesh().num_faces() / 2);
   const auto loop = doc.mesh().face_loop(f);
@@ -62,7 +62,7 @@ void insert_edge(benchmark::State& state, bool surface_only) {
   // copy of every sample, amortized by the vectors' doubling); later edits fit.
   live.update(doc.mesh(), doc.kgon_options(), doc.apply_operation(line));
   live.update(doc.mesh(), doc.kgon_options(), doc.undo());
-  UpdateStats last;
+  SurfaceUpdateStats last;
   for (auto _ : state) {
     if (surface_only) state.PauseTiming();
     const Change change = doc.apply_operation(line);

@@ -18,4 +18,5 @@ PYBIND11_MODULE(stitch, m) {
   py::register_exception<stitch::OutputError>(m, "OutputError", base.ptr());
   stitch::python::bind_mesh(m);
   stitch::python::bind_surface(m);
+  stitch::python::bind_incremental_surface(m);
 }

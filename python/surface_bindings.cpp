@@ -26,23 +26,6 @@ struct SurfaceHandle {
   std::shared_ptr<const Surface> surface;
 };
 
-KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
-                         const std::string& construction) {
-  limits::check_range(scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
-  limits::check_range(rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                      "kgon_rotate");
-  KgonOptions o;
-  o.global.scale = scale;
-  o.global.rotate_deg = rotate_deg;
-  o.global.regularize = regularize;
-  if (construction == "doo-sabin")
-    o.construction = KgonConstruction::doo_sabin;
-  else if (construction != "openings")
-    throw py::value_error(
-        fmt::format("kgon_construction must be 'openings' or 'doo-sabin', not '{}'", construction));
-  return o;
-}
-
 SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, double kgon_scale,
                            double kgon_rotate, bool regularize, const std::string& construction) {
   const Method m = parse_method(method);
@@ -55,18 +38,7 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, do
 }
 
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
-  // The command line's range; and TessellatedMesh numbers its samples with int, so their count
-  // (at most (resolution + 1)^2 per patch) must fit one.
-  if (resolution < 1 || resolution > limits::max_resolution)
-    throw py::value_error(
-        fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
-  const double samples =
-      static_cast<double>(s.mesh->num_halfedges()) * (resolution + 1) * (resolution + 1);
-  if (samples > INT_MAX)
-    throw py::value_error(fmt::format(
-        "resolution {} gives up to {:.0f} samples on {} patches, more than the {} a tessellation "
-        "can number",
-        resolution, samples, s.mesh->num_halfedges(), INT_MAX));
+  check_tessellation_size(*s.mesh, resolution);
   return {resolution, welded};
 }
 
@@ -192,11 +164,43 @@ const TessellatedMesh& samples(const py::object& self) {
 
 }  // namespace
 
+void check_tessellation_size(const HalfedgeMesh& mesh, int resolution) {
+  // The command line's range; and TessellatedMesh numbers its samples with int, so their count
+  // (at most (resolution + 1)^2 per half-edge) must fit one.
+  if (resolution < 1 || resolution > limits::max_resolution)
+    throw py::value_error(
+        fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
+  const double samples =
+      static_cast<double>(mesh.halfedge_capacity()) * (resolution + 1) * (resolution + 1);
+  if (samples > INT_MAX)
+    throw py::value_error(
+        fmt::format("resolution {} gives up to {:.0f} samples on {} half-edges, more than the {} a "
+                    "tessellation can number",
+                    resolution, samples, mesh.halfedge_capacity(), INT_MAX));
+}
+
+KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
+                         const std::string& construction) {
+  limits::check_range(scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
+  limits::check_range(rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+                      "kgon_rotate");
+  KgonOptions o;
+  o.global.scale = scale;
+  o.global.rotate_deg = rotate_deg;
+  o.global.regularize = regularize;
+  if (construction == "doo-sabin")
+    o.construction = KgonConstruction::doo_sabin;
+  else if (construction != "openings")
+    throw py::value_error(
+        fmt::format("kgon_construction must be 'openings' or 'doo-sabin', not '{}'", construction));
+  return o;
+}
+
 void bind_surface(py::module_& m) {
   // Buffers stay where tessellate() put them: the arrays are views whose base is this object.
   py::class_<TessellatedMesh>(m, "Tessellation",
-                          "The tessellated surface. Its arrays are read-only views of the "
-                          "buffers the library filled (no copies); copy one to change it.")
+                              "The tessellated surface. Its arrays are read-only views of the "
+                              "buffers the library filled (no copies); copy one to change it.")
       .def_property_readonly(
           "vertices",
           [](const py::object& self) {

@@ -33,8 +33,8 @@ struct View3D {
 /// The main view, the split view's second method, and the buffers they are drawn into.
 struct SceneViews {
   View3D main, split;
-  LiveSurface split_surface;  ///< the second method of the split view
-  KgonOptions split_kgons;    ///< the controls split_surface was built with
+  IncrementalSurface split_surface;  ///< the second method of the split view
+  KgonOptions split_kgons;           ///< the controls split_surface was built with
   bool split_current = false;
   bool overlays_dirty = true;
   OffscreenTarget target;

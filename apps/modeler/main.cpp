@@ -1,7 +1,8 @@
 // stitch-modeler: the interactive modeler. A thin GLFW + Dear ImGui layer: every edit is a
 // script line run by the window-free session (include/stitch/modeler/session.hpp), the surface is
-// kept up to date incrementally by LiveSurface, and the renderer re-uploads only the patches an
-// edit changed. This file starts the window and runs the loop; app_state.hpp lists the parts.
+// kept up to date incrementally by stitch::IncrementalSurface, and the renderer re-uploads only the
+// patches an edit changed. This file starts the window and runs the loop; app_state.hpp lists the
+// parts.
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>

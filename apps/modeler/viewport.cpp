@@ -67,7 +67,7 @@ RenderStyle style_for(const App& app) {
   return style;
 }
 
-void upload_overlays(const App& app, const View3D& view, const LiveSurface& surface) {
+void upload_overlays(const App& app, const View3D& view, const IncrementalSurface& surface) {
   const Session& s = app.session;
   const HalfedgeMesh& m = s.document.mesh();
   const DisplaySettings& d = s.display;
@@ -95,7 +95,7 @@ void upload_overlays(const App& app, const View3D& view, const LiveSurface& surf
 }
 
 /// Uploads what changed: the recomputed patches' vertex blocks, or everything.
-void sync_view(const Session& s, View3D& view, const LiveSurface& surface, bool full) {
+void sync_view(const Session& s, View3D& view, const IncrementalSurface& surface, bool full) {
   if (s.display.input_polygons) {
     if (full || view.geometry_dirty || !view.input_uploaded)
       view.renderer->set_surface(input_faces(s.document.mesh()));
@@ -147,7 +147,7 @@ void after_change(App& app, bool full) {
   const Change missed = s.take_changes();
   sync_view(s, v.main, s.surface, full);
   if (s.display.split) {
-    UpdateStats stats;
+    SurfaceUpdateStats stats;
     if (!v.split_current || v.split_surface.method() != *s.display.split ||
         v.split_surface.resolution() != s.display.resolution || full ||
         !same_controls(v.split_kgons, s.document.kgon_options())) {

@@ -40,7 +40,10 @@
 // tessellation and export
 #include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/export.hpp"
+#include "stitch/tess/incremental_surface.hpp"
+#include "stitch/tess/patch_grid.hpp"
 #include "stitch/tess/patches.hpp"
+#include "stitch/tess/surface_change.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
 #include "stitch/tess/tessellate.hpp"
 

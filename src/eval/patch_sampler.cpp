@@ -12,7 +12,12 @@ constexpr int kCachedLevels = 20;
 }  // namespace
 
 PatchSampler::PatchSampler(const Surface& surface, int resolution)
-    : surface_(surface), resolution_(resolution) {
+    : PatchSampler(surface.method(), surface.bezier().nets, resolution) {
+  surface_ = &surface;
+}
+
+PatchSampler::PatchSampler(Method method, const std::vector<ControlNet>& nets, int resolution)
+    : surface_(nullptr), method_(method), nets_(nets), resolution_(resolution) {
   for (Patch& p : patches_) p.splits.reserve(16);
   for (int k = 0; k <= resolution; ++k)
     basis_.push_back(detail::cubic_basis(static_cast<double>(k) / resolution));
@@ -20,8 +25,8 @@ PatchSampler::PatchSampler(const Surface& surface, int resolution)
 
 SurfacePoint PatchSampler::evaluate_grid(Corner c, int i, int j) {
   const double u = static_cast<double>(i) / resolution_, v = static_cast<double>(j) / resolution_;
-  const Method method = surface_.method();
-  const ControlNet& net = surface_.bezier().nets[c.idx];
+  const Method method = method_;
+  const ControlNet& net = nets_[c.idx];
   if (method == Method::cc || (method == Method::mdc && !net.regular())) return evaluate(c, u, v);
   Patch& p = patch(c);
   if (p.rows.empty()) {
@@ -55,9 +60,9 @@ SurfacePoint PatchSampler::evaluate_grid(Corner c, int i, int j) {
 }
 
 SurfacePoint PatchSampler::evaluate(Corner c, double u, double v) {
-  if (surface_.method() != Method::mdc) return surface_.evaluate(c, u, v);
-  const ControlNet& root = surface_.bezier().nets[c.idx];
-  if (root.regular()) return surface_.evaluate(c, u, v);
+  if (method_ != Method::mdc) return direct(c, u, v);
+  const ControlNet& root = nets_[c.idx];
+  if (root.regular()) return direct(c, u, v);
   Patch& p = patch(c);
   return detail::descend(
       p.relative, root.p[0], u, v,
@@ -66,13 +71,19 @@ SurfacePoint PatchSampler::evaluate(Corner c, double u, double v) {
       });
 }
 
+SurfacePoint PatchSampler::direct(Corner c, double u, double v) const {
+  if (surface_) return surface_->evaluate(c, u, v);
+  return evaluate_patch(nets_[c.idx], u, v,
+                        method_ == Method::asc ? BezierRule::asc : BezierRule::mdc);
+}
+
 PatchSampler::Patch& PatchSampler::patch(Corner c) {
   for (Patch& p : patches_)
     if (p.corner == c.idx) return p;
   Patch& p = patches_[next_];
   next_ = (next_ + 1) % static_cast<int>(patches_.size());
   p.corner = c.idx;
-  const ControlNet& root = surface_.bezier().nets[c.idx];
+  const ControlNet& root = nets_[c.idx];
   p.relative = root;
   for (Vec3& point : p.relative.p) point -= root.p[0];
   p.splits.clear();

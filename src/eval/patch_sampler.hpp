@@ -17,6 +17,9 @@ class PatchSampler {
  public:
   /// `resolution`: the grid evaluate_grid samples (0 when it is not used).
   explicit PatchSampler(const Surface& surface, int resolution = 0);
+  /// The Bézier patches of `nets` (indexed by corner) for method mdc or asc, without a Surface
+  /// (IncrementalSurface keeps its own nets): the same points as a Surface with these nets.
+  PatchSampler(Method method, const std::vector<ControlNet>& nets, int resolution);
   /// Surface::evaluate(c, u, v). Cheapest when the calls stay on the last few corners (a side
   /// shared by two patches is sampled from both in turn).
   SurfacePoint evaluate(Corner c, double u, double v);
@@ -41,10 +44,14 @@ class PatchSampler {
     double tiny = 0;                                 ///< detail::degenerate_threshold
   };
   Patch& patch(Corner c);
+  /// Surface::evaluate(c, u, v), with no caching.
+  [[nodiscard]] SurfacePoint direct(Corner c, double u, double v) const;
   const std::array<ControlNet, 4>& split_at(Patch& patch, const ControlNet& net,
                                             std::uint64_t path);
 
-  const Surface& surface_;
+  const Surface* surface_;  ///< null: the Bézier patches of nets_ alone (not cc)
+  Method method_;
+  const std::vector<ControlNet>& nets_;
   int resolution_;
   std::vector<detail::CubicBasis> basis_;  ///< at t = k / resolution, k = 0..resolution
   std::array<Patch, 4> patches_;

@@ -1,7 +1,7 @@
-// What reads what among the K-gons: the rule an incremental update (the modeler's live surface,
-// the local surface check) follows to rebuild only what an edit can change. It sits beside the
-// builders because it restates what they read: a change to build_kgons must be made here too
-// (the live surface's tests compare every update with a rebuild).
+// What reads what among the K-gons: the rule an incremental update (IncrementalSurface, the local
+// surface check) follows to rebuild only what an edit can change. It sits beside the builders
+// because it restates what they read: a change to build_kgons must be made here too
+// (tests/test_incremental_surface.cpp compares every update with a rebuild).
 #include <algorithm>
 
 #include "mesh/sort_unique.hpp"

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <utility>
 
-#include "sort_unique.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch::modeler {
@@ -38,38 +37,7 @@ auto& controls_of(Options& o, KgonKind kind) {
   return kind == KgonKind::face ? o.face : kind == KgonKind::vertex ? o.vertex : o.edge;
 }
 
-Change topology_change(const HalfedgeMesh::Delta* delta) {
-  Change c;
-  c.kind = Change::Kind::topology;
-  if (delta) {
-    c.vertices = delta->vertices;
-    c.edges = delta->edges;
-    c.faces = delta->faces;
-  } else {
-    c.whole = true;
-  }
-  return c;
-}
-
 }  // namespace
-
-Change combined(const std::vector<Change>& changes) {
-  Change out;
-  if (changes.empty()) return out;
-  out.kind = Change::Kind::topology;
-  for (const Change& c : changes) {
-    out.whole = out.whole || c.whole;
-    out.vertices.insert(out.vertices.end(), c.moved.begin(), c.moved.end());
-    if (c.kind != Change::Kind::topology) continue;
-    out.vertices.insert(out.vertices.end(), c.vertices.begin(), c.vertices.end());
-    out.edges.insert(out.edges.end(), c.edges.begin(), c.edges.end());
-    out.faces.insert(out.faces.end(), c.faces.begin(), c.faces.end());
-  }
-  detail::sort_unique(out.vertices);
-  detail::sort_unique(out.edges);
-  detail::sort_unique(out.faces);
-  return out;
-}
 
 void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered) {
   if (renumbered) {
@@ -111,7 +79,7 @@ Change Document::apply_operation(const Operation& op, std::string label, Operati
     if (report) *report = r;
     prune_kgon_controls(state_.mesh, state_.kgons, true);
     record(Command{std::move(label), Snapshot{std::move(before), state_}});
-    return topology_change(nullptr);
+    return whole_change();
   }
   OperationReport r;
   state_.mesh.begin_journal();
@@ -127,7 +95,7 @@ Change Document::apply_operation(const Operation& op, std::string label, Operati
   if (r.what.empty()) return {};
   KgonOptions kgons_before = state_.kgons;
   prune_kgon_controls(state_.mesh, state_.kgons, false);
-  Change c = topology_change(&delta);
+  Change c = topology_change(delta);
   record(Command{std::move(label),
                  TopologyEdit{std::move(delta), std::move(kgons_before), state_.kgons}});
   return c;
@@ -137,7 +105,7 @@ Change Document::replace(DocumentState state, std::string label) {
   Command command{std::move(label), Snapshot{state_, std::move(state)}};
   state_ = std::get<Snapshot>(command.edit).after;
   record(std::move(command));
-  return topology_change(nullptr);
+  return whole_change();
 }
 
 Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgons,
@@ -191,7 +159,7 @@ Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgon
   for (const auto& [e, c] : other_kgons.edge)
     if (e < other.edge_capacity() && edge_to[e] >= 0)
       state_.kgons.edge[HalfedgeMesh::edge(Halfedge(edge_to[e])).idx] = c;
-  Change c = topology_change(&delta);
+  Change c = topology_change(delta);
   record(Command{std::move(label),
                  TopologyEdit{std::move(delta), std::move(kgons_before), state_.kgons}});
   return c;
@@ -292,11 +260,11 @@ Change Document::apply(const Command& command, bool forward) {
   } else if (const auto* topology = std::get_if<TopologyEdit>(&command.edit)) {
     state_.mesh.apply(topology->mesh, forward);
     state_.kgons = forward ? topology->kgons_after : topology->kgons_before;
-    c = topology_change(&topology->mesh);
+    c = topology_change(topology->mesh);
   } else {
     const auto& snapshot = std::get<Snapshot>(command.edit);
     state_ = forward ? snapshot.after : snapshot.before;
-    c = topology_change(nullptr);
+    c = whole_change();
   }
   return c;
 }

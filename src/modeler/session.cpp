@@ -104,9 +104,7 @@ void Session::remember(Change change) {
   constexpr size_t kMostKept = 64;
   if (untaken_.size() >= kMostKept) {
     untaken_.clear();
-    change = Change{};
-    change.kind = Change::Kind::topology;
-    change.whole = true;
+    change = whole_change();
   }
   untaken_.push_back(std::move(change));
 }
@@ -117,7 +115,7 @@ Change Session::take_changes() {
   return c;
 }
 
-const UpdateStats& Session::apply(const Change& change) {
+const SurfaceUpdateStats& Session::apply(const Change& change) {
   remember(change);
   if (change.kind == Change::Kind::topology) selection.reset();
   try {
@@ -143,10 +141,7 @@ void Session::check_surface_near(const std::vector<Corner>& corners) {
 }
 
 void Session::rebuild() {
-  Change whole;
-  whole.kind = Change::Kind::topology;
-  whole.whole = true;
-  remember(std::move(whole));
+  remember(whole_change());
   problems_ = {};
   try {
     last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,

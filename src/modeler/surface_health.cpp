@@ -31,7 +31,7 @@ std::string describe_problems(const HalfedgeMesh& mesh, const SurfaceProblems& p
                      problems.self_intersections);
 }
 
-SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const LiveSurface& surface,
+SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSurface& surface,
                                    const std::vector<Corner>& changed) {
   SurfaceProblems out;
   if (surface.method() == Method::cc || changed.empty()) return out;
@@ -66,7 +66,7 @@ SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const LiveSurface& 
   return out;
 }
 
-void add_problem_outlines(const LiveSurface& surface, const std::vector<Corner>& corners,
+void add_problem_outlines(const IncrementalSurface& surface, const std::vector<Corner>& corners,
                           LineSet& lines) {
   const TessellatedMesh& tess = surface.tessellation();
   const int n = surface.resolution(), per_patch = surface.vertices_per_patch();

@@ -10,12 +10,11 @@ namespace stitch {
 
 TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vector<Corner>& corners,
                                        int resolution, bool welded)
-    : mesh_(mesh), corners_(corners), n_(resolution), welded_(welded) {
-  if (n_ < 1) throw UsageError("the resolution must be at least 1");
+    : mesh_(mesh), corners_(corners), n_(resolution), grid_(resolution), welded_(welded) {
   const auto num_corners = static_cast<std::int64_t>(corners.size());
   const std::int64_t per_side = n_ - 1;
   if (!welded_) {
-    num_vertices_ = num_corners * (n_ + 1) * (n_ + 1);
+    num_vertices_ = num_corners * grid_.num_samples();
   } else {
     corner_index_.assign(mesh.halfedge_capacity(), -1);
     for (size_t k = 0; k < corners.size(); ++k) corner_index_[corners[k].idx] = static_cast<int>(k);
@@ -62,7 +61,7 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
 
 std::int64_t TessellationLayout::vertex(int k, int i, int j) const {
   const int n = n_;
-  if (!welded_) return (static_cast<std::int64_t>(k) * (n + 1) + i) * (n + 1) + j;
+  if (!welded_) return static_cast<std::int64_t>(k) * grid_.num_samples() + grid_.sample(i, j);
   const Corner c = corners_[k];
   if (i == 0 && j == 0) return vertex_slot_[mesh_.origin(c).idx];
   if (i == n && j == n) return first_face_ + face_slot_[mesh_.face(c).idx];
@@ -107,7 +106,8 @@ void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) c
 }
 
 std::array<std::int64_t, 4> TessellationLayout::cell_quad(int k, int i, int j) const {
-  if (welded_ && i >= 1 && j >= 1 && i + 1 < n_ && j + 1 < n_) {
+  if (!welded_) return grid_.quad(i * n_ + j, static_cast<std::int64_t>(k) * grid_.num_samples());
+  if (i >= 1 && j >= 1 && i + 1 < n_ && j + 1 < n_) {
     // All four corners interior: consecutive rows of this corner's interior block.
     const std::int64_t side = n_ - 1;
     const std::int64_t at = block(k) + 2 * side + (i - 1) * side + (j - 1);
@@ -120,9 +120,9 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
   out.clear();
   const int n = n_;
   if (!welded_) {
-    const std::int64_t per_patch = static_cast<std::int64_t>(n + 1) * (n + 1);
+    const std::int64_t per_patch = grid_.num_samples();
     const auto s = static_cast<int>(vertex % per_patch);
-    out.push_back({static_cast<int>(vertex / per_patch), s / (n + 1), s % (n + 1)});
+    out.push_back({static_cast<int>(vertex / per_patch), grid_.row(s), grid_.column(s)});
     return;
   }
   if (vertex < first_face_) {
@@ -190,14 +190,14 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
     Vec3 normal = Vec3::Zero();
     for (size_t s = 0; s < sharing.size(); ++s) {
       const GridSample& g = sharing[s];
-      const double u = static_cast<double>(g.i) / n_, v = static_cast<double>(g.j) / n_;
+      const Eigen::Vector2d& uv = grid_.uv(grid_.sample(g.i, g.j));
       const SurfacePoint point = grid ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
-                                      : sampler.evaluate(corners_[g.corner], u, v);
+                                      : sampler.evaluate(corners_[g.corner], uv.x(), uv.y());
       normal += point.normal;
       if (s > 0) continue;
       const std::int64_t at = vertex - begin;
       positions[at] = point.position;
-      if (attributes.uv) attributes.uv[at] = Eigen::Vector2d(u, v);
+      if (attributes.uv) attributes.uv[at] = uv;
       if (attributes.patch) attributes.patch[at] = corners_[g.corner].idx;
       if (attributes.level) attributes.level[at] = point.level;
     }

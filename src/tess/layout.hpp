@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
+#include "stitch/tess/patch_grid.hpp"
 #include "stitch/tess/tessellate.hpp"
 
 namespace stitch {
@@ -32,7 +33,7 @@ struct SampleAttributes {
 /// corner the n - 1 samples of its edge half, the n - 1 of its spoke and its (n - 1)^2 interior
 /// samples (so a range of them stays on a few patches at a time), then the n - 1 samples of each
 /// boundary half that no corner's block holds. Holes have no samples.
-/// Unwelded: every corner's own grid, corner after corner, row-major (i, then j).
+/// Unwelded: every corner's own grid, corner after corner, each laid out by PatchGrid.
 class TessellationLayout {
  public:
   TessellationLayout(const HalfedgeMesh& mesh, const std::vector<Corner>& corners, int resolution,
@@ -71,6 +72,7 @@ class TessellationLayout {
   const HalfedgeMesh& mesh_;
   const std::vector<Corner>& corners_;
   int n_;
+  PatchGrid grid_;
   bool welded_;
   std::vector<int> corner_index_;                         ///< by half-edge
   std::vector<int> vertex_slot_, face_slot_, edge_slot_;  ///< by element index (compacted)

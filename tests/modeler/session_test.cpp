@@ -78,7 +78,7 @@ TEST(ModelerSession, CatmullClarkShowsTheCubeWithAHole) {
 // the same code on the same numbers).
 TEST(ModelerSession, ASecondSurfaceFollowsTheDocumentThroughTakenChanges) {
   Session s(make_cube());
-  LiveSurface follower;
+  IncrementalSurface follower;
   follower.rebuild(s.document.mesh(), s.document.kgon_options(), Method::asc, 3);
   EXPECT_TRUE(s.take_changes().whole);  // the session's own first build
   const std::vector<std::vector<std::string>> batches = {
@@ -93,7 +93,7 @@ TEST(ModelerSession, ASecondSurfaceFollowsTheDocumentThroughTakenChanges) {
     ASSERT_FALSE(run_script(s, batch, {}));
     const Change missed = s.take_changes();
     follower.update(s.document.mesh(), s.document.kgon_options(), missed);
-    LiveSurface fresh;
+    IncrementalSurface fresh;
     fresh.rebuild(s.document.mesh(), s.document.kgon_options(), Method::asc, 3);
     ASSERT_EQ(follower.corners(), fresh.corners());
     const int per = fresh.vertices_per_patch();

@@ -140,8 +140,8 @@ struct KgonElements {
 /// own. Faces that are deleted are skipped.
 KgonElements kgons_reading(const HalfedgeMesh& mesh, std::vector<Face> faces);
 
-/// Local update of a set that build_kgons made for this mesh's connectivity (the modeler's
-/// incremental update): recomputes the corner points of `faces`, then the K-gons of `faces`,
+/// Local update of a set that build_kgons made for this mesh's connectivity (IncrementalSurface's
+/// update): recomputes the corner points of `faces`, then the K-gons of `faces`,
 /// `vertices` and `edges`, exactly as build_kgons would. The caller lists every element whose
 /// K-gon can change (e.g. after a vertex moved: its faces and their vertices and edges).
 void update_kgons(const HalfedgeMesh& mesh, const KgonOptions& options, KgonSet& set,

@@ -15,6 +15,7 @@
 
 #include "stitch/kgon/kgon.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/tess/surface_change.hpp"
 #include "stitch/topology/operation.hpp"
 
 namespace stitch::modeler {
@@ -25,27 +26,9 @@ struct DocumentState {
   KgonOptions kgons;
 };
 
-/// What an edit changed, so the surface can update only what depends on it.
-struct Change {
-  enum class Kind { none, geometry, kgons, topology };
-  Kind kind = Kind::none;
-  std::vector<Vertex> moved;  ///< geometry: the vertices that moved
-  /// kgons: the elements whose controls changed (all_kgons: the global control changed).
-  /// topology: the elements the edit touched (HalfedgeMesh::Delta), unless `whole`.
-  std::vector<Face> faces;
-  std::vector<Vertex> vertices;
-  std::vector<Edge> edges;
-  bool all_kgons = false;
-  bool whole = false;  ///< topology: everything may have changed (renumbered or replaced)
-
-  [[nodiscard]] bool empty() const { return kind == Kind::none; }
-};
-
-/// One topology change covering `changes` made one after the other, for a surface that has seen
-/// none of them: the union of what they touched (moved vertices count as touched), whole if any
-/// was. K-gon control changes are not covered (the surface needs the controls themselves).
-/// Kind none when `changes` is empty.
-Change combined(const std::vector<Change>& changes);
+/// What an edit changed, so the surface can update only what depends on it (the library's
+/// SurfaceChange, with combined() to merge several).
+using Change = SurfaceChange;
 
 /// An element whose K-gon a control applies to; element -1 = the global control.
 struct KgonTarget {

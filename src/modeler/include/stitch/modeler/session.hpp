@@ -35,10 +35,10 @@
 #include <vector>
 
 #include "stitch/modeler/document.hpp"
-#include "stitch/modeler/live_surface.hpp"
 #include "stitch/modeler/navigation.hpp"
 #include "stitch/modeler/project.hpp"
 #include "stitch/modeler/surface_health.hpp"
+#include "stitch/tess/incremental_surface.hpp"
 
 namespace stitch::modeler {
 
@@ -48,8 +48,8 @@ struct Session {
   OrbitView view;
   DisplaySettings display;
   std::optional<Pick> selection;
-  LiveSurface surface;
-  UpdateStats last_update;
+  IncrementalSurface surface;
+  SurfaceUpdateStats last_update;
   /// Set when the last line could not show its method (cc refused the mesh), else empty.
   std::string warning;
   /// The size of the area the model is drawn in (the application keeps it current), so that
@@ -61,7 +61,7 @@ struct Session {
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
   /// Brings the surface up to date after a document change; returns (and keeps) the stats.
-  const UpdateStats& apply(const Change& change);
+  const SurfaceUpdateStats& apply(const Change& change);
   /// The document changes since the last call, for a second surface that follows the document
   /// (the split view): combined() of them, or whole after a rebuild. Kind none if there were
   /// none.

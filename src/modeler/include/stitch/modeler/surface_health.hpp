@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "stitch/analysis/local_check.hpp"
-#include "stitch/modeler/live_surface.hpp"
 #include "stitch/render/overlays.hpp"
+#include "stitch/tess/incremental_surface.hpp"
 
 namespace stitch::modeler {
 
@@ -32,12 +32,12 @@ std::string describe_problems(const HalfedgeMesh& mesh, const SurfaceProblems& p
 /// at which the clean hole through a cube shows folds (README).
 inline constexpr int kHealthResolution = LocalCheckOptions{}.resolution;
 
-/// Checks the patches of `changed` (e.g. LiveSurface::recomputed() and the corners of earlier
-/// problems, which an edit may have fixed) with their neighbours on the live surface: its
+/// Checks the patches of `changed` (e.g. IncrementalSurface::recomputed() and the corners of
+/// earlier problems, which an edit may have fixed) with their neighbours on the live surface: its
 /// tessellation when that has kHealthResolution, else its nets evaluated at it (so the answer
 /// does not depend on the display resolution). Nothing is checked for the Catmull-Clark method,
 /// which has no nets of its own.
-SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const LiveSurface& surface,
+SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSurface& surface,
                                    const std::vector<Corner>& changed);
 
 /// Colour of the outlines of problem patches.
@@ -45,7 +45,7 @@ inline const Colour problem_colour{0.90f, 0.05f, 0.05f};
 
 /// Adds the four sides of each listed patch on the live tessellation to `lines`, wider than
 /// other lines.
-void add_problem_outlines(const LiveSurface& surface, const std::vector<Corner>& corners,
+void add_problem_outlines(const IncrementalSurface& surface, const std::vector<Corner>& corners,
                           LineSet& lines);
 
 }  // namespace stitch::modeler

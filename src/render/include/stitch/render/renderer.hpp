@@ -89,11 +89,12 @@ class Renderer {
   /// count and quads as the one given to set_surface. Throws std::out_of_range.
   void update_surface_vertices(const TessellatedMesh& surface, int first, int count);
   /// Uploads a surface made of equal blocks (`quads_per_block` quads over `vertices_per_block`
-  /// vertices each, in block order: the modeler's LiveSurface layout) so that blocks can later
+  /// vertices each, in block order: IncrementalSurface's layout) so that blocks can later
   /// be replaced one at a time: every quad keeps both triangles in the index buffer (the
   /// degenerate quads of an empty block draw nothing), and the buffers keep room to grow.
   /// Throws std::invalid_argument when the sizes do not divide into blocks.
-  void set_block_surface(const TessellatedMesh& surface, int vertices_per_block, int quads_per_block);
+  void set_block_surface(const TessellatedMesh& surface, int vertices_per_block,
+                         int quads_per_block);
   /// Brings the uploaded block surface to `surface` by re-uploading the listed blocks (vertices
   /// and triangles) and any blocks added at the end; blocks removed at the end stop being
   /// drawn. Past the room kept it uploads everything again, with more room. Throws

@@ -1,14 +1,17 @@
-#include "stitch/modeler/live_surface.hpp"
+#include "stitch/tess/incremental_surface.hpp"
 
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
 #include <numeric>
 
-#include "sort_unique.hpp"
+#include "eval/patch_sampler.hpp"
+#include "mesh/sort_unique.hpp"
 
-namespace stitch::modeler {
+namespace stitch {
 
 namespace {
 
@@ -33,16 +36,14 @@ std::unique_ptr<Surface> cc_surface(const HalfedgeMesh& mesh, const KgonOptions&
   return method == Method::cc ? std::make_unique<Surface>(mesh, Method::cc, options) : nullptr;
 }
 
-/// Everything that can read the corner points or normals of `moved_faces` (faces whose vertices
-/// moved or whose loops changed), besides the seed elements of `a`, by the library's rules.
-AffectedSet expand(const HalfedgeMesh& m, std::vector<Face> moved_faces, AffectedSet a) {
-  KgonElements kgons = kgons_reading(m, std::move(moved_faces));
-  kgons.merge({std::move(a.faces), std::move(a.vertices), std::move(a.edges)});
-  a.corners = nets_reading(m, kgons);
-  a.faces = std::move(kgons.faces);
-  a.vertices = std::move(kgons.vertices);
-  a.edges = std::move(kgons.edges);
-  return a;
+SurfaceUpdateStats update_stats(size_t candidates, size_t recomputed, bool full,
+                                const Stopwatch& watch) {
+  SurfaceUpdateStats stats;
+  stats.full = full;
+  stats.candidate_patches = static_cast<int>(candidates);
+  stats.recomputed_patches = static_cast<int>(recomputed);
+  stats.milliseconds = watch.ms();
+  return stats;
 }
 
 template <class T>
@@ -52,21 +53,7 @@ void resize_to(std::vector<T>& v, int n) {
 
 }  // namespace
 
-AffectedSet affected_by(const HalfedgeMesh& m, const Change& change) {
-  AffectedSet a;
-  std::vector<Face> moved_faces;
-  if (change.kind == Change::Kind::geometry) {
-    for (Vertex v : change.moved)
-      for (Halfedge h : m.vertex_fan(v)) moved_faces.push_back(m.face(h));
-  } else if (change.kind == Change::Kind::kgons) {
-    a.faces = change.faces;
-    a.vertices = change.vertices;
-    a.edges = change.edges;
-  }
-  return expand(m, std::move(moved_faces), std::move(a));
-}
-
-std::vector<Corner> LiveSurface::corners() const {
+std::vector<Corner> IncrementalSurface::corners() const {
   std::vector<Corner> out;
   out.reserve(static_cast<size_t>(num_patches_));
   for (size_t h = 0; h < live_.size(); ++h)
@@ -74,8 +61,8 @@ std::vector<Corner> LiveSurface::corners() const {
   return out;
 }
 
-void LiveSurface::layout(int slots, const std::vector<int>& changed_slots) {
-  const int n = resolution_, per_patch = vertices_per_patch(), per_quads = quads_per_patch();
+void IncrementalSurface::layout(int slots, const std::vector<int>& changed_slots) {
+  const int per_patch = vertices_per_patch(), per_quads = quads_per_patch();
   const size_t nv = static_cast<size_t>(slots) * per_patch;
   tess_.positions.resize(nv, Vec3::Zero());
   tess_.normals.resize(nv, Vec3::Zero());
@@ -89,8 +76,7 @@ void LiveSurface::layout(int slots, const std::vector<int>& changed_slots) {
     // The same vertex and quad order as tessellate(..., welded = false); dead slots draw nothing.
     const int base = h * per_patch;
     for (int s = 0; s < per_patch; ++s) {
-      tess_.uv[base + s] = {static_cast<double>(s / (n + 1)) / n,
-                            static_cast<double>(s % (n + 1)) / n};
+      tess_.uv[base + s] = grid_.uv(s);
       tess_.patch[base + s] = live ? h : -1;
       if (!live) {
         tess_.positions[base + s] = tess_.normals[base + s] = Vec3::Zero();
@@ -98,40 +84,60 @@ void LiveSurface::layout(int slots, const std::vector<int>& changed_slots) {
       }
     }
     auto* q = &tess_.quads[static_cast<size_t>(h) * per_quads];
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        *q++ =
-            live ? std::array<int, 4>{base + i * (n + 1) + j, base + (i + 1) * (n + 1) + j,
-                                      base + (i + 1) * (n + 1) + j + 1, base + i * (n + 1) + j + 1}
-                 : std::array<int, 4>{base, base, base, base};
+    if (live)
+      grid_.quads(base, q);
+    else
+      std::fill(q, q + per_quads, std::array<int, 4>{base, base, base, base});
   }
 }
 
-void LiveSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
-  const int n = resolution_, per_patch = vertices_per_patch();
-  const BezierRule rule = method_ == Method::asc ? BezierRule::asc : BezierRule::mdc;
-  tbb::parallel_for(size_t{0}, patches.size(), [&](size_t q) {
-    const Corner c = patches[q];
-    for (int s = 0; s < per_patch; ++s) {
-      const double u = static_cast<double>(s / (n + 1)) / n,
-                   v = static_cast<double>(s % (n + 1)) / n;
-      const SurfacePoint sp = cc ? cc->evaluate(c, u, v) : evaluate_patch(nets_[c.idx], u, v, rule);
-      const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
-      tess_.positions[at] = sp.position;
-      tess_.normals[at] = sp.normal;
-      tess_.level[at] = sp.level;
+std::vector<Corner> IncrementalSurface::changed_nets(const HalfedgeMesh& mesh,
+                                                     const std::vector<Corner>& candidates) {
+  std::vector<std::uint8_t> changed(candidates.size(), 0);
+  tbb::parallel_for(size_t{0}, candidates.size(), [&](size_t q) {
+    const Corner c = candidates[q];
+    ControlNet net = build_control_net(mesh, kgons_, c);
+    if (net != nets_[c.idx]) {
+      nets_[c.idx] = net;  // each candidate's own slot: no two threads write the same one
+      changed[q] = 1;
     }
   });
+  std::vector<Corner> out;
+  for (size_t q = 0; q < candidates.size(); ++q)
+    if (changed[q]) out.push_back(candidates[q]);
+  return out;
+}
+
+void IncrementalSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
+  const int per_patch = vertices_per_patch();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, patches.size(), 16),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      // As tessellate samples: grid points from the sampler's tables, the
+                      // same numbers as evaluating each point on its own.
+                      PatchSampler sampler = cc ? PatchSampler(*cc, resolution())
+                                                : PatchSampler(method_, nets_, resolution());
+                      for (size_t q = range.begin(); q < range.end(); ++q) {
+                        const Corner c = patches[q];
+                        for (int s = 0; s < per_patch; ++s) {
+                          const SurfacePoint sp =
+                              sampler.evaluate_grid(c, grid_.row(s), grid_.column(s));
+                          const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
+                          tess_.positions[at] = sp.position;
+                          tess_.normals[at] = sp.normal;
+                          tess_.level[at] = sp.level;
+                        }
+                      }
+                    });
   recomputed_ = patches;
 }
 
-UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                 Method method, int resolution) {
-  if (resolution < 1) throw UsageError("the resolution must be at least 1");
+SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                               Method method, int resolution) {
   const Stopwatch watch;
+  PatchGrid grid(resolution);  // may refuse the resolution: nothing has changed yet
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
-  resolution_ = resolution;
+  grid_ = std::move(grid);
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
   const int slots = mesh.halfedge_capacity();
@@ -144,16 +150,17 @@ UpdateStats LiveSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& op
   tess_ = TessellatedMesh{};
   layout(slots, all);
   evaluate(corners(), cc.get());
-  UpdateStats stats;
+  SurfaceUpdateStats stats;
   stats.full = stats.layout_changed = true;
   stats.candidate_patches = stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }
 
-UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOptions& options,
-                                         const Change& change) {
-  if (change.whole) return rebuild(m, options, method_, resolution_);
+SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
+                                                       const KgonOptions& options,
+                                                       const SurfaceChange& change) {
+  if (change.whole) return rebuild(m, options, method_, resolution());
   const Stopwatch watch;
   const auto cc = cc_surface(m, options, method_);  // may refuse: nothing has changed yet
   const int nh = m.halfedge_capacity(), old_nh = static_cast<int>(live_.size());
@@ -241,7 +248,7 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   }
   for (int h = old_nh; h < nh; ++h)  // new slots born dead still need their empty quads
     if (!live_[h]) relaid.push_back(h);
-  AffectedSet a = expand(m, std::move(moved_faces), std::move(seeds));
+  AffectedSet a = affected_by(m, std::move(moved_faces), std::move(seeds));
 
   update_kgons(m, options, kgons_, a.faces, a.vertices, a.edges);
   std::vector<Corner> changed = fresh;
@@ -258,7 +265,7 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
     nets_[c.idx] = build_control_net(m, kgons_, c);
 
   layout(nh, relaid);
-  UpdateStats stats;
+  SurfaceUpdateStats stats;
   stats.layout_changed = !relaid.empty() || nh != old_nh;
   stats.candidate_patches = static_cast<int>(a.corners.size());
   if (cc) {
@@ -273,11 +280,11 @@ UpdateStats LiveSurface::update_topology(const HalfedgeMesh& m, const KgonOption
   return stats;
 }
 
-UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                const Change& change) {
-  if (change.kind == Change::Kind::topology) return update_topology(mesh, options, change);
+SurfaceUpdateStats IncrementalSurface::update(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                              const SurfaceChange& change) {
+  if (change.kind == SurfaceChange::Kind::topology) return update_topology(mesh, options, change);
   relaid_.clear();
-  if (change.kind == Change::Kind::none) {
+  if (change.kind == SurfaceChange::Kind::none) {
     recomputed_.clear();
     return {};
   }
@@ -291,62 +298,75 @@ UpdateStats LiveSurface::update(const HalfedgeMesh& mesh, const KgonOptions& opt
     update_kgons(mesh, options, kgons_, a.faces, a.vertices, a.edges);
     candidates = std::move(a.corners);
   }
-  std::vector<Corner> changed;
-  for (Corner c : candidates) {
-    ControlNet net = build_control_net(mesh, kgons_, c);
-    if (net != nets_[c.idx]) {
-      nets_[c.idx] = net;
-      changed.push_back(c);
-    }
-  }
+  std::vector<Corner> changed = changed_nets(mesh, candidates);
   std::unique_ptr<Surface> cc;
   if (method_ == Method::cc) {
     // The limit surface ignores K-gons, and OpenSubdiv rebuilds it whole after a move.
     changed.clear();
-    if (change.kind == Change::Kind::geometry) {
+    if (change.kind == SurfaceChange::Kind::geometry) {
       changed = corners();
       cc = cc_surface(mesh, options, method_);
     }
   }
   std::sort(changed.begin(), changed.end());
   evaluate(changed, cc.get());
-  UpdateStats stats;
-  stats.full = cc != nullptr;
-  stats.candidate_patches = static_cast<int>(candidates.size());
-  stats.recomputed_patches = static_cast<int>(changed.size());
-  stats.milliseconds = watch.ms();
-  return stats;
+  return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
 }
 
-UpdateStats LiveSurface::set_method(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                    Method method) {
+SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh,
+                                                        const KgonOptions& options) {
+  const auto slots = static_cast<int>(live_.size());
+  if (mesh.halfedge_capacity() != slots ||
+      mesh.face_capacity() != static_cast<int>(kgons_.face.size()) ||
+      mesh.vertex_capacity() != static_cast<int>(kgons_.vertex.size()) ||
+      mesh.edge_capacity() != static_cast<int>(kgons_.edge.size()))
+    throw UsageError(fmt::format(
+        "IncrementalSurface::update_positions: the mesh has {} half-edge, {} face, {} vertex and "
+        "{} edge slots, the surface was built for {}, {}, {} and {}: after a topology edit call "
+        "update with its SurfaceChange",
+        mesh.halfedge_capacity(), mesh.face_capacity(), mesh.vertex_capacity(),
+        mesh.edge_capacity(), slots, kgons_.face.size(), kgons_.vertex.size(), kgons_.edge.size()));
+  const Stopwatch watch;
+  const auto cc = cc_surface(mesh, options, method_);  // may refuse: nothing has changed yet
+  relaid_.clear();
+  // Everything that depends on point data, from scratch; the layout stays.
+  kgons_ = build_kgons(mesh, options);
+  const std::vector<Corner> candidates = corners();
+  std::vector<Corner> changed = changed_nets(mesh, candidates);
+  if (cc) changed = candidates;  // the limit surface ignores the nets
+  evaluate(changed, cc.get());
+  return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
+}
+
+SurfaceUpdateStats IncrementalSurface::set_method(const HalfedgeMesh& mesh,
+                                                  const KgonOptions& options, Method method) {
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   evaluate(corners(), cc.get());
-  UpdateStats stats;
+  SurfaceUpdateStats stats;
   stats.full = true;
   stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }
 
-UpdateStats LiveSurface::set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                        int resolution) {
-  if (resolution < 1) throw UsageError("the resolution must be at least 1");
+SurfaceUpdateStats IncrementalSurface::set_resolution(const HalfedgeMesh& mesh,
+                                                      const KgonOptions& options, int resolution) {
   const Stopwatch watch;
+  PatchGrid grid(resolution);
   const auto cc = cc_surface(mesh, options, method_);
-  resolution_ = resolution;
+  grid_ = std::move(grid);
   std::vector<int> all(live_.size());
   std::iota(all.begin(), all.end(), 0);
   tess_ = TessellatedMesh{};
   layout(static_cast<int>(live_.size()), all);
   evaluate(corners(), cc.get());
-  UpdateStats stats;
+  SurfaceUpdateStats stats;
   stats.full = stats.layout_changed = true;
   stats.recomputed_patches = num_patches_;
   stats.milliseconds = watch.ms();
   return stats;
 }
 
-}  // namespace stitch::modeler
+}  // namespace stitch

@@ -1,0 +1,121 @@
+// A smooth surface kept up to date incrementally as its mesh is edited, for any client that
+// edits a mesh and wants the surface after each edit: the modeler (Session), a script, an
+// animation loop. The client describes each edit as a SurfaceChange (surface_change.hpp).
+//
+// After an edit only the K-gons that can depend on it are rebuilt (update_kgons), then the
+// control nets of the corners that use those K-gons; a patch is re-evaluated only when its net
+// actually changed.
+//
+// Layout: the tessellation is unwelded with one vertex block per patch *slot*, and slot = the
+// corner's half-edge index, so the blocks of untouched patches stay where they are when a
+// topology edit adds or removes elements (the operators keep the numbers of untouched elements).
+// Every block is laid out by the same PatchGrid as tessellate(..., welded = false). A slot whose
+// half-edge is deleted keeps its place with degenerate quads (nothing is drawn) and patch = -1.
+// The live blocks, in corner order, are exactly tessellate(..., welded = false).
+// A renderer re-uploads just the blocks of recomputed() patches and relaid() slots, also after
+// a topology edit that adds or removes slots (the modeler's Renderer::update_surface_blocks).
+//
+// A topology edit comes with the elements it touched (the mesh's journal, topology_change):
+// those seed the same local update as a vertex move, so its cost follows the size of the edit,
+// not of the mesh. Rebuilt in full (documented in docs/modeler.md): remeshings and replaced
+// meshes (whole_change), a change of the global K-gon control (it reaches every extraordinary
+// K-gon; nets are still compared so only changed patches are re-evaluated), method and
+// resolution changes, and every change for the Catmull-Clark method, whose OpenSubdiv limit
+// surface is built for the whole mesh.
+//
+// Topology apart from point data (as OpenSubdiv's Bfr separates them): the slots, which of them
+// hold a patch, every block's (u, v), patch id and quads depend on the connectivity and the
+// resolution alone. update_positions is the path for "every vertex may have moved, the
+// connectivity did not" (a deforming animation): it keeps all of that and recomputes only the
+// K-gons, the nets and the samples of the patches whose nets changed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "stitch/eval/surface.hpp"
+#include "stitch/tess/patch_grid.hpp"
+#include "stitch/tess/surface_change.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
+
+namespace stitch {
+
+struct SurfaceUpdateStats {
+  bool full = false;            ///< everything was re-evaluated
+  bool layout_changed = false;  ///< slots were added, removed, revived or killed (see relaid())
+  int candidate_patches = 0;    ///< nets rebuilt and compared
+  int recomputed_patches = 0;   ///< patches re-evaluated
+  double milliseconds = 0.0;    ///< wall time of the update
+};
+
+class IncrementalSurface {
+ public:
+  IncrementalSurface() = default;
+  /// Builds everything from scratch.
+  SurfaceUpdateStats rebuild(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
+                             int resolution);
+  /// Brings the surface up to date with `mesh` and `options` after `change`. The functions that
+  /// can fail (cc on a mesh OpenSubdiv refuses) throw stitch::Error before changing anything.
+  SurfaceUpdateStats update(const HalfedgeMesh& mesh, const KgonOptions& options,
+                            const SurfaceChange& change);
+  /// Brings the surface up to date after any of the mesh's vertices moved (and the K-gon
+  /// controls possibly changed) while its connectivity, holes and tags stayed as they were at
+  /// the last rebuild or update: the layout (slots, uv, patch ids, quads) is kept, relaid() is
+  /// empty. Throws UsageError when the mesh's element capacities differ from the surface's (a
+  /// sign of a topology edit, which needs update with its SurfaceChange); other topology edits
+  /// cannot be detected cheaply and give a wrong surface.
+  SurfaceUpdateStats update_positions(const HalfedgeMesh& mesh, const KgonOptions& options);
+  SurfaceUpdateStats set_method(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                Method method);
+  SurfaceUpdateStats set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                    int resolution);
+
+  [[nodiscard]] Method method() const { return method_; }
+  [[nodiscard]] int resolution() const { return grid_.resolution(); }
+  /// The sample layout of every block.
+  [[nodiscard]] const PatchGrid& grid() const { return grid_; }
+  [[nodiscard]] const KgonSet& kgons() const { return kgons_; }
+  /// Indexed by corner (half-edge); empty nets for deleted half-edges.
+  [[nodiscard]] const std::vector<ControlNet>& nets() const { return nets_; }
+  /// The live corners in index order (a pass over every slot).
+  [[nodiscard]] std::vector<Corner> corners() const;
+  /// How many patches there are (live corners).
+  [[nodiscard]] int num_patches() const { return num_patches_; }
+  /// One block per half-edge slot (see above).
+  [[nodiscard]] const TessellatedMesh& tessellation() const { return tess_; }
+  /// The corners whose patches the last update re-evaluated, in increasing order (every live
+  /// corner after a full rebuild).
+  [[nodiscard]] const std::vector<Corner>& recomputed() const { return recomputed_; }
+  /// The slots the last update laid out again (a patch appeared or went; every slot after a
+  /// full rebuild). With recomputed(), the blocks a renderer must upload again
+  /// (the modeler's Renderer::update_surface_blocks).
+  [[nodiscard]] const std::vector<int>& relaid() const { return relaid_; }
+  /// Corner c's block is [c.idx * vertices_per_patch(), (c.idx + 1) * vertices_per_patch()),
+  /// its quads [c.idx * quads_per_patch(), ...).
+  [[nodiscard]] int vertices_per_patch() const { return grid_.num_samples(); }
+  [[nodiscard]] int quads_per_patch() const { return grid_.num_quads(); }
+
+ private:
+  /// Evaluates the listed corners' patches into their blocks; `cc` is the Catmull-Clark surface
+  /// when that is the method.
+  void evaluate(const std::vector<Corner>& patches, const Surface* cc);
+  /// Rebuilds the nets of `candidates` and returns those whose net changed.
+  std::vector<Corner> changed_nets(const HalfedgeMesh& mesh, const std::vector<Corner>& candidates);
+  /// Sizes the blocks to `slots` and sets uv, patch and quads of the listed slots from live_.
+  void layout(int slots, const std::vector<int>& changed_slots);
+  SurfaceUpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                     const SurfaceChange& change);
+
+  Method method_ = Method::mdc;
+  PatchGrid grid_{8};
+  KgonSet kgons_;
+  std::vector<ControlNet> nets_;
+  std::vector<std::uint8_t> live_;  ///< per slot (half-edge): has a patch
+  int num_patches_ = 0;
+  TessellatedMesh tess_;
+  std::vector<Corner> recomputed_;
+  std::vector<int> relaid_;
+};
+
+}  // namespace stitch
