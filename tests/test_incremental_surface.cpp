@@ -5,6 +5,7 @@
 // applying the delta backwards, as the modeler's Document does).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -337,6 +338,30 @@ TEST(PatchGrid, LaysOutTheSamplesAndQuadsOfOneBlock) {
   grid.quads(16, quads.data());
   EXPECT_EQ(quads[5], (std::array<int, 4>{22, 26, 27, 23}));
   EXPECT_THROW(PatchGrid(0), UsageError);
+}
+
+// The first topology edit after a rebuild finds room in the surface's arrays: it writes its new
+// slots in place instead of moving every sample (which took 400 ms at 10k faces). Tested through
+// the arrays' addresses, which move exactly when a vector reallocates.
+TEST(IncrementalSurface, FirstTopologyEditsFindRoomInTheArrays) {
+  JournaledMesh m{make_torus(10, 8), {}};
+  IncrementalSurface live;
+  live.rebuild(m.mesh, {}, Method::mdc, 4);
+  const Vec3* positions = live.tessellation().positions.data();
+  const std::array<int, 4>* quads = live.tessellation().quads.data();
+  const int slots = m.mesh.halfedge_capacity();
+  // Subdividing edges adds two slots each: 20 edits stay well inside the room for half as many
+  // slots again (slot_capacity_for).
+  for (int k = 0; k < 20; ++k) {
+    const auto change = m.apply("subdivide-edge " + edge_name(m.mesh, Edge(3 * k)));
+    ASSERT_TRUE(change) << "edit " << k;
+    live.update(m.mesh, {}, *change);
+  }
+  ASSERT_GT(m.mesh.halfedge_capacity(), slots);
+  ASSERT_LE(m.mesh.halfedge_capacity(), slot_capacity_for(slots));
+  EXPECT_EQ(live.tessellation().positions.data(), positions);
+  EXPECT_EQ(live.tessellation().quads.data(), quads);
+  expect_same_as_rebuild(live, m.mesh, {});
 }
 
 }  // namespace

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "shaders.hpp"
-#include "stitch/render/gl_context.hpp"
-
 #include "stitch/error.hpp"
+#include "stitch/render/gl_context.hpp"
+#include "stitch/tess/incremental_surface.hpp"
 
 namespace stitch {
 
@@ -158,7 +158,7 @@ ShadingMode parse_shading_mode(const std::string& name) {
     if (name == kModeNames[i]) return static_cast<ShadingMode>(i);
   }
   throw UsageError("unknown mode '" + name +
-                              "' (expected shaded, zebra, isophote, levels, patches or checker)");
+                   "' (expected shaded, zebra, isophote, levels, patches or checker)");
 }
 
 std::string to_string(ShadingMode mode) {
@@ -322,9 +322,9 @@ void Renderer::set_block_surface(const TessellatedMesh& s, int vertices_per_bloc
         "quads",
         s.num_vertices(), s.quads.size(), vertices_per_block, quads_per_block));
   const int blocks = s.num_vertices() / vertices_per_block;
-  // Room for half as many blocks again: growing past it re-uploads everything, so over a
-  // session that cost is spread thin, as for a std::vector.
-  const int capacity = blocks + blocks / 2 + 16;
+  // Room for as many blocks as the incremental surface keeps room for: growing past it
+  // re-uploads everything, so over a session that cost is spread thin, as for a std::vector.
+  const int capacity = slot_capacity_for(blocks);
   const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
   const std::vector<std::uint32_t> indices = quad_triangles(s, 0, static_cast<int>(s.quads.size()));
   Buffer& b = impl_->surface;

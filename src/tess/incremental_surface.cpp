@@ -131,6 +131,32 @@ void IncrementalSurface::evaluate(const std::vector<Corner>& patches, const Surf
   recomputed_ = patches;
 }
 
+void IncrementalSurface::reserve_room(const HalfedgeMesh& mesh) {
+  const auto room = [](int n) { return static_cast<size_t>(slot_capacity_for(n)); };
+  const size_t halfedges = room(mesh.halfedge_capacity());
+  for (auto* v : {&kgons_.in_face, &kgons_.in_vertex, &kgons_.in_next_edge, &kgons_.in_prev_edge,
+                  &kgons_.vertex_k})
+    v->reserve(halfedges);
+  kgons_.corner_point.reserve(halfedges);
+  if (!kgons_.sharp_curve.empty()) kgons_.sharp_curve.reserve(halfedges);
+  if (!kgons_.cone.empty()) kgons_.cone.reserve(halfedges);
+  if (!kgons_.sharp_edge.empty()) kgons_.sharp_edge.reserve(room(mesh.edge_capacity()));
+  kgons_.face.reserve(room(mesh.face_capacity()));
+  kgons_.vertex.reserve(room(mesh.vertex_capacity()));
+  kgons_.edge.reserve(room(mesh.edge_capacity()));
+  nets_.reserve(halfedges);
+  live_.reserve(halfedges);
+  // A fresh tessellation: reserve on a smaller one would keep its old, smaller room.
+  tess_ = TessellatedMesh{};
+  const size_t samples = halfedges * static_cast<size_t>(vertices_per_patch());
+  tess_.positions.reserve(samples);
+  tess_.normals.reserve(samples);
+  tess_.uv.reserve(samples);
+  tess_.patch.reserve(samples);
+  tess_.level.reserve(samples);
+  tess_.quads.reserve(halfedges * static_cast<size_t>(quads_per_patch()));
+}
+
 SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
                                                Method method, int resolution) {
   const Stopwatch watch;
@@ -141,13 +167,13 @@ SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const K
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
   const int slots = mesh.halfedge_capacity();
+  reserve_room(mesh);
   live_.assign(static_cast<size_t>(slots), 0);
   const std::vector<Corner> patch_corners = mesh.patch_corners();
   for (Corner c : patch_corners) live_[c.idx] = 1;
   num_patches_ = static_cast<int>(patch_corners.size());
   std::vector<int> all(static_cast<size_t>(slots));
   std::iota(all.begin(), all.end(), 0);
-  tess_ = TessellatedMesh{};
   layout(slots, all);
   evaluate(corners(), cc.get());
   SurfaceUpdateStats stats;
