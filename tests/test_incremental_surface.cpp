@@ -324,6 +324,22 @@ TEST(IncrementalSurface, UpdatePositionsRefusesAMeshWhoseTopologyChanged) {
   EXPECT_TRUE(live.tessellation().positions == before);  // nothing changed
 }
 
+// A resolution change lays every block out again: it keeps room as a rebuild does.
+TEST(IncrementalSurface, TopologyEditsAfterAResolutionChangeFindRoomToo) {
+  JournaledMesh m{make_torus(10, 8), {}};
+  IncrementalSurface live;
+  live.rebuild(m.mesh, {}, Method::mdc, 4);
+  live.set_resolution(m.mesh, {}, 5);
+  const Vec3* positions = live.tessellation().positions.data();
+  for (int k = 0; k < 10; ++k) {
+    const auto change = m.apply("subdivide-edge " + edge_name(m.mesh, Edge(3 * k)));
+    ASSERT_TRUE(change) << "edit " << k;
+    live.update(m.mesh, {}, *change);
+  }
+  EXPECT_EQ(live.tessellation().positions.data(), positions);
+  expect_same_as_rebuild(live, m.mesh, {});
+}
+
 TEST(PatchGrid, LaysOutTheSamplesAndQuadsOfOneBlock) {
   const PatchGrid grid(3);
   EXPECT_EQ(grid.num_samples(), 16);

@@ -146,8 +146,13 @@ void IncrementalSurface::reserve_room(const HalfedgeMesh& mesh) {
   kgons_.edge.reserve(room(mesh.edge_capacity()));
   nets_.reserve(halfedges);
   live_.reserve(halfedges);
-  // A fresh tessellation: reserve on a smaller one would keep its old, smaller room.
+  fresh_tessellation(static_cast<int>(halfedges));
+}
+
+void IncrementalSurface::fresh_tessellation(int room_slots) {
+  // A fresh one: reserve on a smaller one would keep its old, smaller room.
   tess_ = TessellatedMesh{};
+  const auto halfedges = static_cast<size_t>(room_slots);
   const size_t samples = halfedges * static_cast<size_t>(vertices_per_patch());
   tess_.positions.reserve(samples);
   tess_.normals.reserve(samples);
@@ -176,10 +181,8 @@ SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const K
   std::iota(all.begin(), all.end(), 0);
   layout(slots, all);
   evaluate(corners(), cc.get());
-  SurfaceUpdateStats stats;
-  stats.full = stats.layout_changed = true;
-  stats.candidate_patches = stats.recomputed_patches = num_patches_;
-  stats.milliseconds = watch.ms();
+  SurfaceUpdateStats stats = update_stats(num_patches_, num_patches_, true, watch);
+  stats.layout_changed = true;
   return stats;
 }
 
@@ -291,18 +294,15 @@ SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
     nets_[c.idx] = build_control_net(m, kgons_, c);
 
   layout(nh, relaid);
-  SurfaceUpdateStats stats;
-  stats.layout_changed = !relaid.empty() || nh != old_nh;
-  stats.candidate_patches = static_cast<int>(a.corners.size());
   if (cc) {
-    stats.full = true;
     evaluate(corners(), cc.get());
   } else {
     sort_unique(changed);
     evaluate(changed, nullptr);
   }
-  stats.recomputed_patches = static_cast<int>(recomputed_.size());
-  stats.milliseconds = watch.ms();
+  SurfaceUpdateStats stats =
+      update_stats(a.corners.size(), recomputed_.size(), cc != nullptr, watch);
+  stats.layout_changed = !relaid.empty() || nh != old_nh;
   return stats;
 }
 
@@ -370,11 +370,7 @@ SurfaceUpdateStats IncrementalSurface::set_method(const HalfedgeMesh& mesh,
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   evaluate(corners(), cc.get());
-  SurfaceUpdateStats stats;
-  stats.full = true;
-  stats.recomputed_patches = num_patches_;
-  stats.milliseconds = watch.ms();
-  return stats;
+  return update_stats(0, num_patches_, true, watch);
 }
 
 SurfaceUpdateStats IncrementalSurface::set_resolution(const HalfedgeMesh& mesh,
@@ -385,13 +381,12 @@ SurfaceUpdateStats IncrementalSurface::set_resolution(const HalfedgeMesh& mesh,
   grid_ = std::move(grid);
   std::vector<int> all(live_.size());
   std::iota(all.begin(), all.end(), 0);
-  tess_ = TessellatedMesh{};
+  // Room as after a rebuild, so the next topology edit does not move every sample either.
+  fresh_tessellation(slot_capacity_for(static_cast<int>(live_.size())));
   layout(static_cast<int>(live_.size()), all);
   evaluate(corners(), cc.get());
-  SurfaceUpdateStats stats;
-  stats.full = stats.layout_changed = true;
-  stats.recomputed_patches = num_patches_;
-  stats.milliseconds = watch.ms();
+  SurfaceUpdateStats stats = update_stats(0, num_patches_, true, watch);
+  stats.layout_changed = true;
   return stats;
 }
 

@@ -113,6 +113,8 @@ class IncrementalSurface {
   /// Allocates room for slot_capacity_for(...) of every element kind (after the K-gons and nets
   /// of a rebuild, before the layout).
   void reserve_room(const HalfedgeMesh& mesh);
+  /// An empty tessellation with room for `room_slots` blocks at the current resolution.
+  void fresh_tessellation(int room_slots);
   /// Sizes the blocks to `slots` and sets uv, patch and quads of the listed slots from live_.
   void layout(int slots, const std::vector<int>& changed_slots);
   SurfaceUpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options,
