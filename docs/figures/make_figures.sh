@@ -103,6 +103,12 @@ run edit $C --op "insert-edge 3@1 5@3" -o $F/bent_insert_edge.obj
 run edit $C --op "connect-faces 1 3 auto 3" -o $F/bent_handle.obj
 run render $F/bent_insert_edge.obj -o $F/bent_insert_edge.png --size 400x400 --eye 2.5,-4,-3 --resolution 16
 run render $F/bent_handle.obj -o $F/bent_handle.png --size 400x400 --eye 2.5,-4,-3 --resolution 16 --show mesh
+# A bent tunnel by one inserted edge between two faces of the icosahedron that share no vertex
+# (the bent-tube placement), seen into each opening.
+run primitive icosahedron -o $F/icosahedron.obj
+run edit $F/icosahedron.obj --op "insert-edge 12@1 7@9" -o $F/bent_icosahedron.obj
+run render $F/bent_icosahedron.obj -o $F/bent_icosahedron_1.png --size 400x400 --eye -5,5,5 --target 0,0,0 --resolution 16 --show mesh
+run render $F/bent_icosahedron.obj -o $F/bent_icosahedron_9.png --size 400x400 --eye -2,1.5,-6 --target 0,0,0 --resolution 16 --show mesh
 
 if ((${#failed[@]})); then
   echo "make_figures.sh: these commands failed:" >&2

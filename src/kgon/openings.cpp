@@ -93,22 +93,34 @@ struct Tube {
   [[nodiscard]] Vec3 normal(double angle) const { return hole ? -radial(angle) : radial(angle); }
 };
 
+/// An opening's rim: its vertices' positions, the bridge vertex once.
+std::vector<Vec3> rim_points(const HalfedgeMesh& m, const std::vector<Corner>& corners) {
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i + 1 < corners.size(); ++i) pts.push_back(m.position(m.origin(corners[i])));
+  return pts;
+}
+
+/// The openings (rim normals normal_a, normal_b; `across` from the first to the second) face
+/// away from each other around a hole through the solid (the surface's outside is the tube's
+/// inside): true; towards each other across a handle joining two solids: false; else nothing.
+std::optional<bool> hole_between(const Vec3& normal_a, const Vec3& normal_b, const Vec3& across) {
+  const double sa = normal_a.dot(across), sb = normal_b.dot(across);
+  if (sa < 0 && sb > 0) return true;
+  if (sa > 0 && sb < 0) return false;
+  return std::nullopt;
+}
+
 std::optional<Tube> tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
-  auto rim = [&](const std::vector<Corner>& cs) {
-    std::vector<Vec3> pts;
-    for (size_t i = 0; i + 1 < cs.size(); ++i) pts.push_back(m.position(m.origin(cs[i])));
-    return pts;
-  };
-  const auto rim_a = rim(o.first), rim_b = rim(o.second);
+  const auto rim_a = rim_points(m, o.first), rim_b = rim_points(m, o.second);
   Tube t;
   t.base = centroid(rim_a);
   const Vec3 across = centroid(rim_b) - t.base;
   t.length = across.norm();
   if (!(t.length > 0)) return std::nullopt;
   t.axis = across / t.length;
-  const double sa = newell_normal(rim_a).dot(across), sb = newell_normal(rim_b).dot(across);
-  if (!((sa < 0 && sb > 0) || (sa > 0 && sb < 0))) return std::nullopt;
-  t.hole = sa < 0;
+  const auto hole = hole_between(newell_normal(rim_a), newell_normal(rim_b), across);
+  if (!hole) return std::nullopt;
+  t.hole = *hole;
   const Vec3 a = m.position(m.origin(o.first.front())) - t.base;
   const Vec3 ra = a - a.dot(t.axis) * t.axis;
   if (!(ra.norm() > 1e-9 * t.length)) return std::nullopt;
@@ -121,10 +133,6 @@ std::optional<Tube> tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
 
 /// A twist smaller than this is no twist: the bridge runs along the wall.
 constexpr double kNoTwist = 1e-6;
-
-}  // namespace
-
-namespace {
 
 /// A regular K-gon over the face's loop in the plane (centre; e1, e2), e1 pointing from the
 /// first opening towards the second, turned so that the middle of the first opening's corners
@@ -178,10 +186,6 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   return regular_tube_kgon(loop, openings, centre, normal, e1, normal.cross(e1), corner_point);
 }
 
-}  // namespace
-
-namespace {
-
 /// The helix a twisted tube's bridge stands for: from the first rim's bridge vertex (angle 0)
 /// to the second's (angle twist), at the mean radius and heights of the bridge's corner points.
 struct Helix {
@@ -222,6 +226,189 @@ std::optional<Helix> helix_of(const HalfedgeMesh& m, const Tube& tube, const Two
   return helix;
 }
 
+/// The edge K-gon of a bridge that turns around a tube, as a quad in the wall's tangent plane at
+/// `centre`, the middle of the curve the bridge stands for (`along` its direction there, `length`
+/// its length; `normal` the wall's normal there and `normal_a`, `normal_b` at the bridge's ends;
+/// a = the bridge's vertex on the first rim).
+Kgon wall_quad(const HalfedgeMesh& m, const std::vector<Corner>& corners, Vertex a,
+               const Vec3& centre, const Vec3& along, const Vec3& normal, const Vec3& normal_a,
+               const Vec3& normal_b, double length, double twist,
+               const std::vector<Vec3>& corner_point) {
+  const Vec3 across = normal.cross(along);
+  // Section 2 shrinks the edge's quad of corner points to half its size: its K-gon points sit a
+  // quarter of the edge's length from the middle and a quarter of the corner points' spacing to
+  // the side; the curve's length and that spacing give the quad here. Along a curve that turns,
+  // the straight tangent at the middle leaves the wall, and the curve over the bridge overshoots
+  // it: from a half twist of a cube on, a quarter of the helix folds the tube near the bridge's
+  // ends (measured: at most 0.3 of a quarter is clean there, 0.35 folds). The reach shrinks from
+  // section 2's quarter at no twist to a fifth of it at a half twist.
+  const double reach = 1 - 0.8 * std::abs(twist) / std::numbers::pi;
+  double width = 0;
+  for (int i = 0; i < 4; i += 2)
+    width += (corner_point[corners[i].idx] - corner_point[corners[i + 1].idx]).norm() / 2;
+  Kgon g;
+  g.corners = corners;
+  g.centroid = centre;
+  g.normal = normal;
+  for (Corner c : corners) {
+    const bool at_a = m.origin(c) == a;
+    // The side of the bridge the corner's face region lies on: its corner point against the
+    // other corner point at the same end.
+    Corner other = c;
+    for (Corner d : corners)
+      if (d != c && m.origin(d) == m.origin(c)) other = d;
+    const double side = (corner_point[c.idx] - corner_point[other.idx])
+                                    .dot((at_a ? normal_a : normal_b).cross(along)) >= 0
+                            ? 1.0
+                            : -1.0;
+    g.points.push_back(centre + (at_a ? -0.25 : 0.25) * reach * length * along +
+                       side * 0.25 * width * across);
+  }
+  return g;
+}
+
+/// A bent tunnel: the tube between two openings that face different ways (two faces that share
+/// no vertex and are not opposite each other) modelled as a section of a torus. Its centre line is
+/// the circular arc that leaves the first rim's centroid along that opening's direction into the
+/// tube and reaches the second rim's centroid along the second's, turning by `bend` in the plane of
+/// the two directions. Positions on the wall are (sigma, angle, radius): sigma in [0, 1] along the
+/// arc, the angle around the arc in the frame (outward from the bend's centre, -k), the distance
+/// from the arc. A straight tube is the cylinder above.
+struct BentTube {
+  Vec3 centre = Vec3::Zero();  ///< of the bend
+  Vec3 d = Vec3::UnitZ();      ///< the arc's direction at the first rim
+  Vec3 m = Vec3::UnitX();      ///< from the first rim's centroid towards the bend's centre
+  Vec3 k = Vec3::UnitY();      ///< the bend's axis
+  double bend_radius = 1, bend = 0;
+  bool hole = true;
+  double angle_a = 0, twist = 0;  ///< the first bridge vertex's angle; the bridge's turn
+
+  [[nodiscard]] double arc(double sigma) const { return sigma * bend; }
+  [[nodiscard]] Vec3 outward(double sigma) const {
+    return -std::cos(arc(sigma)) * m + std::sin(arc(sigma)) * d;
+  }
+  [[nodiscard]] Vec3 tangent(double sigma) const {
+    return std::sin(arc(sigma)) * m + std::cos(arc(sigma)) * d;
+  }
+  [[nodiscard]] Vec3 line(double sigma) const { return centre + bend_radius * outward(sigma); }
+  [[nodiscard]] Vec3 radial(double sigma, double angle) const {
+    return std::cos(angle) * outward(sigma) - std::sin(angle) * k;
+  }
+  [[nodiscard]] Vec3 wall(double sigma, double angle, double radius) const {
+    return line(sigma) + radius * radial(sigma, angle);
+  }
+  [[nodiscard]] Vec3 normal(double sigma, double angle) const {
+    return hole ? -radial(sigma, angle) : radial(sigma, angle);
+  }
+  struct Coords {
+    double sigma = 0, angle = 0, radius = 0;
+  };
+  [[nodiscard]] Coords coords(const Vec3& p) const {
+    const Vec3 q = p - centre;
+    Coords c;
+    c.sigma = std::atan2(q.dot(d), -q.dot(m)) / bend;
+    const Vec3 r = p - line(c.sigma);
+    const Vec3 across = r - r.dot(tangent(c.sigma)) * tangent(c.sigma);
+    c.radius = across.norm();
+    c.angle = std::atan2(-across.dot(k), across.dot(outward(c.sigma)));
+    return c;
+  }
+};
+
+/// Bends below this (radians) are straight tubes.
+constexpr double kNoBend = 1e-3;
+
+/// The bent tube between the two openings, or nothing when they face straight away from (or
+/// towards) each other, or no arc leaving each rim along its direction comes close to joining
+/// the rims' centroids.
+std::optional<BentTube> bent_tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
+  const auto rim_a = rim_points(m, o.first), rim_b = rim_points(m, o.second);
+  const Vec3 ca = centroid(rim_a), cb = centroid(rim_b), across = cb - ca;
+  const double length = across.norm();
+  if (!(length > 0)) return std::nullopt;
+  const Vec3 na = newell_normal(rim_a).normalized(), nb = newell_normal(rim_b).normalized();
+  const auto hole = hole_between(na, nb, across);
+  if (!hole) return std::nullopt;
+  BentTube t;
+  t.hole = *hole;
+  // Into the tube at the first opening, out of it at the second.
+  const Vec3 da = t.hole ? -na : na, db = t.hole ? nb : -nb;
+  t.bend = std::atan2(da.cross(db).norm(), da.dot(db));
+  if (!(t.bend > kNoBend)) return std::nullopt;
+  t.d = da;
+  t.k = da.cross(db).normalized();
+  t.m = t.k.cross(da);
+  // The arc's end relative to its start, per unit bend radius; the radius that brings it
+  // closest to the second centroid.
+  const Vec3 w = (1 - std::cos(t.bend)) * t.m + std::sin(t.bend) * t.d;
+  t.bend_radius = across.dot(w) / w.squaredNorm();
+  if (!(t.bend_radius > 0) || (t.bend_radius * w - across).norm() > 0.25 * length)
+    return std::nullopt;
+  t.centre = ca + t.bend_radius * t.m;
+  const auto ends_at = [&](Corner c) { return t.coords(m.position(m.origin(c))); };
+  const auto a = ends_at(o.first.front()), b = ends_at(o.second.front());
+  if (!(a.radius > 1e-9 * length) || !(b.radius > 1e-9 * length)) return std::nullopt;
+  t.angle_a = a.angle;
+  t.twist = std::remainder(b.angle - a.angle, 2 * std::numbers::pi);
+  return t;
+}
+
+/// The face K-gon of a bent tube that twists: as on a twisted cylinder, a regular K-gon on the
+/// wall opposite the middle of the bridge, halfway along the arc, in the wall's tangent plane.
+Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
+                        const TwoOpenings& openings, const std::vector<Vec3>& corner_point) {
+  const auto loop = m.face_loop(f);
+  double radius = 0, sigma_a = 0, sigma_b = 0;
+  for (Corner c : loop)
+    radius += tube.coords(corner_point[c.idx]).radius / static_cast<double>(loop.size());
+  for (Corner c : openings.first)
+    sigma_a += tube.coords(corner_point[c.idx]).sigma / static_cast<double>(openings.first.size());
+  for (Corner c : openings.second)
+    sigma_b += tube.coords(corner_point[c.idx]).sigma / static_cast<double>(openings.second.size());
+  const double sigma = (sigma_a + sigma_b) / 2;
+  const double angle = tube.angle_a + tube.twist / 2 + std::numbers::pi;
+  const Vec3 centre = tube.wall(sigma, angle, radius);
+  const Vec3 normal = tube.normal(sigma, angle);
+  const Vec3 e1 = tube.tangent(sigma);
+  return regular_tube_kgon(loop, openings, centre, normal, e1, normal.cross(e1), corner_point);
+}
+
+/// The bridge's edge K-gon on a bent tube that twists: the quad of the twisted cylinder, at the
+/// middle of the curve that runs around the wall from one bridge end to the other.
+std::optional<Kgon> place_bridge_on_bent_tube(const HalfedgeMesh& m, const BentTube& tube,
+                                              const TwoOpenings& openings,
+                                              const std::vector<Corner>& corners,
+                                              const std::vector<Vec3>& corner_point) {
+  const Vertex a = m.origin(openings.first.front());
+  double radius = 0, sigma_a = 0, sigma_b = 0;
+  int na = 0, nb = 0;
+  for (Corner c : corners) {
+    const auto p = tube.coords(corner_point[c.idx]);
+    radius += p.radius / static_cast<double>(corners.size());
+    if (m.origin(c) == a) {
+      sigma_a += p.sigma / 2;
+      ++na;
+    } else {
+      sigma_b += p.sigma / 2;
+      ++nb;
+    }
+  }
+  if (na != 2 || nb != 2) return std::nullopt;
+  const auto curve = [&](double t) {
+    return tube.wall(sigma_a + t * (sigma_b - sigma_a), tube.angle_a + t * tube.twist, radius);
+  };
+  constexpr int kSteps = 64;
+  double length = 0;
+  for (int i = 0; i < kSteps; ++i)
+    length += (curve((i + 1.0) / kSteps) - curve(static_cast<double>(i) / kSteps)).norm();
+  const Vec3 centre = curve(0.5);
+  const Vec3 along = (curve(0.5 + 0.5 / kSteps) - curve(0.5 - 0.5 / kSteps)).normalized();
+  const double sigma = (sigma_a + sigma_b) / 2, angle = tube.angle_a + tube.twist / 2;
+  const Vec3 normal = tube.normal(sigma, angle);
+  return wall_quad(m, corners, a, centre, along, normal, tube.normal(0, tube.angle_a),
+                   tube.normal(1, tube.angle_a + tube.twist), length, tube.twist, corner_point);
+}
+
 }  // namespace
 
 std::vector<Corner> edge_kgon_corners(const HalfedgeMesh& m, Edge e) {
@@ -235,6 +422,8 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
                                       const TwoOpenings& openings,
                                       const std::vector<Corner>& corners,
                                       const std::vector<Vec3>& corner_point) {
+  if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
+    return place_bridge_on_bent_tube(m, *bent, openings, corners, corner_point);
   const auto tube = tube_of(m, openings);
   if (!tube || std::abs(tube->twist) < kNoTwist) return std::nullopt;
   // The K-gon sits at the middle of the helix.
@@ -243,54 +432,20 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
   const Vertex a = m.origin(openings.first.front());
   const double angle = tube->twist / 2, height = (helix->height_a + helix->height_b) / 2;
   const Vec3 centre = tube->wall(angle, height, helix->radius);
-  // The helix's direction there, and the wall's direction across it.
-  const Vec3 along = helix->direction(*tube, angle).normalized();
-  const double length = helix->length(*tube);
-  const Vec3 across = tube->normal(angle).cross(along);
-  // Section 2 shrinks the edge's quad of corner points to half its size: its K-gon points sit a
-  // quarter of the edge's length from the middle and a quarter of the corner points' spacing to
-  // the side; the helix's length and that spacing give the quad here. Along a helix that turns, the
-  // straight tangent at the middle leaves the wall, and the curve over the bridge overshoots it:
-  // from a half twist of a cube on, a quarter of the helix folds the tube near the bridge's ends
-  // (measured: at most 0.3 of a quarter is clean there, 0.35 folds). The reach shrinks from
-  // section 2's quarter at no twist to a fifth of it at a half twist.
-  const double reach = 1 - 0.8 * std::abs(tube->twist) / std::numbers::pi;
-  double width = 0;
-  for (int i = 0; i < 4; i += 2)
-    width += (corner_point[corners[i].idx] - corner_point[corners[i + 1].idx]).norm() / 2;
-  Kgon g;
-  g.corners = corners;
-  g.centroid = centre;
-  g.normal = tube->normal(angle);
-  for (Corner c : corners) {
-    const bool at_a = m.origin(c) == a;
-    // The side of the bridge the corner's face region lies on: its corner point against the
-    // other corner point at the same end.
-    Corner other = c;
-    for (Corner d : corners)
-      if (d != c && m.origin(d) == m.origin(c)) other = d;
-    const double side = (corner_point[c.idx] - corner_point[other.idx])
-                                    .dot(tube->normal(at_a ? 0.0 : tube->twist).cross(along)) >= 0
-                            ? 1.0
-                            : -1.0;
-    g.points.push_back(centre + (at_a ? -0.25 : 0.25) * reach * length * along +
-                       side * 0.25 * width * across);
-  }
-  return g;
+  return wall_quad(m, corners, a, centre, helix->direction(*tube, angle).normalized(),
+                   tube->normal(angle), tube->normal(0.0), tube->normal(tube->twist),
+                   helix->length(*tube), tube->twist, corner_point);
 }
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point) {
+  if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
+    return place_on_bent_tube(m, f, *bent, openings, corner_point);
   if (const auto tube = tube_of(m, openings); tube && std::abs(tube->twist) >= kNoTwist)
     return place_on_twisted_tube(m, f, *tube, openings, corner_point);
   auto points_of = [&](const std::vector<Corner>& cs) {
     std::vector<Vec3> pts;
     for (Corner c : cs) pts.push_back(corner_point[c.idx]);
-    return pts;
-  };
-  auto rim_of = [&](const std::vector<Corner>& cs) {
-    std::vector<Vec3> pts;
-    for (Corner c : cs) pts.push_back(m.position(m.origin(c)));
     return pts;
   };
   const auto chain_a = points_of(openings.first), chain_b = points_of(openings.second);
@@ -301,12 +456,10 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   const Vec3 axis = far_b->point - far_a->point;
   const Vec3 across = centroid(chain_b) - centroid(chain_a);
   const Vec3 middle = (centroid(chain_a) + centroid(chain_b)) / 2;
-  // The openings face away from each other around a hole through the solid (the surface's
-  // outside is the tube's inside) and towards each other across a handle joining two solids.
-  const double sa = newell_normal(rim_of(openings.first)).dot(across);
-  const double sb = newell_normal(rim_of(openings.second)).dot(across);
-  const bool hole = sa < 0 && sb > 0, handle = sa > 0 && sb < 0;
-  if (!hole && !handle) return std::nullopt;
+  const auto facing = hole_between(newell_normal(rim_points(m, openings.first)),
+                                   newell_normal(rim_points(m, openings.second)), across);
+  if (!facing) return std::nullopt;
+  const bool hole = *facing;
 
   // The rims run around the tube in opposite senses, so their difference is the wall's
   // direction around the tube at the far points.
