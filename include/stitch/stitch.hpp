@@ -11,6 +11,7 @@
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/mesh/validate.hpp"
 
