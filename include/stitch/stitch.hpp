@@ -29,6 +29,7 @@
 
 // K-gons and control nets
 #include "stitch/kgon/kgon.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/net/control_net.hpp"
 
 // evaluation: Bézier patches, the (modified) de Casteljau split, the surface of a method
