@@ -13,6 +13,7 @@
 #include "incremental_check.hpp"
 #include "random_operation.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/tess/incremental_surface.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
@@ -34,22 +35,22 @@ SurfaceChange moved(Vertex v) {
 /// A mesh edited by operation lines through its journal, each edit kept for undo.
 struct JournaledMesh {
   HalfedgeMesh mesh;
-  std::vector<HalfedgeMesh::Delta> done;
+  std::vector<MeshDelta> done;
 
   /// The change of `line`, or nullopt when the line is refused (the mesh is then unchanged).
   std::optional<SurfaceChange> apply(const std::string& line) {
-    mesh.begin_journal();
+    MeshJournal journal(mesh);
     try {
       apply_operation(mesh, line, Census::counts_only);
     } catch (const Error&) {
-      mesh.apply(mesh.end_journal(), false);
+      apply_delta(mesh, journal.finish(), false);
       return std::nullopt;
     }
-    done.push_back(mesh.end_journal());
+    done.push_back(journal.finish());
     return topology_change(done.back());
   }
   SurfaceChange undo() {
-    mesh.apply(done.back(), false);
+    apply_delta(mesh, done.back(), false);
     SurfaceChange c = topology_change(done.back());
     done.pop_back();
     return c;

@@ -2,9 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "random_operation.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 
@@ -54,7 +58,7 @@ TEST(MeshJournal, UndoesAndRedoesRandomEditsExactlyAndListsEveryChange) {
   for (int trial = 0; trial < 60; ++trial) {
     const HalfedgeMesh start = make_primitive(primitives[trial % 5], {});
     HalfedgeMesh m = start;
-    m.begin_journal();
+    MeshJournal journal(m);
     const int ops = 1 + static_cast<int>(rng() % 6);
     for (int k = 0; k < ops; ++k) {
       std::string line = test::random_operation(m, rng);
@@ -70,8 +74,8 @@ TEST(MeshJournal, UndoesAndRedoesRandomEditsExactlyAndListsEveryChange) {
       } catch (const Error&) {
       }
     }
-    ASSERT_TRUE(m.journal_open()) << "trial " << trial << ": an operator replaced the mesh";
-    const HalfedgeMesh::Delta delta = m.end_journal();
+    ASSERT_TRUE(journal.attached()) << "trial " << trial << ": an operator replaced the mesh";
+    const MeshDelta delta = journal.finish();
     if (!(m == start)) ++edited;
 
     expect_listed(
@@ -85,35 +89,154 @@ TEST(MeshJournal, UndoesAndRedoesRandomEditsExactlyAndListsEveryChange) {
         [&](Face f) { return same_face(start, m, f); }, "face");
 
     HalfedgeMesh replay = m;
-    replay.apply(delta, false);
+    apply_delta(replay, delta, false);
     EXPECT_TRUE(replay == start) << "trial " << trial << ": undo is not exact";
-    replay.apply(delta, true);
+    apply_delta(replay, delta, true);
     EXPECT_TRUE(replay == m) << "trial " << trial << ": redo is not exact";
   }
   EXPECT_GT(edited, 40);  // the sample is only useful if most trials change the mesh
 }
 
-TEST(MeshJournal, BelongsToOneMeshObject) {
-  HalfedgeMesh m = make_cube();
-  m.begin_journal();
-  EXPECT_THROW(m.begin_journal(), std::logic_error);
-  const HalfedgeMesh copy = m;
-  EXPECT_FALSE(copy.journal_open());
-  EXPECT_TRUE(copy == m);
-  EXPECT_THROW(m.garbage_collection(), std::logic_error);
-  m = make_cube();  // replaced: the journal is gone with the old contents
-  EXPECT_THROW(m.end_journal(), std::logic_error);
-}
-
 TEST(MeshJournal, RefusesADeltaThatDoesNotStartHere) {
   HalfedgeMesh m = make_cube();
-  m.begin_journal();
+  MeshJournal journal(m);
   apply_operation(m, "subdivide-edge 1 2");
-  const HalfedgeMesh::Delta delta = m.end_journal();
-  EXPECT_THROW(m.apply(delta, true), std::logic_error);  // m is already at the after end
+  const MeshDelta delta = journal.finish();
+  EXPECT_THROW(apply_delta(m, delta, true), std::logic_error);  // m is already at the after end
   HalfedgeMesh cube = make_cube();
-  cube.apply(delta, true);
+  apply_delta(cube, delta, true);
   EXPECT_TRUE(cube == m);
+}
+
+/// Whether `f` throws std::logic_error with `words` in its message.
+template <class F>
+::testing::AssertionResult logic_error_saying(F f, const std::string& words) {
+  try {
+    f();
+  } catch (const std::logic_error& e) {
+    if (std::string(e.what()).find(words) != std::string::npos)
+      return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "the message is: " << e.what();
+  }
+  return ::testing::AssertionFailure() << "nothing was thrown";
+}
+
+TEST(MeshJournal, AttachesToOneMeshAtATimeAndDetachesWhenFinishedOrDestroyed) {
+  HalfedgeMesh m = make_cube();
+  EXPECT_FALSE(m.observed());
+  {
+    MeshJournal journal(m);
+    EXPECT_TRUE(m.observed());
+    EXPECT_TRUE(journal.attached());
+    EXPECT_TRUE(logic_error_saying([&] { MeshJournal second(m); }, "observed by another journal"));
+    // The refused second journal left the first in place.
+    EXPECT_TRUE(m.observed());
+    apply_operation(m, "subdivide-edge 1 2");
+    EXPECT_TRUE(logic_error_saying([&] { m.garbage_collection(); }, "journal observes"));
+  }  // destroyed unfinished: the edits stay, the mesh is free again
+  EXPECT_FALSE(m.observed());
+  EXPECT_EQ(m.num_vertices(), 9);
+
+  MeshJournal journal(m);
+  apply_operation(m, "subdivide-edge 1 9");  // 9: the vertex the first split made
+  const MeshDelta delta = journal.finish();
+  EXPECT_FALSE(m.observed());
+  EXPECT_FALSE(journal.attached());
+  EXPECT_FALSE(delta.vertices.empty());
+  EXPECT_TRUE(logic_error_saying([&] { journal.finish(); }, "not attached"));
+  apply_operation(m, "subdivide-edge 1 10");  // after finish(): nothing records, nothing breaks
+  MeshJournal next(m);
+  EXPECT_TRUE(next.attached());
+}
+
+TEST(MeshJournal, CopiesOfTheMeshAreNotObserved) {
+  HalfedgeMesh m = make_cube();
+  const HalfedgeMesh start = m;
+  MeshJournal journal(m);
+  HalfedgeMesh copy = m;
+  HalfedgeMesh assigned = make_tetrahedron();
+  assigned = m;
+  EXPECT_FALSE(copy.observed());
+  EXPECT_FALSE(assigned.observed());
+  EXPECT_TRUE(copy == m);  // observing is not part of the mesh's value
+  // Edits of the copies are theirs alone: the journal of m sees none of them.
+  apply_operation(copy, "subdivide-edge 1 2");
+  apply_operation(assigned, "delete-face 1");
+  EXPECT_TRUE(m.observed());
+  const MeshDelta delta = journal.finish();
+  EXPECT_TRUE(delta.vertices.empty());
+  EXPECT_TRUE(delta.edges.empty());
+  EXPECT_TRUE(delta.faces.empty());
+  EXPECT_TRUE(m == start);
+}
+
+// A mesh replaced wholesale (destroyed, assigned to, moved from) cannot be described by the
+// elements its journal recorded: the journal detaches and refuses to give a delta.
+TEST(MeshJournal, IsLostWhenItsMeshIsDestroyedAssignedToOrMovedFrom) {
+  {
+    std::optional<HalfedgeMesh> m(make_cube());
+    MeshJournal journal(*m);
+    apply_operation(*m, "subdivide-edge 1 2");
+    m.reset();
+    EXPECT_FALSE(journal.attached());
+    EXPECT_TRUE(logic_error_saying([&] { journal.finish(); }, "destroyed, assigned to or moved"));
+  }  // the journal's destructor must not reach for the destroyed mesh
+  {
+    HalfedgeMesh m = make_cube();
+    MeshJournal journal(m);
+    HalfedgeMesh moved = std::move(m);
+    EXPECT_FALSE(journal.attached());
+    EXPECT_FALSE(m.observed());
+    EXPECT_FALSE(moved.observed());
+    EXPECT_THROW(journal.finish(), std::logic_error);
+  }
+  {
+    HalfedgeMesh m = make_cube();
+    MeshJournal journal(m);
+    HalfedgeMesh target = make_cube();
+    target = std::move(m);
+    EXPECT_FALSE(journal.attached());
+    EXPECT_FALSE(target.observed());
+  }
+  {
+    HalfedgeMesh m = make_cube();
+    const HalfedgeMesh other = make_tetrahedron();
+    MeshJournal journal(m);
+    m = other;
+    EXPECT_FALSE(journal.attached());
+    EXPECT_FALSE(m.observed());
+    EXPECT_THROW(journal.finish(), std::logic_error);
+  }
+  {
+    HalfedgeMesh m = make_cube();
+    MeshJournal journal(m);
+    m = make_cube();  // move-assigned: replaced as surely as by a copy
+    EXPECT_FALSE(journal.attached());
+    EXPECT_THROW(journal.finish(), std::logic_error);
+  }
+  {
+    HalfedgeMesh m = make_cube();
+    MeshJournal journal(m);
+    HalfedgeMesh& same = m;
+    m = same;  // assigning a mesh to itself replaces nothing
+    EXPECT_TRUE(journal.attached());
+  }
+}
+
+TEST(MeshJournal, AnObservedMeshTakesOnlyDeltasThatAddElements) {
+  HalfedgeMesh m = make_cube();
+  MeshJournal first(m);
+  apply_operation(m, "subdivide-edge 1 2");
+  const MeshDelta grows = first.finish();
+  MeshJournal second(m);
+  EXPECT_TRUE(logic_error_saying([&] { apply_delta(m, grows, false); }, "cannot remove"));
+  HalfedgeMesh cube = make_cube();
+  MeshJournal third(cube);
+  apply_delta(cube, grows, true);
+  const MeshDelta replayed = third.finish();
+  EXPECT_EQ(replayed.vertices, grows.vertices);
+  EXPECT_EQ(replayed.edges, grows.edges);
+  EXPECT_EQ(replayed.faces, grows.faces);
 }
 
 }  // namespace

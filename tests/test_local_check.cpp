@@ -11,6 +11,7 @@
 #include "cli_run.hpp"
 #include "stitch/analysis/local_check.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
@@ -22,9 +23,9 @@ namespace {
 
 /// Applies `op` under a journal and returns the corners whose patches it may have changed.
 std::vector<Corner> edit(HalfedgeMesh& mesh, const std::string& op) {
-  mesh.begin_journal();
+  MeshJournal journal(mesh);
   apply_operation(mesh, op);
-  const HalfedgeMesh::Delta d = mesh.end_journal();
+  const MeshDelta d = journal.finish();
   return patches_touched(mesh, d.vertices, d.edges, d.faces);
 }
 

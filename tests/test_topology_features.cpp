@@ -14,6 +14,7 @@
 #include "random_operation.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/compare.hpp"
 #include "stitch/topology/connect_faces.hpp"
@@ -355,11 +356,11 @@ TEST(TopologyFeatures, CreaseAndCornerParseApplyPrintAndUndo) {
   const HalfedgeMesh before = m;
   const Edge e = edge(m, 1, 2);
   const Halfedge h = HalfedgeMesh::halfedge(e, 0);
-  m.begin_journal();
+  MeshJournal journal(m);
   const OperationReport r1 = apply_operation(m, "crease 1 2 2.5");
   const OperationReport r2 = apply_operation(m, "corner 7 10");
   const OperationReport r3 = apply_operation(m, "open-face 2");
-  const HalfedgeMesh::Delta delta = m.end_journal();
+  const MeshDelta delta = journal.finish();
   EXPECT_EQ(r1.summary("crease 1 2 2.5"),
             "crease 1 2 2.5: edge " + std::to_string(e.idx + 1) + " (vertices " +
                 std::to_string(m.origin(h).idx + 1) + "-" + std::to_string(m.target(h).idx + 1) +
@@ -371,9 +372,9 @@ TEST(TopologyFeatures, CreaseAndCornerParseApplyPrintAndUndo) {
   EXPECT_TRUE(m.is_hole(Face(1)));
 
   const HalfedgeMesh after = m;
-  m.apply(delta, false);
+  apply_delta(m, delta, false);
   EXPECT_EQ(m, before);
-  m.apply(delta, true);
+  apply_delta(m, delta, true);
   EXPECT_EQ(m, after);
   EXPECT_TRUE(same_up_to_renumbering(m, after));
   EXPECT_FALSE(same_up_to_renumbering(m, before));  // tags count for "the same mesh"
@@ -408,11 +409,11 @@ TEST(TopologyFeatures, CreaseNamesOneOfSeveralEdgesByItsFace) {
 TEST(TopologyFeatures, UndoOfAnOpenFaceThatMergedRestoresTheMesh) {
   HalfedgeMesh m = open_box();
   const HalfedgeMesh before = m;
-  m.begin_journal();
+  MeshJournal journal(m);
   apply_operation(m, "open-face 2");
-  const HalfedgeMesh::Delta delta = m.end_journal();
+  const MeshDelta delta = journal.finish();
   ASSERT_TRUE(m.is_deleted(Face(5)));
-  m.apply(delta, false);
+  apply_delta(m, delta, false);
   EXPECT_EQ(m, before);
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -13,6 +14,7 @@
 #include "stitch/analysis/local_check.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/operation.hpp"
 
@@ -138,16 +140,17 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   Touched touched;
   for (const OpLine& op : ops) {
     OperationReport r;
-    const bool journal = a.check && !is_remeshing(op.text);
+    // A remeshing renumbers everything: no journal could say what it touched.
+    std::optional<MeshJournal> journal;
     try {
-      if (journal) mesh.begin_journal();
+      if (a.check && !is_remeshing(op.text)) journal.emplace(mesh);
       r = apply_operation(mesh, op.text);
     } catch (const Error& e) {
       throw_with_message(e, fmt::format("{}: {} (nothing written)", op.where, e.what()));
     }
     if (journal) {
       // Numbers stay valid for the whole run (until a remeshing), so the lists add up.
-      const HalfedgeMesh::Delta delta = mesh.end_journal();
+      const MeshDelta delta = journal->finish();
       touched.vertices.insert(touched.vertices.end(), delta.vertices.begin(), delta.vertices.end());
       touched.edges.insert(touched.edges.end(), delta.edges.begin(), delta.edges.end());
       touched.faces.insert(touched.faces.end(), delta.faces.begin(), delta.faces.end());

@@ -11,6 +11,7 @@
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/mesh/validate.hpp"
 
@@ -28,6 +29,7 @@
 
 // K-gons and control nets
 #include "stitch/kgon/kgon.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/net/control_net.hpp"
 
 // evaluation: Bézier patches, the (modified) de Casteljau split, the surface of a method

@@ -4,12 +4,15 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 
 #include "openings.hpp"
 #include "sharp.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
@@ -22,12 +25,44 @@ std::vector<double> doo_sabin_weights(int n) {
   return a;
 }
 
+namespace {
+
+/// Point i of the Doo-Sabin shrink of the n points point(0..n-1) with weights a, handed to
+/// out(i, point). Every path sums in this one order, so every path gets the same bits.
+template <class PointAt, class Out>
+void shrink(int n, const double* a, PointAt point, Out out) {
+  for (int i = 0; i < n; ++i) {
+    Vec3 sum = Vec3::Zero();
+    for (int j = 0; j < n; ++j) sum += a[((j - i) % n + n) % n] * point(j);
+    out(i, sum);
+  }
+}
+
+/// newell_normal of the k points point(0..k-1), in its order, without a list of them.
+template <class PointAt>
+Vec3 newell_normal_of(int k, PointAt point) {
+  Vec3 n = Vec3::Zero();
+  for (int i = 0; i < k; ++i) n += point(i).cross(point((i + 1) % k));
+  return n;
+}
+
+using WeightTable = std::vector<std::vector<double>>;
+
+/// Makes table[k] hold doo_sabin_weights(k).
+void cover(WeightTable& table, int k) {
+  for (int n = static_cast<int>(table.size()); n <= k; ++n)
+    table.push_back(n > 0 ? doo_sabin_weights(n) : std::vector<double>{});
+}
+
+}  // namespace
+
 std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop) {
   const int n = static_cast<int>(loop.size());
   const auto a = doo_sabin_weights(n);
-  std::vector<Vec3> out(n, Vec3::Zero());
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) out[i] += a[((j - i) % n + n) % n] * loop[j];
+  std::vector<Vec3> out(n);
+  shrink(
+      n, a.data(), [&](int j) -> const Vec3& { return loop[j]; },
+      [&](int i, const Vec3& p) { out[i] = p; });
   return out;
 }
 
@@ -72,50 +107,115 @@ void apply_control(Kgon& g, const KgonControl& ctl) {
   g.centroid += ctl.offset;
 }
 
-/// Shrinks the polygon over the corner points once more, and flattens it unless K = 4.
-Kgon make_kgon(const KgonSet& set, std::vector<Corner> corners, const Vec3& fallback_normal) {
-  Kgon g;
-  std::vector<Vec3> polygon;
-  for (Corner c : corners) polygon.push_back(set.corner_point[c.idx]);
-  g.corners = std::move(corners);
-  g.points = doo_sabin_shrink(polygon);
+/// Shrinks the polygon over the corner points of g's corners once more into g's points (weights
+/// for its K), and flattens it unless K = 4.
+void shape_kgon(Kgon& g, const std::vector<Vec3>& corner_point, const std::vector<double>& weights,
+                const Vec3& fallback_normal) {
+  const int k = static_cast<int>(g.corners.size());
+  g.points.resize(k);
+  shrink(
+      k, weights.data(), [&](int j) -> const Vec3& { return corner_point[g.corners[j].idx]; },
+      [&](int i, const Vec3& p) { g.points[i] = p; });
   g.centroid = centroid(g.points);
   const Vec3 winding = newell_normal(g.points);
-  const int k = g.size();
   if (k == 2) {
     // Two points span no plane: keep them, and take the normal from the faces around.
     g.normal = fallback_normal.norm() > 0 ? fallback_normal.normalized() : Vec3::UnitZ();
-    return g;
+    return;
   }
   g.normal = plane_normal(g.points, g.centroid, winding.norm() > 0 ? winding : fallback_normal);
   if (k != 4)
     for (Vec3& p : g.points) p -= (p - g.centroid).dot(g.normal) * g.normal;
-  return g;
 }
 
-}  // namespace
+// Each element's K-gon in two steps: prepare_* writes what connectivity, tags and options decide
+// (corners, per-corner indices), place_* what positions decide. build_kgons runs every prepare
+// once and then every place (place_kgons alone when only positions changed); update_kgons runs
+// both per listed element. Either way each element goes through the same code.
 
-namespace {
+/// The face's openings, when the openings construction builds its K-gon.
+std::optional<TwoOpenings> openings_of(const HalfedgeMesh& m, const KgonOptions& options, Face f) {
+  if (options.construction != KgonConstruction::openings || m.is_hole(f)) return std::nullopt;
+  return detail::find_two_openings(m, f);
+}
 
-/// The per-element steps of build_kgons, shared with update_kgons so both give identical K-gons.
-/// `normal_of(f)` is face f's Newell normal.
-void set_corner_points(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f) {
+void prepare_face(const HalfedgeMesh& m, KgonSet& set, Face f) {
+  if (m.is_hole(f)) {
+    set.face[f.idx] = Kgon{};
+    return;
+  }
+  Kgon& g = set.face[f.idx];
+  g.corners = m.face_loop(f);
+  for (size_t i = 0; i < g.corners.size(); ++i) set.in_face[g.corners[i].idx] = static_cast<int>(i);
+}
+
+struct VertexTopology {
+  VertexKind kind = VertexKind::smooth;
+  int sharp_spokes = 0;
+  /// The K-gons of sectors are tied to the sharp curves through the vertex and made whole from
+  /// the points (detail::build_sector_kgons); the user's controls would tear them off.
+  [[nodiscard]] bool by_sectors() const {
+    return kind == VertexKind::crease || (kind == VertexKind::corner && sharp_spokes >= 2);
+  }
+};
+
+VertexTopology prepare_vertex(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,
+                              Vertex v) {
+  VertexTopology t;
+  t.kind = vertex_kind(m, v, options);
+  auto fan = m.vertex_fan(v);
+  for (Halfedge h : fan) t.sharp_spokes += is_sharp(m, HalfedgeMesh::edge(h), options);
+  if (t.by_sectors()) return t;
+  for (size_t i = 0; i < fan.size(); ++i) {
+    set.in_vertex[fan[i].idx] = static_cast<int>(i);
+    set.vertex_k[fan[i].idx] = static_cast<int>(fan.size());
+  }
+  set.vertex[v.idx].corners = std::move(fan);
+  return t;
+}
+
+/// Returns whether the edge is sharp.
+bool prepare_edge(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Edge e) {
+  const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
+  set.edge[e.idx].corners = detail::edge_kgon_corners(m, e);
+  set.in_next_edge[h.idx] = 0;
+  set.in_prev_edge[m.next(t).idx] = 1;
+  set.in_next_edge[t.idx] = 2;
+  set.in_prev_edge[m.next(h).idx] = 3;
+  const bool sharp = is_sharp(m, e, options);
+  if (!set.sharp_edge.empty()) set.sharp_edge[e.idx] = sharp ? 1 : 0;
+  return sharp;
+}
+
+/// The positions of the corners of face f (prepared), in loop order.
+auto corner_positions(const HalfedgeMesh& m, const std::vector<Corner>& loop) {
+  return [&m, &loop](int i) -> const Vec3& { return m.position(m.origin(loop[i])); };
+}
+
+/// Face f's Newell normal.
+Vec3 face_normal(const HalfedgeMesh& m, const KgonSet& set, Face f) {
+  // A hole has no K-gon to hold its loop; holes are few.
+  if (m.is_hole(f)) return newell_normal(face_points(m, f));
+  const auto& loop = set.face[f.idx].corners;
+  return newell_normal_of(static_cast<int>(loop.size()), corner_positions(m, loop));
+}
+
+void place_corner_points(const HalfedgeMesh& m, KgonSet& set, Face f, const TwoOpenings* openings,
+                         const WeightTable& weights) {
   if (m.is_hole(f)) return;
-  if (options.construction == KgonConstruction::openings)
-    if (const auto openings = detail::find_two_openings(m, f)) {
-      detail::set_opening_corner_points(m, *openings, set.corner_point);
-      return;
-    }
-  const auto loop = m.face_loop(f);
-  std::vector<Vec3> pts;
-  for (Halfedge h : loop) pts.push_back(m.position(m.origin(h)));
-  const auto w = doo_sabin_shrink(pts);
-  for (size_t i = 0; i < loop.size(); ++i) set.corner_point[loop[i].idx] = w[i];
+  if (openings) {
+    detail::set_opening_corner_points(m, *openings, set.corner_point);
+    return;
+  }
+  const auto& loop = set.face[f.idx].corners;
+  const int n = static_cast<int>(loop.size());
+  shrink(n, weights[n].data(), corner_positions(m, loop),
+         [&](int i, const Vec3& p) { set.corner_point[loop[i].idx] = p; });
 }
 
 /// The normal of the faces around a set of corners, for K-gons too small to have a plane.
 template <class NormalOf>
-Vec3 normal_around(const HalfedgeMesh& m, const std::vector<Corner>& corners, NormalOf& normal_of) {
+Vec3 normal_around(const HalfedgeMesh& m, std::span<const Corner> corners, NormalOf& normal_of) {
   Vec3 n = Vec3::Zero();
   for (Corner c : corners) n += normal_of(m.face(c)) + normal_of(m.face(HalfedgeMesh::twin(c)));
   return n;
@@ -128,83 +228,85 @@ KgonControl control_for(const KgonOptions& options,
 }
 
 template <class NormalOf>
-void build_face_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f,
-                     NormalOf& normal_of) {
-  if (m.is_hole(f)) {
-    set.face[f.idx] = Kgon{};
-    return;
-  }
-  auto loop = m.face_loop(f);
-  for (size_t i = 0; i < loop.size(); ++i) set.in_face[loop[i].idx] = static_cast<int>(i);
+void place_face(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Face f,
+                const TwoOpenings* openings, const WeightTable& weights, NormalOf& normal_of) {
+  if (m.is_hole(f)) return;
+  Kgon& g = set.face[f.idx];
   std::optional<Kgon> placed;
-  if (options.construction == KgonConstruction::openings)
-    if (const auto openings = detail::find_two_openings(m, f))
-      placed = detail::place_tube_kgon(m, f, *openings, set.corner_point);
-  const Vec3 fallback = normal_around(m, loop, normal_of);
-  Kgon g = placed ? std::move(*placed) : make_kgon(set, std::move(loop), fallback);
+  if (openings) placed = detail::place_tube_kgon(m, f, *openings, set.corner_point);
+  if (placed)
+    g = std::move(*placed);
+  else
+    shape_kgon(g, set.corner_point, weights[g.corners.size()],
+               normal_around(m, g.corners, normal_of));
   apply_control(g, control_for(options, options.face, f.idx, g.size()));
-  set.face[f.idx] = std::move(g);
 }
 
 template <class NormalOf>
-void build_vertex_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Vertex v,
-                       NormalOf& normal_of) {
-  const VertexKind kind = vertex_kind(m, v, options);
-  auto fan = m.vertex_fan(v);
-  int sharp_spokes = 0;
-  for (Halfedge h : fan) sharp_spokes += is_sharp(m, HalfedgeMesh::edge(h), options);
-  if (kind == VertexKind::crease || (kind == VertexKind::corner && sharp_spokes >= 2)) {
-    // The K-gons of sectors are tied to the sharp curves through the vertex; the user's
-    // controls would tear them off, so they do not apply here.
-    detail::build_sector_kgons(m, options, kind, v, set);
+void place_vertex(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Vertex v,
+                  VertexTopology t, const WeightTable& weights, NormalOf& normal_of) {
+  if (t.by_sectors()) {
+    detail::build_sector_kgons(m, options, t.kind, v, set);
     return;
   }
-  for (size_t i = 0; i < fan.size(); ++i) {
-    set.in_vertex[fan[i].idx] = static_cast<int>(i);
-    set.vertex_k[fan[i].idx] = static_cast<int>(fan.size());
-  }
-  const Vec3 fallback = normal_around(m, fan, normal_of);
-  Kgon g = make_kgon(set, std::move(fan), fallback);
+  Kgon& g = set.vertex[v.idx];
+  shape_kgon(g, set.corner_point, weights[g.corners.size()],
+             normal_around(m, g.corners, normal_of));
   apply_control(g, control_for(options, options.vertex, v.idx, g.size()));
-  if (kind == VertexKind::corner) {
+  if (t.kind == VertexKind::corner) {
     // A corner with fewer than two sharp edges has no sectors: the surface passes through the
     // vertex with the whole fan's tangent plane.
     const Vec3 shift = m.position(v) - g.centroid;
     for (Vec3& p : g.points) p += shift;
     g.centroid = m.position(v);
   }
-  set.vertex[v.idx] = std::move(g);
-  if (sharp_spokes > 0) detail::set_dart_curve(m, options, v, set);
+  if (t.sharp_spokes > 0) detail::set_dart_curve(m, options, v, set);
 }
 
+/// `bridge_openings`: the openings of the face on both sides of e, if it is one.
 template <class NormalOf>
-void build_edge_kgon(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Edge e,
-                     NormalOf& normal_of) {
-  const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
-  std::vector<Corner> corners = detail::edge_kgon_corners(m, e);
-  set.in_next_edge[h.idx] = 0;
-  set.in_prev_edge[m.next(t).idx] = 1;
-  set.in_next_edge[t.idx] = 2;
-  set.in_prev_edge[m.next(h).idx] = 3;
-  const bool sharp = is_sharp(m, e, options);
-  if (!set.sharp_edge.empty()) set.sharp_edge[e.idx] = sharp ? 1 : 0;
+void place_edge(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set, Edge e, bool sharp,
+                const TwoOpenings* bridge_openings, const WeightTable& weights,
+                NormalOf& normal_of) {
   if (sharp) {
     set.edge[e.idx] = detail::sharp_edge_kgon(m, e, set);
     return;
   }
+  const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+  Kgon& g = set.edge[e.idx];
   std::optional<Kgon> bridge;
-  if (options.construction == KgonConstruction::openings && m.face(h) == m.face(t))
-    if (const auto openings = detail::find_two_openings(m, m.face(h)))
-      bridge = detail::place_bridge_kgon(m, m.face(h), *openings, corners, set.corner_point);
-  Kgon g = bridge ? std::move(*bridge) : make_kgon(set, corners, normal_around(m, {h}, normal_of));
+  if (bridge_openings)
+    bridge = detail::place_bridge_kgon(m, m.face(h), *bridge_openings, g.corners, set.corner_point);
+  if (bridge)
+    g = std::move(*bridge);
+  else
+    shape_kgon(g, set.corner_point, weights[4], normal_around(m, {&h, 1}, normal_of));
   if (auto it = options.edge.find(e.idx); it != options.edge.end()) apply_control(g, it->second);
-  set.edge[e.idx] = std::move(g);
+}
+
+/// The face whose openings the bridge e joins, if e runs twice along one face's loop.
+Face bridged_face(const HalfedgeMesh& m, Edge e) {
+  const Halfedge h = HalfedgeMesh::halfedge(e, 0);
+  return m.face(h) == m.face(HalfedgeMesh::twin(h)) ? m.face(h) : Face();
 }
 
 }  // namespace
 
-KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
-  KgonSet set;
+bool KgonTopology::fits(const HalfedgeMesh& mesh, const KgonOptions& options) const {
+  return construction == options.construction && boundary == options.boundary &&
+         sharp_from == options.sharp_from &&
+         static_cast<int>(skeleton.corner_point.size()) == mesh.halfedge_capacity() &&
+         static_cast<int>(skeleton.face.size()) == mesh.face_capacity() &&
+         static_cast<int>(skeleton.vertex.size()) == mesh.vertex_capacity() &&
+         static_cast<int>(skeleton.edge.size()) == mesh.edge_capacity();
+}
+
+KgonTopology prepare_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
+  KgonTopology t;
+  t.construction = options.construction;
+  t.boundary = options.boundary;
+  t.sharp_from = options.sharp_from;
+  KgonSet& set = t.skeleton;
   const int nh = m.halfedge_capacity();
   set.corner_point.assign(nh, Vec3::Zero());
   set.in_face.assign(nh, -1);
@@ -220,24 +322,66 @@ KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   set.face.resize(m.face_capacity());
   set.vertex.resize(m.vertex_capacity());
   set.edge.resize(m.edge_capacity());
+  t.faces = m.faces().to_vector();
+  t.vertices = m.vertices().to_vector();
+  t.edges = m.edges().to_vector();
+  t.openings.resize(m.face_capacity());
+  t.vertex_kind.assign(m.vertex_capacity(), VertexKind::smooth);
+  t.sharp_spokes.assign(m.vertex_capacity(), 0);
+  t.sharp.assign(m.edge_capacity(), 0);
 
   // Every step writes only its own element's entries (a face's corners, a vertex's fan, an
   // edge's four corners), so each runs over its elements in parallel with the same result.
-  const std::vector<Face> faces = m.faces().to_vector();
-  const std::vector<Vertex> vertices = m.vertices().to_vector();
-  const std::vector<Edge> edges = m.edges().to_vector();
-  std::vector<Vec3> face_normal(m.face_capacity(), Vec3::Zero());
-  tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
-    face_normal[faces[i].idx] = newell_normal(face_points(m, faces[i]));
-    set_corner_points(m, options, set, faces[i]);
+  tbb::parallel_for(size_t{0}, t.faces.size(), [&](size_t i) {
+    prepare_face(m, set, t.faces[i]);
+    t.openings[t.faces[i].idx] = openings_of(m, options, t.faces[i]);
   });
-  auto normal_of = [&](Face f) { return face_normal[f.idx]; };
-  tbb::parallel_for(size_t{0}, faces.size(),
-                    [&](size_t i) { build_face_kgon(m, options, set, faces[i], normal_of); });
-  tbb::parallel_for(size_t{0}, vertices.size(),
-                    [&](size_t i) { build_vertex_kgon(m, options, set, vertices[i], normal_of); });
-  tbb::parallel_for(size_t{0}, edges.size(),
-                    [&](size_t i) { build_edge_kgon(m, options, set, edges[i], normal_of); });
+  tbb::parallel_for(size_t{0}, t.vertices.size(), [&](size_t i) {
+    const VertexTopology v = prepare_vertex(m, options, set, t.vertices[i]);
+    t.vertex_kind[t.vertices[i].idx] = v.kind;
+    t.sharp_spokes[t.vertices[i].idx] = v.sharp_spokes;
+  });
+  tbb::parallel_for(size_t{0}, t.edges.size(), [&](size_t i) {
+    t.sharp[t.edges[i].idx] = prepare_edge(m, options, set, t.edges[i]) ? 1 : 0;
+  });
+  size_t largest = 4;
+  for (Face f : t.faces) largest = std::max(largest, set.face[f.idx].corners.size());
+  for (Vertex v : t.vertices) largest = std::max(largest, set.vertex[v.idx].corners.size());
+  cover(t.doo_sabin, static_cast<int>(largest));
+  return t;
+}
+
+void place_kgons(const HalfedgeMesh& m, const KgonOptions& options, const KgonTopology& t,
+                 KgonSet& set) {
+  auto openings_at = [&](Face f) -> const TwoOpenings* {
+    return f.valid() && t.openings[f.idx] ? &*t.openings[f.idx] : nullptr;
+  };
+  std::vector<Vec3> normals(m.face_capacity(), Vec3::Zero());
+  tbb::parallel_for(size_t{0}, t.faces.size(), [&](size_t i) {
+    const Face f = t.faces[i];
+    normals[f.idx] = face_normal(m, set, f);
+    place_corner_points(m, set, f, openings_at(f), t.doo_sabin);
+  });
+  auto normal_of = [&](Face f) { return normals[f.idx]; };
+  tbb::parallel_for(size_t{0}, t.faces.size(), [&](size_t i) {
+    place_face(m, options, set, t.faces[i], openings_at(t.faces[i]), t.doo_sabin, normal_of);
+  });
+  tbb::parallel_for(size_t{0}, t.vertices.size(), [&](size_t i) {
+    const Vertex v = t.vertices[i];
+    place_vertex(m, options, set, v, {t.vertex_kind[v.idx], t.sharp_spokes[v.idx]}, t.doo_sabin,
+                 normal_of);
+  });
+  tbb::parallel_for(size_t{0}, t.edges.size(), [&](size_t i) {
+    const Edge e = t.edges[i];
+    place_edge(m, options, set, e, t.sharp[e.idx] != 0, openings_at(bridged_face(m, e)),
+               t.doo_sabin, normal_of);
+  });
+}
+
+KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
+  KgonTopology t = prepare_kgons(m, options);
+  KgonSet set = std::move(t.skeleton);  // place_kgons reads the rest of t, not the skeleton
+  place_kgons(m, options, t, set);
   return set;
 }
 
@@ -256,10 +400,31 @@ void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
   if (set.vertex_k.size() < nh) set.vertex_k.resize(nh, 4);
   if (set.cone.size() < nh) set.cone.resize(nh, 0);
   if (set.sharp_edge.size() < nh / 2) set.sharp_edge.resize(nh / 2, 0);
-  for (Face f : faces) set_corner_points(m, options, set, f);
-  for (Face f : faces) build_face_kgon(m, options, set, f, normal_of);
-  for (Vertex v : vertices) build_vertex_kgon(m, options, set, v, normal_of);
-  for (Edge e : edges) build_edge_kgon(m, options, set, e, normal_of);
+  WeightTable weights;
+  cover(weights, 4);
+  std::vector<std::optional<TwoOpenings>> openings(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    prepare_face(m, set, faces[i]);
+    openings[i] = openings_of(m, options, faces[i]);
+    cover(weights, static_cast<int>(set.face[faces[i].idx].corners.size()));
+  }
+  auto at = [](const std::optional<TwoOpenings>& o) { return o ? &*o : nullptr; };
+  for (size_t i = 0; i < faces.size(); ++i)
+    place_corner_points(m, set, faces[i], at(openings[i]), weights);
+  for (size_t i = 0; i < faces.size(); ++i)
+    place_face(m, options, set, faces[i], at(openings[i]), weights, normal_of);
+  for (Vertex v : vertices) {
+    const VertexTopology t = prepare_vertex(m, options, set, v);
+    if (!t.by_sectors()) cover(weights, static_cast<int>(set.vertex[v.idx].corners.size()));
+    place_vertex(m, options, set, v, t, weights, normal_of);
+  }
+  for (Edge e : edges) {
+    const bool sharp = prepare_edge(m, options, set, e);
+    const Face bridged = bridged_face(m, e);
+    const auto bridge_openings =
+        bridged.valid() && !sharp ? openings_of(m, options, bridged) : std::optional<TwoOpenings>();
+    place_edge(m, options, set, e, sharp, at(bridge_openings), weights, normal_of);
+  }
 }
 
 }  // namespace stitch

@@ -17,14 +17,9 @@
 #include <vector>
 
 #include "stitch/kgon/kgon.hpp"
+#include "stitch/kgon/kgon_topology.hpp"  // TwoOpenings
 
 namespace stitch::detail {
-
-/// The corners of a face with exactly one bridge edge, split by opening: each list runs in loop
-/// order from the corner after a bridge to the bridge corner that leaves the opening.
-struct TwoOpenings {
-  std::vector<Corner> first, second;
-};
 
 /// The two openings of f, or nothing unless f's loop runs along exactly one edge twice and the
 /// two parts on either side of it are separate simple loops (they share no vertex).

@@ -146,8 +146,9 @@ void HalfedgeMesh::delete_face(Face f) {
 }
 
 HalfedgeMesh::Remap HalfedgeMesh::garbage_collection() {
-  if (journal_open())
-    throw std::logic_error("garbage_collection renumbers everything: not while a journal is open");
+  if (observed())
+    throw std::logic_error(
+        "garbage_collection renumbers everything: not while a journal observes the mesh");
   Remap map;
   auto build = [](const std::vector<std::uint8_t>& deleted, std::vector<int>& m) {
     m.assign(deleted.size(), -1);

@@ -82,15 +82,15 @@ Change Document::apply_operation(const Operation& op, std::string label, Operati
     return whole_change();
   }
   OperationReport r;
-  state_.mesh.begin_journal();
+  MeshJournal journal(state_.mesh);
   try {
     r = stitch::apply_operation(state_.mesh, op, Census::counts_only);
   } catch (...) {
     // The library promises no change; the journal makes sure of it.
-    state_.mesh.apply(state_.mesh.end_journal(), false);
+    apply_delta(state_.mesh, journal.finish(), false);
     throw;
   }
-  HalfedgeMesh::Delta delta = state_.mesh.end_journal();
+  MeshDelta delta = journal.finish();
   if (report) *report = r;
   if (r.what.empty()) return {};
   KgonOptions kgons_before = state_.kgons;
@@ -117,7 +117,7 @@ Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgon
   auto halfedge_to = [&](Halfedge h) {
     return Halfedge(edge_to[HalfedgeMesh::edge(h).idx] + (h.idx & 1));
   };
-  m.begin_journal();
+  MeshJournal journal(m);
   try {
     for (Vertex v : other.vertices()) {
       const Vec3 p = other.position(v) + offset;
@@ -147,10 +147,10 @@ Change Document::append(const HalfedgeMesh& other, const KgonOptions& other_kgon
     for (Face f : other.faces())
       m.set_halfedge(Face(face_to[f.idx]), halfedge_to(other.halfedge(f)));
   } catch (...) {
-    m.apply(m.end_journal(), false);
+    apply_delta(m, journal.finish(), false);
     throw;
   }
-  HalfedgeMesh::Delta delta = m.end_journal();
+  MeshDelta delta = journal.finish();
   KgonOptions kgons_before = state_.kgons;
   for (const auto& [f, c] : other_kgons.face)
     if (f < other.face_capacity() && face_to[f] >= 0) state_.kgons.face[face_to[f]] = c;
@@ -258,7 +258,7 @@ Change Document::apply(const Command& command, bool forward) {
     state_.kgons = forward ? edit->after : edit->before;
     c = kgon_change(edit->target);
   } else if (const auto* topology = std::get_if<TopologyEdit>(&command.edit)) {
-    state_.mesh.apply(topology->mesh, forward);
+    apply_delta(state_.mesh, topology->mesh, forward);
     state_.kgons = forward ? topology->kgons_after : topology->kgons_before;
     c = topology_change(topology->mesh);
   } else {

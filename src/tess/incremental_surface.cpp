@@ -169,6 +169,7 @@ SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const K
   const auto cc = cc_surface(mesh, options, method);
   method_ = method;
   grid_ = std::move(grid);
+  kgon_topology_.reset();
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
   const int slots = mesh.halfedge_capacity();
@@ -193,6 +194,7 @@ SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
   const Stopwatch watch;
   const auto cc = cc_surface(m, options, method_);  // may refuse: nothing has changed yet
   const int nh = m.halfedge_capacity(), old_nh = static_cast<int>(live_.size());
+  kgon_topology_.reset();
 
   // Arrays to the new capacities (an undo can shrink them back); the K-gons and nets of removed
   // elements are emptied below, as build_kgons and build_control_nets leave them.
@@ -355,8 +357,13 @@ SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh
   const Stopwatch watch;
   const auto cc = cc_surface(mesh, options, method_);  // may refuse: nothing has changed yet
   relaid_.clear();
-  // Everything that depends on point data, from scratch; the layout stays.
-  kgons_ = build_kgons(mesh, options);
+  // Everything that depends on point data, from scratch; the layout stays, and so does the
+  // K-gons' topology once prepared (options it depends on may have changed: then again).
+  if (!kgon_topology_ || !kgon_topology_->fits(mesh, options)) {
+    kgon_topology_ = prepare_kgons(mesh, options);
+    kgons_ = kgon_topology_->skeleton;
+  }
+  place_kgons(mesh, options, *kgon_topology_, kgons_);
   const std::vector<Corner> candidates = corners();
   std::vector<Corner> changed = changed_nets(mesh, candidates);
   if (cc) changed = candidates;  // the limit surface ignores the nets

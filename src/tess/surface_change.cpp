@@ -8,7 +8,7 @@ namespace stitch {
 
 using detail::sort_unique;
 
-SurfaceChange topology_change(const HalfedgeMesh::Delta& delta) {
+SurfaceChange topology_change(const MeshDelta& delta) {
   SurfaceChange c;
   c.kind = SurfaceChange::Kind::topology;
   c.vertices = delta.vertices;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "raw_mesh.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
 
 namespace stitch {
@@ -12,7 +13,7 @@ namespace td = topology_detail;
 namespace {
 
 /// Plans deleting f: the refusal, or (with `delta`) the edited copy's journal to apply.
-Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, HalfedgeMesh::Delta* delta) {
+Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, MeshDelta* delta) {
   if (Verdict v = td::exists(mesh, f, "delete-face"); !v) return v;
   // Merging a hole with its neighbours would leave one loop that is partly boundary and partly
   // surface: neither a hole nor a face says it, so the user picks (fill-hole or open-face).
@@ -24,7 +25,7 @@ Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, HalfedgeMesh::Delta* 
   // Worked on a copy: the original changes only once the result is known to be valid, and then
   // only in the elements the copy's journal says were touched.
   HalfedgeMesh m = mesh;
-  m.begin_journal();
+  MeshJournal journal(m);
   std::vector<std::uint8_t> gone(m.edge_capacity(), 0);
   for (Halfedge h : m.face_loop(f)) gone[HalfedgeMesh::edge(h).idx] = 1;
   const td::EdgeRemoval plan = td::plan_edge_removal(m, std::move(gone));
@@ -43,7 +44,7 @@ Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, HalfedgeMesh::Delta* 
     return Verdict::refused(
         fmt::format("delete-face: deleting face {} would not give a valid mesh: {}", f.idx + 1,
                     problems.front()));
-  if (delta) *delta = m.end_journal();
+  if (delta) *delta = journal.finish();
   return {};
 }
 
@@ -54,9 +55,9 @@ Verdict can_delete_face(const HalfedgeMesh& mesh, Face f) {
 }
 
 void delete_face(HalfedgeMesh& mesh, Face f) {
-  HalfedgeMesh::Delta delta;
+  MeshDelta delta;
   plan_delete_face(mesh, f, &delta).throw_if_refused();
-  mesh.apply(delta, true);
+  apply_delta(mesh, delta, true);
 }
 
 }  // namespace stitch

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "raw_mesh.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
 
 namespace stitch {
@@ -51,7 +52,7 @@ Verdict sharpness_allowed(double s, const char* op) {
 
 struct OpenFacePlan {
   OpenFaceResult result;
-  std::optional<HalfedgeMesh::Delta> delta;  ///< none: only f's hole flag changes
+  std::optional<MeshDelta> delta;  ///< none: only f's hole flag changes
 };
 
 /// Plans opening f: the refusal, or (with `planned`) the result and the edited copy's journal to
@@ -101,7 +102,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
 
   // Worked on a copy, as delete_face: the original changes only once the result is valid.
   HalfedgeMesh m = mesh;
-  m.begin_journal();
+  MeshJournal journal(m);
   OpenFaceResult result;
   m.set_hole(f, true);
   std::vector<std::uint8_t> gone(m.edge_capacity(), 0);
@@ -141,7 +142,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
   if (!problems.empty())
     return Verdict::refused(fmt::format(
         "open-face: opening face {} would not give a valid mesh: {}", f.idx + 1, problems.front()));
-  if (planned) *planned = {std::move(result), m.end_journal()};
+  if (planned) *planned = {std::move(result), journal.finish()};
   return {};
 }
 
@@ -155,7 +156,7 @@ OpenFaceResult open_face(HalfedgeMesh& mesh, Face f) {
   OpenFacePlan plan;
   plan_open_face(mesh, f, &plan).throw_if_refused();
   if (plan.delta)
-    mesh.apply(*plan.delta, true);
+    apply_delta(mesh, *plan.delta, true);
   else
     mesh.set_hole(f, true);
   return std::move(plan.result);

@@ -63,7 +63,7 @@ std::vector<Corner> patch_neighbourhood(const HalfedgeMesh& mesh,
                                         const std::vector<Corner>& changed);
 
 /// The corners whose patches can differ after edits that touched these elements (the lists of
-/// a HalfedgeMesh::Delta; elements deleted since are skipped): the patches reading a K-gon of a
+/// a MeshDelta; elements deleted since are skipped): the patches reading a K-gon of a
 /// face whose loop or vertices changed, as the modeler's LiveSurface updates them. A superset
 /// of the patches that really changed, in index order, without holes.
 std::vector<Corner> patches_touched(const HalfedgeMesh& mesh, const std::vector<Vertex>& vertices,

@@ -19,11 +19,9 @@
 // Elements are removed by marking them deleted, so the numbers of untouched elements stay stable
 // while a sequence of operators runs; garbage_collection() compacts the arrays, keeping order.
 //
-// While a journal is open (begin_journal ... end_journal) every editing call records the element
-// it is about to change, so a sequence of edits yields a Delta: the touched elements with their
-// state before and after. Applying it backward or forward undoes or redoes the edits exactly, at
-// a cost proportional to what they touched, and its element lists tell whatever depends on the
-// mesh where to update.
+// A MeshJournal (mesh_journal.hpp) may observe the mesh: every editing call then reports the
+// element it is about to change, so a sequence of edits yields a delta that undoes or redoes them
+// and says where they touched. The mesh itself holds only a pointer to that observer.
 #pragma once
 
 #include <Eigen/Core>
@@ -31,7 +29,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -72,6 +69,9 @@ using Face = Handle<FaceTag>;
 /// A corner is identified with the half-edge of its face that leaves its vertex.
 using Corner = Halfedge;
 
+class MeshJournal;
+struct MeshDelta;
+
 class HalfedgeMesh {
  public:
   // --- navigation -------------------------------------------------------------------------
@@ -94,7 +94,7 @@ class HalfedgeMesh {
   [[nodiscard]] Halfedge rotate_cw(Halfedge h) const { return next(twin(h)); }
 
   [[nodiscard]] const Vec3& position(Vertex v) const { return positions_[v.idx]; }
-  /// Writable position; counts as a change of v for an open journal.
+  /// Writable position; counts as a change of v for an observing journal.
   Vec3& position(Vertex v) {
     note(v);
     return positions_[v.idx];
@@ -222,91 +222,55 @@ class HalfedgeMesh {
     std::vector<int> vertex, edge, face;
   };
   /// Removes deleted elements, keeping the relative order of the rest. Not allowed while a
-  /// journal is open (it renumbers everything).
+  /// journal observes the mesh (it renumbers everything).
   Remap garbage_collection();
 
-  // --- journal: what a sequence of edits changed --------------------------------------------
-  struct VertexState {
-    Vec3 position;
-    int halfedge = -1;
-    std::uint8_t deleted = 0;
-    double sharpness = 0;
-    bool operator==(const VertexState&) const = default;
-  };
-  struct EdgeState {  ///< both half-edges, side 0 first
-    std::array<int, 2> next{}, prev{}, origin{}, face{};
-    std::uint8_t deleted = 0;
-    double sharpness = 0;
-    bool operator==(const EdgeState&) const = default;
-  };
-  struct FaceState {
-    int halfedge = -1;
-    std::uint8_t deleted = 0;
-    std::uint8_t hole = 0;
-    bool operator==(const FaceState&) const = default;
-  };
-  /// The mesh at one end of a delta: capacities, deletion counts, and the states of the touched
-  /// elements that exist at that end (index, state).
-  struct DeltaEnd {
-    int vertex_capacity = 0, edge_capacity = 0, face_capacity = 0;
-    int deleted_vertices = 0, deleted_edges = 0, deleted_faces = 0;
-    std::vector<std::pair<int, VertexState>> vertices;
-    std::vector<std::pair<int, EdgeState>> edges;
-    std::vector<std::pair<int, FaceState>> faces;
-  };
-  struct Delta {
-    /// Every element an editing call touched, new ones included, in increasing order (a
-    /// superset of those whose state differs: a touched element may end as it began).
-    std::vector<Vertex> vertices;
-    std::vector<Edge> edges;
-    std::vector<Face> faces;
-    DeltaEnd before, after;
-  };
-  /// Starts recording. Throws std::logic_error if a journal is already open.
-  void begin_journal();
-  [[nodiscard]] bool journal_open() const { return journal_.state != nullptr; }
-  /// Stops recording and returns what changed since begin_journal(). Throws std::logic_error if
-  /// no journal is open (e.g. the mesh was replaced by assignment in between).
-  Delta end_journal();
-  /// Brings the mesh from one end of the delta to the other: from `before` to `after` when
-  /// `forward`, else back. The mesh must be in the state of the end it starts from (e.g. a copy
-  /// of the mesh the delta was recorded on). An open journal records the change, which may
-  /// then not remove elements.
-  void apply(const Delta& delta, bool forward);
+  /// Whether a MeshJournal observes the mesh (mesh_journal.hpp).
+  [[nodiscard]] bool observed() const { return observer_.journal != nullptr; }
 
-  /// Exact equality of connectivity and positions (element numbering included); an open
+  /// Exact equality of connectivity and positions (element numbering included); an observing
   /// journal is bookkeeping, not part of the mesh's value.
   [[nodiscard]] bool operator==(const HalfedgeMesh& o) const = default;
 
  private:
-  struct Journal;
-  /// Holds the open journal. Copies of the mesh do not inherit it; it never affects equality.
-  struct JournalSlot {
-    std::unique_ptr<Journal> state;
-    JournalSlot();
-    JournalSlot(const JournalSlot& other);
-    JournalSlot& operator=(const JournalSlot& other);
-    JournalSlot(JournalSlot&& other) noexcept;
-    JournalSlot& operator=(JournalSlot&& other) noexcept;
-    ~JournalSlot();
-    bool operator==(const JournalSlot& /*other*/) const { return true; }
+  friend class MeshJournal;
+  friend void apply_delta(HalfedgeMesh& mesh, const MeshDelta& delta, bool forward);
+  /// The journal observing the mesh, if any. A copy or a move starts unobserved; a mesh that is
+  /// destroyed, assigned to or moved from loses its journal, whose record no longer describes
+  /// it (mesh_journal.hpp). Never part of equality.
+  struct ObserverSlot {
+    MeshJournal* journal = nullptr;
+    ObserverSlot() = default;
+    ObserverSlot(const ObserverSlot& /*other*/) noexcept {}
+    ObserverSlot(ObserverSlot&& other) noexcept { other.lose(); }
+    ObserverSlot& operator=(const ObserverSlot& other) noexcept {
+      if (this != &other) lose();
+      return *this;
+    }
+    ObserverSlot& operator=(ObserverSlot&& other) noexcept {
+      if (this != &other) {
+        lose();
+        other.lose();
+      }
+      return *this;
+    }
+    ~ObserverSlot() { lose(); }
+    void lose() noexcept;
+    bool operator==(const ObserverSlot& /*other*/) const { return true; }
   };
+  // One null test per editing call; the reports are out of line, in mesh_journal.cpp.
   void note(Vertex v) {
-    if (journal_.state) record(v);
+    if (observer_.journal) report(v);
   }
   void note(Edge e) {
-    if (journal_.state) record(e);
+    if (observer_.journal) report(e);
   }
   void note(Face f) {
-    if (journal_.state) record(f);
+    if (observer_.journal) report(f);
   }
-  void record(Vertex v);
-  void record(Edge e);
-  void record(Face f);
-  [[nodiscard]] VertexState state_of(Vertex v) const;
-  [[nodiscard]] EdgeState state_of(Edge e) const;
-  [[nodiscard]] FaceState state_of(Face f) const;
-  [[nodiscard]] DeltaEnd end_state() const;  ///< capacities and counts only
+  void report(Vertex v);
+  void report(Edge e);
+  void report(Face f);
 
   std::vector<Vec3> positions_;
   std::vector<int> vertex_he_;
@@ -318,7 +282,7 @@ class HalfedgeMesh {
   std::vector<int> face_he_;
   std::vector<std::uint8_t> face_deleted_, face_hole_;
   int deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
-  JournalSlot journal_;
+  ObserverSlot observer_;
 };
 
 }  // namespace stitch

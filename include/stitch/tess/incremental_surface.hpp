@@ -25,16 +25,20 @@
 //
 // Topology apart from point data (as OpenSubdiv's Bfr separates them): the slots, which of them
 // hold a patch, every block's (u, v), patch id and quads depend on the connectivity and the
-// resolution alone. update_positions is the path for "every vertex may have moved, the
-// connectivity did not" (a deforming animation): it keeps all of that and recomputes only the
-// K-gons, the nets and the samples of the patches whose nets changed.
+// resolution alone, and so does the K-gons' preparation (kgon_topology.hpp: corners, vertex
+// kinds, sharp edges, openings, Doo-Sabin weights). update_positions is the path for "every
+// vertex may have moved, the connectivity did not" (a deforming animation): it keeps all of that
+// (the K-gons' preparation from its first call after a topology change) and recomputes only the
+// K-gons' points, the nets and the samples of the patches whose nets changed.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/tess/patch_grid.hpp"
 #include "stitch/tess/surface_change.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
@@ -123,6 +127,9 @@ class IncrementalSurface {
   Method method_ = Method::mdc;
   PatchGrid grid_{8};
   KgonSet kgons_;
+  /// The K-gons' topology update_positions placed kgons_ from; none after a rebuild or a topology
+  /// edit (the next update_positions prepares it again).
+  std::optional<KgonTopology> kgon_topology_;
   std::vector<ControlNet> nets_;
   std::vector<std::uint8_t> live_;  ///< per slot (half-edge): has a patch
   int num_patches_ = 0;

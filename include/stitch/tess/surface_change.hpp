@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 
 namespace stitch {
 
@@ -16,7 +17,7 @@ struct SurfaceChange {
   Kind kind = Kind::none;
   std::vector<Vertex> moved;  ///< geometry: the vertices that moved
   /// kgons: the elements whose controls changed (all_kgons: the global control changed).
-  /// topology: the elements the edit touched (HalfedgeMesh::Delta), unless `whole`.
+  /// topology: the elements the edit touched (MeshDelta), unless `whole`.
   std::vector<Face> faces;
   std::vector<Vertex> vertices;
   std::vector<Edge> edges;
@@ -26,8 +27,8 @@ struct SurfaceChange {
   [[nodiscard]] bool empty() const { return kind == Kind::none; }
 };
 
-/// The topology change of the edits a mesh's journal recorded (begin_journal ... end_journal).
-SurfaceChange topology_change(const HalfedgeMesh::Delta& delta);
+/// The topology change of the edits a MeshJournal recorded.
+SurfaceChange topology_change(const MeshDelta& delta);
 /// A topology change after which nothing can be assumed (a remeshing or a replaced mesh, which
 /// renumber every element): the surface is rebuilt.
 SurfaceChange whole_change();

@@ -3,7 +3,7 @@
 //
 // Commands store what they need to go both ways exactly: a vertex move its positions before and
 // after, a K-gon edit the controls before and after, a local topology operation the mesh's
-// journal (the touched elements before and after, HalfedgeMesh::Delta) and the K-gon controls
+// journal (the touched elements before and after, MeshDelta) and the K-gon controls
 // before and after. Remeshings and replacing the document renumber everything, so those keep
 // the whole document before and after.
 #pragma once
@@ -15,6 +15,7 @@
 
 #include "stitch/kgon/kgon.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
+#include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/tess/surface_change.hpp"
 #include "stitch/topology/operation.hpp"
 
@@ -98,7 +99,7 @@ class Document {
     KgonOptions before, after;
   };
   struct TopologyEdit {
-    HalfedgeMesh::Delta mesh;
+    MeshDelta mesh;
     KgonOptions kgons_before, kgons_after;
   };
   struct Snapshot {
