@@ -1,5 +1,8 @@
 #include "patch_sampler.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "descent.hpp"
 #include "stitch/eval/de_casteljau.hpp"
 
@@ -9,7 +12,60 @@ namespace {
 // Paths deeper than this (points within 2^-20 of an extraordinary corner) are split afresh: they
 // are rare in a tessellation, and keeping them would let the cache grow with the resolution.
 constexpr int kCachedLevels = 20;
+// As deep as Surface::evaluate descends (evaluate_patch's default).
+constexpr int kMaxLevel = 60;
+
+// out[k] = w0 x0[k] + w1 x1[k] + w2 x2[k] + w3 x3[k], added to zero in this order as
+// evaluate_polynomial adds. The arrays never overlap: __restrict lets the compiler vectorise the
+// loop without checking.
+void weighted_sum(int n, const double (&w)[4], const double* __restrict x0,
+                  const double* __restrict x1, const double* __restrict x2,
+                  const double* __restrict x3, double* __restrict out) {
+  for (int k = 0; k < n; ++k) {
+    double sum = 0;
+    sum += w[0] * x0[k];
+    sum += w[1] * x1[k];
+    sum += w[2] * x2[k];
+    sum += w[3] * x3[k];
+    out[k] = sum;
+  }
+}
+
+// du x dv and its length squared, normalized, as Eigen's cross() and normalized() compute them.
+void unit_normals(int n, const double* __restrict ux, const double* __restrict uy,
+                  const double* __restrict uz, const double* __restrict vx,
+                  const double* __restrict vy, const double* __restrict vz, double* __restrict nx,
+                  double* __restrict ny, double* __restrict nz, double* __restrict length2) {
+  for (int k = 0; k < n; ++k) {
+    const double cx = uy[k] * vz[k] - uz[k] * vy[k];
+    const double cy = uz[k] * vx[k] - ux[k] * vz[k];
+    const double cz = ux[k] * vy[k] - uy[k] * vx[k];
+    const double n2 = cx * cx + cy * cy + cz * cz;
+    const double length = std::sqrt(n2);
+    nx[k] = cx / length;
+    ny[k] = cy / length;
+    nz[k] = cz / length;
+    length2[k] = n2;
+  }
+}
 }  // namespace
+
+void PatchSampler::BasisColumns::resize(size_t n) {
+  t.resize(n);
+  for (int a = 0; a < 4; ++a) {
+    b[a].resize(n);
+    d[a].resize(n);
+  }
+}
+
+void PatchSampler::BasisColumns::set(size_t k, double value) {
+  const detail::CubicBasis basis = detail::cubic_basis(value);
+  t[k] = value;
+  for (int a = 0; a < 4; ++a) {
+    b[a][k] = basis.b[a];
+    d[a][k] = basis.d[a];
+  }
+}
 
 PatchSampler::PatchSampler(const Surface& surface, int resolution)
     : PatchSampler(surface.method(), surface.bezier().nets, resolution) {
@@ -21,6 +77,163 @@ PatchSampler::PatchSampler(Method method, const std::vector<ControlNet>& nets, i
   for (Patch& p : patches_) p.splits.reserve(16);
   for (int k = 0; k <= resolution; ++k)
     basis_.push_back(detail::cubic_basis(static_cast<double>(k) / resolution));
+  const auto samples = static_cast<size_t>(std::max(resolution + 1, 0));
+  table_.resize(samples);
+  for (int k = 0; k <= resolution; ++k)
+    table_.set(static_cast<size_t>(k), static_cast<double>(k) / resolution);
+  leaf_u_.resize(samples);
+  leaf_v_.resize(samples);
+  for (auto& coordinates : rows_)
+    for (auto& row : coordinates) row.resize(samples);
+  for (auto& coordinates : rows_dv_)
+    for (auto& row : coordinates) row.resize(samples);
+  for (auto& lane : lane_) lane.resize(samples);
+}
+
+void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out) {
+  const int nu = i1 - i0 + 1, nv = j1 - j0 + 1;
+  const ControlNet& net = nets_[c.idx];
+  if (method_ == Method::cc) {
+    for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) {
+        const SurfacePoint sp = evaluate_grid(c, i, j);
+        const std::ptrdiff_t at = (i - i0) * out.stride + (j - j0);
+        out.positions[at] = sp.position;
+        out.normals[at] = sp.normal;
+        if (out.levels) out.levels[at] = sp.level;
+      }
+    return;
+  }
+  if (method_ == Method::asc || net.regular()) {
+    polynomial_block(net, nullptr, 0, table_, i0, table_, j0, 0, nu, 0, nv, out, false);
+    return;
+  }
+  Patch& p = patch(c);
+  if (u_.empty()) {
+    u_.resize(1);
+    v_.resize(1);
+  }
+  u_[0].assign(table_.t.begin() + i0, table_.t.begin() + i1 + 1);
+  v_[0].assign(table_.t.begin() + j0, table_.t.begin() + j1 + 1);
+  done_.assign(static_cast<size_t>(nu) * nv, 0);
+  done_stride_ = nv;
+  origin_ = net.p[0];
+  descend_block(p, p.relative, 1, 0, 0, nu, 0, nv, out);
+}
+
+void PatchSampler::descend_block(Patch& p, const ControlNet& net, std::uint64_t path, int level,
+                                 int iu, int nu, int jv, int nv, const GridOut& out) {
+  // detail::descend for every sample of the sub-block at once: a sample stops at the first net
+  // that is regular or has it at a corner (or at kMaxLevel), and goes on into the child of its
+  // quadrant with its parameters doubled, exactly as there.
+  if (static_cast<int>(u_.size()) <= level + 1) {  // before the references below are taken
+    u_.resize(static_cast<size_t>(level) + 2);
+    v_.resize(static_cast<size_t>(level) + 2);
+  }
+  const std::vector<double>& us = u_[level];
+  const std::vector<double>& vs = v_[level];
+  if (net.regular() || level >= kMaxLevel) {
+    for (int k = 0; k < nu; ++k) leaf_u_.set(static_cast<size_t>(k), us[iu + k]);
+    for (int k = 0; k < nv; ++k) leaf_v_.set(static_cast<size_t>(k), vs[jv + k]);
+    polynomial_block(net, &origin_, level, leaf_u_, 0, leaf_v_, 0, iu, nu, jv, nv, out, true);
+    return;
+  }
+  const auto at_end = [](double t) { return t == 0 || t == 1; };
+  for (int i = iu; i < iu + nu; ++i) {
+    if (!at_end(us[i])) continue;
+    for (int j = jv; j < jv + nv; ++j) {
+      char& done = done_[static_cast<size_t>(i) * done_stride_ + j];
+      if (!at_end(vs[j]) || done) continue;
+      SurfacePoint sp = evaluate_polynomial(net, us[i], vs[j]);
+      const std::ptrdiff_t at = i * out.stride + j;
+      out.positions[at] = sp.position + origin_;
+      out.normals[at] = sp.normal;
+      if (out.levels) out.levels[at] = level;
+      done = 1;
+    }
+  }
+  std::vector<double>& child_us = u_[level + 1];
+  std::vector<double>& child_vs = v_[level + 1];
+  child_us.resize(us.size());
+  child_vs.resize(vs.size());
+  // Parameters rise along the block, so each half is a contiguous run.
+  int su = iu, sv = jv;
+  for (int i = iu; i < iu + nu; ++i) {
+    const int q = us[i] >= 0.5 ? 1 : 0;
+    child_us[i] = 2 * us[i] - q;
+    su += 1 - q;
+  }
+  for (int j = jv; j < jv + nv; ++j) {
+    const int q = vs[j] >= 0.5 ? 1 : 0;
+    child_vs[j] = 2 * vs[j] - q;
+    sv += 1 - q;
+  }
+  // A copy: deeper splits may move the cached ones.
+  const std::array<ControlNet, 4> children = split_at(p, net, path);
+  for (int qu = 0; qu < 2; ++qu)
+    for (int qv = 0; qv < 2; ++qv) {
+      const int ci = qu == 0 ? iu : su, cn = qu == 0 ? su - iu : iu + nu - su;
+      const int cj = qv == 0 ? jv : sv, cm = qv == 0 ? sv - jv : jv + nv - sv;
+      if (cn == 0 || cm == 0) continue;
+      const auto q = static_cast<std::uint64_t>(2 * qu + qv);
+      descend_block(p, children[2 * qu + qv], level < 30 ? path * 4 + q : 0, level + 1, ci, cn, cj,
+                    cm, out);
+    }
+}
+
+void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, int level,
+                                    const BasisColumns& bu, int bu_at, const BasisColumns& bv,
+                                    int bv_at, int iu, int nu, int jv, int nv, const GridOut& out,
+                                    bool use_done) {
+  // evaluate_polynomial's sums in its order, spread over the samples of a grid row: each loop
+  // runs over j on plain arrays, which the compiler vectorises.
+  for (int a = 0; a < 4; ++a)
+    for (int x = 0; x < 3; ++x) {
+      const double p[4] = {net.at(a, 0)[x], net.at(a, 1)[x], net.at(a, 2)[x], net.at(a, 3)[x]};
+      weighted_sum(nv, p, bv.b[0].data() + bv_at, bv.b[1].data() + bv_at, bv.b[2].data() + bv_at,
+                   bv.b[3].data() + bv_at, rows_[a][x].data());
+      weighted_sum(nv, p, bv.d[0].data() + bv_at, bv.d[1].data() + bv_at, bv.d[2].data() + bv_at,
+                   bv.d[3].data() + bv_at, rows_dv_[a][x].data());
+    }
+  const double tiny = detail::degenerate_threshold(net);
+  double* position[3] = {lane_[0].data(), lane_[1].data(), lane_[2].data()};
+  double* du[3] = {lane_[3].data(), lane_[4].data(), lane_[5].data()};
+  double* dv[3] = {lane_[6].data(), lane_[7].data(), lane_[8].data()};
+  double* normal[3] = {lane_[9].data(), lane_[10].data(), lane_[11].data()};
+  double* normal2 = lane_[12].data();
+  for (int ii = 0; ii < nu; ++ii) {
+    const int ub = bu_at + ii;
+    const double b[4] = {bu.b[0][ub], bu.b[1][ub], bu.b[2][ub], bu.b[3][ub]};
+    const double d[4] = {bu.d[0][ub], bu.d[1][ub], bu.d[2][ub], bu.d[3][ub]};
+    for (int x = 0; x < 3; ++x) {
+      const auto& r = rows_;
+      const auto& s = rows_dv_;
+      weighted_sum(nv, b, r[0][x].data(), r[1][x].data(), r[2][x].data(), r[3][x].data(),
+                   position[x]);
+      weighted_sum(nv, d, r[0][x].data(), r[1][x].data(), r[2][x].data(), r[3][x].data(), du[x]);
+      weighted_sum(nv, b, s[0][x].data(), s[1][x].data(), s[2][x].data(), s[3][x].data(), dv[x]);
+    }
+    unit_normals(nv, du[0], du[1], du[2], dv[0], dv[1], dv[2], normal[0], normal[1], normal[2],
+                 normal2);
+    const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv;
+    const char* done =
+        use_done ? done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv : nullptr;
+    for (int k = 0; k < nv; ++k) {
+      if (done && done[k]) continue;
+      // patch_normal's test; the degenerate points (and NaN) take its whole path.
+      out.normals[row_at + k] =
+          normal2[k] > tiny
+              ? Vec3(normal[0][k], normal[1][k], normal[2][k])
+              : detail::patch_normal(net, detail::cubic_basis(bu.t[ub]),
+                                     detail::cubic_basis(bv.t[bv_at + k]), bu.t[ub],
+                                     bv.t[bv_at + k], Vec3(du[0][k], du[1][k], du[2][k]),
+                                     Vec3(dv[0][k], dv[1][k], dv[2][k]), tiny);
+      Vec3 p(position[0][k], position[1][k], position[2][k]);
+      if (origin) p += *origin;
+      out.positions[row_at + k] = p;
+      if (out.levels) out.levels[row_at + k] = level;
+    }
+  }
 }
 
 SurfacePoint PatchSampler::evaluate_grid(Corner c, int i, int j) {
