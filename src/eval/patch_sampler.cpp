@@ -15,39 +15,6 @@ constexpr int kCachedLevels = 20;
 // As deep as Surface::evaluate descends (evaluate_patch's default).
 constexpr int kMaxLevel = 60;
 
-// out[k] = w0 x0[k] + w1 x1[k] + w2 x2[k] + w3 x3[k], added to zero in this order as
-// evaluate_polynomial adds. The arrays never overlap: __restrict lets the compiler vectorise the
-// loop without checking.
-void weighted_sum(int n, const double (&w)[4], const double* __restrict x0,
-                  const double* __restrict x1, const double* __restrict x2,
-                  const double* __restrict x3, double* __restrict out) {
-  for (int k = 0; k < n; ++k) {
-    double sum = 0;
-    sum += w[0] * x0[k];
-    sum += w[1] * x1[k];
-    sum += w[2] * x2[k];
-    sum += w[3] * x3[k];
-    out[k] = sum;
-  }
-}
-
-// du x dv and its length squared, normalized, as Eigen's cross() and normalized() compute them.
-void unit_normals(int n, const double* __restrict ux, const double* __restrict uy,
-                  const double* __restrict uz, const double* __restrict vx,
-                  const double* __restrict vy, const double* __restrict vz, double* __restrict nx,
-                  double* __restrict ny, double* __restrict nz, double* __restrict length2) {
-  for (int k = 0; k < n; ++k) {
-    const double cx = uy[k] * vz[k] - uz[k] * vy[k];
-    const double cy = uz[k] * vx[k] - ux[k] * vz[k];
-    const double cz = ux[k] * vy[k] - uy[k] * vx[k];
-    const double n2 = cx * cx + cy * cy + cz * cz;
-    const double length = std::sqrt(n2);
-    nx[k] = cx / length;
-    ny[k] = cy / length;
-    nz[k] = cz / length;
-    length2[k] = n2;
-  }
-}
 }  // namespace
 
 void PatchSampler::BasisColumns::resize(size_t n) {
@@ -83,11 +50,6 @@ PatchSampler::PatchSampler(Method method, const std::vector<ControlNet>& nets, i
     table_.set(static_cast<size_t>(k), static_cast<double>(k) / resolution);
   leaf_u_.resize(samples);
   leaf_v_.resize(samples);
-  for (auto& coordinates : rows_)
-    for (auto& row : coordinates) row.resize(samples);
-  for (auto& coordinates : rows_dv_)
-    for (auto& row : coordinates) row.resize(samples);
-  for (auto& lane : lane_) lane.resize(samples);
 }
 
 void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out) {
@@ -119,6 +81,13 @@ void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, cons
   done_stride_ = nv;
   origin_ = net.p[0];
   descend_block(p, p.relative, 1, 0, 0, nu, 0, nv, out);
+}
+
+bool PatchSampler::pending(int iu, int nu, int jv, int nv) const {
+  for (int i = iu; i < iu + nu; ++i)
+    for (int j = jv; j < jv + nv; ++j)
+      if (!done_[static_cast<size_t>(i) * done_stride_ + j]) return true;
+  return false;
 }
 
 void PatchSampler::descend_block(Patch& p, const ControlNet& net, std::uint64_t path, int level,
@@ -174,7 +143,7 @@ void PatchSampler::descend_block(Patch& p, const ControlNet& net, std::uint64_t 
     for (int qv = 0; qv < 2; ++qv) {
       const int ci = qu == 0 ? iu : su, cn = qu == 0 ? su - iu : iu + nu - su;
       const int cj = qv == 0 ? jv : sv, cm = qv == 0 ? sv - jv : jv + nv - sv;
-      if (cn == 0 || cm == 0) continue;
+      if (!pending(ci, cn, cj, cm)) continue;  // e.g. only the corner evaluated here
       const auto q = static_cast<std::uint64_t>(2 * qu + qv);
       descend_block(p, children[2 * qu + qv], level < 30 ? path * 4 + q : 0, level + 1, ci, cn, cj,
                     cm, out);
@@ -185,53 +154,83 @@ void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, i
                                     const BasisColumns& bu, int bu_at, const BasisColumns& bv,
                                     int bv_at, int iu, int nu, int jv, int nv, const GridOut& out,
                                     bool use_done) {
-  // evaluate_polynomial's sums in its order, spread over the samples of a grid row: each loop
-  // runs over j on plain arrays, which the compiler vectorises.
+  // evaluate_polynomial's sums in its order, spread over up to kChunk samples of a grid row: each
+  // loop over k below works on local arrays, which the compiler vectorises.
+  constexpr int kChunk = 16;
+  double points[4][4][3];  // [a][b][xyz]
   for (int a = 0; a < 4; ++a)
-    for (int x = 0; x < 3; ++x) {
-      const double p[4] = {net.at(a, 0)[x], net.at(a, 1)[x], net.at(a, 2)[x], net.at(a, 3)[x]};
-      weighted_sum(nv, p, bv.b[0].data() + bv_at, bv.b[1].data() + bv_at, bv.b[2].data() + bv_at,
-                   bv.b[3].data() + bv_at, rows_[a][x].data());
-      weighted_sum(nv, p, bv.d[0].data() + bv_at, bv.d[1].data() + bv_at, bv.d[2].data() + bv_at,
-                   bv.d[3].data() + bv_at, rows_dv_[a][x].data());
-    }
+    for (int b = 0; b < 4; ++b)
+      for (int x = 0; x < 3; ++x) points[a][b][x] = net.at(a, b)[x];
   const double tiny = detail::degenerate_threshold(net);
-  double* position[3] = {lane_[0].data(), lane_[1].data(), lane_[2].data()};
-  double* du[3] = {lane_[3].data(), lane_[4].data(), lane_[5].data()};
-  double* dv[3] = {lane_[6].data(), lane_[7].data(), lane_[8].data()};
-  double* normal[3] = {lane_[9].data(), lane_[10].data(), lane_[11].data()};
-  double* normal2 = lane_[12].data();
-  for (int ii = 0; ii < nu; ++ii) {
-    const int ub = bu_at + ii;
-    const double b[4] = {bu.b[0][ub], bu.b[1][ub], bu.b[2][ub], bu.b[3][ub]};
-    const double d[4] = {bu.d[0][ub], bu.d[1][ub], bu.d[2][ub], bu.d[3][ub]};
-    for (int x = 0; x < 3; ++x) {
-      const auto& r = rows_;
-      const auto& s = rows_dv_;
-      weighted_sum(nv, b, r[0][x].data(), r[1][x].data(), r[2][x].data(), r[3][x].data(),
-                   position[x]);
-      weighted_sum(nv, d, r[0][x].data(), r[1][x].data(), r[2][x].data(), r[3][x].data(), du[x]);
-      weighted_sum(nv, b, s[0][x].data(), s[1][x].data(), s[2][x].data(), s[3][x].data(), dv[x]);
-    }
-    unit_normals(nv, du[0], du[1], du[2], dv[0], dv[1], dv[2], normal[0], normal[1], normal[2],
-                 normal2);
-    const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv;
-    const char* done =
-        use_done ? done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv : nullptr;
-    for (int k = 0; k < nv; ++k) {
-      if (done && done[k]) continue;
-      // patch_normal's test; the degenerate points (and NaN) take its whole path.
-      out.normals[row_at + k] =
-          normal2[k] > tiny
-              ? Vec3(normal[0][k], normal[1][k], normal[2][k])
-              : detail::patch_normal(net, detail::cubic_basis(bu.t[ub]),
-                                     detail::cubic_basis(bv.t[bv_at + k]), bu.t[ub],
-                                     bv.t[bv_at + k], Vec3(du[0][k], du[1][k], du[2][k]),
-                                     Vec3(dv[0][k], dv[1][k], dv[2][k]), tiny);
-      Vec3 p(position[0][k], position[1][k], position[2][k]);
-      if (origin) p += *origin;
-      out.positions[row_at + k] = p;
-      if (out.levels) out.levels[row_at + k] = level;
+  for (int jc = 0; jc < nv; jc += kChunk) {
+    const int m = std::min(kChunk, nv - jc);
+    double vb[4][kChunk], vd[4][kChunk];
+    for (int b = 0; b < 4; ++b)
+      for (int k = 0; k < m; ++k) {
+        vb[b][k] = bv.b[b][bv_at + jc + k];
+        vd[b][k] = bv.d[b][bv_at + jc + k];
+      }
+    double rows[4][3][kChunk], rows_dv[4][3][kChunk];  // sums over b, of b(v) and b'(v)
+    for (int a = 0; a < 4; ++a)
+      for (int x = 0; x < 3; ++x)
+        for (int k = 0; k < m; ++k) {
+          double r = 0, r_dv = 0;
+          for (int b = 0; b < 4; ++b) {
+            r += vb[b][k] * points[a][b][x];
+            r_dv += vd[b][k] * points[a][b][x];
+          }
+          rows[a][x][k] = r;
+          rows_dv[a][x][k] = r_dv;
+        }
+    for (int ii = 0; ii < nu; ++ii) {
+      const int ub = bu_at + ii;
+      const double b[4] = {bu.b[0][ub], bu.b[1][ub], bu.b[2][ub], bu.b[3][ub]};
+      const double d[4] = {bu.d[0][ub], bu.d[1][ub], bu.d[2][ub], bu.d[3][ub]};
+      double position[3][kChunk], du[3][kChunk], dv[3][kChunk], normal[3][kChunk], length2[kChunk];
+      for (int k = 0; k < m; ++k) {
+        double uu[3], vv[3];
+        for (int x = 0; x < 3; ++x) {
+          double p = 0, u = 0, v = 0;
+          for (int a = 0; a < 4; ++a) {
+            p += b[a] * rows[a][x][k];
+            u += d[a] * rows[a][x][k];
+            v += b[a] * rows_dv[a][x][k];
+          }
+          uu[x] = u;
+          vv[x] = v;
+          position[x][k] = p;
+          du[x][k] = u;
+          dv[x][k] = v;
+        }
+        // du x dv normalized as Eigen's cross() and normalized() compute it.
+        const double cx = uu[1] * vv[2] - uu[2] * vv[1];
+        const double cy = uu[2] * vv[0] - uu[0] * vv[2];
+        const double cz = uu[0] * vv[1] - uu[1] * vv[0];
+        const double n2 = cx * cx + cy * cy + cz * cz;
+        const double length = std::sqrt(n2);
+        normal[0][k] = cx / length;
+        normal[1][k] = cy / length;
+        normal[2][k] = cz / length;
+        length2[k] = n2;
+      }
+      const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv + jc;
+      const char* done =
+          use_done ? done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv + jc : nullptr;
+      for (int k = 0; k < m; ++k) {
+        if (done && done[k]) continue;
+        // patch_normal's test; the degenerate points (and NaN) take its whole path.
+        const double v = bv.t[bv_at + jc + k];
+        out.normals[row_at + k] =
+            length2[k] > tiny
+                ? Vec3(normal[0][k], normal[1][k], normal[2][k])
+                : detail::patch_normal(net, detail::cubic_basis(bu.t[ub]), detail::cubic_basis(v),
+                                       bu.t[ub], v, Vec3(du[0][k], du[1][k], du[2][k]),
+                                       Vec3(dv[0][k], dv[1][k], dv[2][k]), tiny);
+        Vec3 p(position[0][k], position[1][k], position[2][k]);
+        if (origin) p += *origin;
+        out.positions[row_at + k] = p;
+        if (out.levels) out.levels[row_at + k] = level;
+      }
     }
   }
 }

@@ -75,6 +75,8 @@ class PatchSampler {
   /// v_[level][jv..]. Samples marked in done_ were evaluated higher up.
   void descend_block(Patch& p, const ControlNet& net, std::uint64_t path, int level, int iu, int nu,
                      int jv, int nv, const GridOut& out);
+  /// Whether a sample of the sub-block is not yet in done_.
+  [[nodiscard]] bool pending(int iu, int nu, int jv, int nv) const;
   /// The polynomial of `net` at the sub-block [iu, iu + nu) x [jv, jv + nv), with the bases
   /// of bu from entry bu_at and of bv from entry bv_at; `origin` (if any) is added to positions;
   /// samples marked in done_ are skipped if use_done.
@@ -94,9 +96,6 @@ class PatchSampler {
   std::vector<char> done_;                  ///< [i][j] of the block: already written
   int done_stride_ = 0;
   Vec3 origin_ = Vec3::Zero();  ///< the extraordinary root net's first point
-  std::array<std::array<std::vector<double>, 3>, 4> rows_, rows_dv_;  ///< [a][xyz][j]
-  /// One grid row: position, du, dv, unit normal (xyz each), |du x dv|^2.
-  std::array<std::vector<double>, 13> lane_;
   std::array<Patch, 4> patches_;
   int next_ = 0;                                   ///< the slot a new corner takes (round robin)
   std::array<std::array<ControlNet, 4>, 2> deep_;  ///< uncached splits, alternately
