@@ -264,13 +264,32 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
   }
   const int side = n - 1;
   if (side == 0) return;
-  sampler.evaluate_block(
-      c, 1, side, 1, side,
-      {positions + 2 * side, normals + 2 * side, levels ? levels + 2 * side : nullptr, side});
+  // The corner's own samples in one call (one descent of an extraordinary net): rows i = 1..n,
+  // columns j = 0..n - 1, i.e. the interior, the edge half (j = 0), the spoke (i = n) and the
+  // edge midpoint (n, 0), which is not the block's; then laid out in the block's order.
+  const auto own = static_cast<size_t>(n) * n;
+  scratch.grid_positions.resize(own);
+  scratch.grid_normals.resize(own);
+  scratch.grid_levels.resize(own);
+  sampler.evaluate_block(c, 1, n, 0, side,
+                         {scratch.grid_positions.data(), scratch.grid_normals.data(),
+                          levels ? scratch.grid_levels.data() : nullptr, n});
+  const auto place = [&](std::int64_t to, int i, int j) {
+    const size_t from = static_cast<size_t>(i - 1) * n + j;
+    positions[to] = scratch.grid_positions[from];
+    normals[to] = scratch.grid_normals[from];
+    if (levels) levels[to] = scratch.grid_levels[from];
+  };
+  for (int m = 1; m < n; ++m) {
+    place(m - 1, m, 0);         // edge half
+    place(side + m - 1, n, m);  // spoke
+  }
+  for (int i = 1; i < n; ++i)
+    for (int j = 1; j < n; ++j) place(2 * side + (i - 1) * side + (j - 1), i, j);
   single(normals + 2 * side, static_cast<std::int64_t>(side) * side);
-  // The edge half (i, 0), shared with (0, i) of the corner across it (none on a boundary), and
-  // the spoke (n, j), shared with (j, n) of the next corner: their normals are the normalized
-  // sums, the first patch's first.
+  // The edge half (i, 0) is shared with (0, i) of the corner across it (none on a boundary), the
+  // spoke (n, j) with (j, n) of the next corner: their normals are the normalized sums, the
+  // first patch's first.
   scratch.shared_positions.resize(static_cast<size_t>(side));
   scratch.shared_normals.resize(static_cast<size_t>(side));
   const auto shared = [&](Vec3* normal, int other, int i0, int i1, int j0, int j1) {
@@ -284,10 +303,7 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
     for (int s = 0; s < side; ++s)
       normal[s] = (Vec3::Zero() + normal[s] + scratch.shared_normals[s]).normalized();
   };
-  sampler.evaluate_block(c, 1, side, 0, 0, {positions, normals, levels, 1});
   shared(normals, corner_index(mesh_.rotate_cw(c)), 0, 0, 1, side);
-  sampler.evaluate_block(c, n, n, 1, side,
-                         {positions + side, normals + side, levels ? levels + side : nullptr, 0});
   shared(normals + side, corner_index(mesh_.next(c)), 1, side, n, n);
 }
 

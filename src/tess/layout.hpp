@@ -73,8 +73,11 @@ class TessellationLayout {
     return welded_ ? static_cast<std::int64_t>(n_) * n_ - 1 : grid_.num_samples();
   }
   struct BlockScratch {
-    std::vector<Vec3> positions, normals, shared_positions, shared_normals;
+    std::vector<Vec3> positions, normals;  ///< a block cut by the range
     std::vector<int> levels;
+    std::vector<Vec3> grid_positions, grid_normals;  ///< a corner's own samples
+    std::vector<int> grid_levels;
+    std::vector<Vec3> shared_positions, shared_normals;  ///< a neighbour's side
   };
   /// Positions, normals and levels (if not null) of corner k's block, in its order.
   void evaluate_block(PatchSampler& sampler, int k, Vec3* positions, Vec3* normals, int* levels,
