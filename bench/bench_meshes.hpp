@@ -13,7 +13,7 @@
 
 namespace stitch::bench {
 
-enum MeshKind : int { quad_torus = 0, mixed_torus = 1 };
+enum MeshKind : int { quad_torus = 0, mixed_torus = 1, triangle_torus = 2 };
 
 // A torus of m x n quads, all vertices regular.
 inline HalfedgeMesh make_quad_torus(int m, int n) {
@@ -35,9 +35,22 @@ inline HalfedgeMesh make_mixed_torus(int m, int n) {
   return mesh;
 }
 
+// The torus with every quad split along the same diagonal: all triangles, every vertex of
+// valence 6 and every face centre of valence 3, so every patch has extraordinary corners.
+inline HalfedgeMesh make_triangle_torus(int m, int n) {
+  HalfedgeMesh mesh = make_torus(m, n);
+  for (int f = 0; f < m * n; ++f) {
+    const Corner a = mesh.halfedge(Face(f));
+    insert_edge(mesh, a, mesh.next(mesh.next(a)));
+  }
+  return mesh;
+}
+
 // Grid sizes giving about 1k, 10k and 100k faces.
 inline std::pair<int, int> torus_grid(MeshKind kind, int target_faces) {
-  const double quads = kind == quad_torus ? target_faces : target_faces / 1.25;
+  const double quads = kind == quad_torus    ? target_faces
+                       : kind == mixed_torus ? target_faces / 1.25
+                                             : target_faces / 2.0;
   const int side = static_cast<int>(std::lround(std::sqrt(quads)));
   return {side, side};
 }
@@ -48,15 +61,20 @@ inline const HalfedgeMesh& bench_mesh(MeshKind kind, int target_faces) {
   auto it = cache.find(key);
   if (it == cache.end()) {
     const auto [m, n] = torus_grid(kind, target_faces);
-    it = cache.emplace(key, kind == quad_torus ? make_quad_torus(m, n) : make_mixed_torus(m, n))
+    it = cache
+             .emplace(key, kind == quad_torus    ? make_quad_torus(m, n)
+                           : kind == mixed_torus ? make_mixed_torus(m, n)
+                                                 : make_triangle_torus(m, n))
              .first;
   }
   return it->second;
 }
 
 inline std::string mesh_label(MeshKind kind, const HalfedgeMesh& mesh) {
-  return std::string(kind == quad_torus ? "quad torus" : "tris+quads torus") + ", " +
-         std::to_string(mesh.num_faces()) + " faces";
+  return std::string(kind == quad_torus    ? "quad torus"
+                     : kind == mixed_torus ? "tris+quads torus"
+                                           : "triangle torus") +
+         ", " + std::to_string(mesh.num_faces()) + " faces";
 }
 
 }  // namespace stitch::bench

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "bench_meshes.hpp"
+#include "eval/patch_sampler.hpp"
 #include "mesh/opensubdiv_topology.hpp"
 #include "stitch/eval/catmull_clark.hpp"
 #include "stitch/eval/surface.hpp"
@@ -228,6 +229,107 @@ void BM_osd_native(benchmark::State& state) {
   state.counters["cpu_s"] = total.cpu / static_cast<double>(state.iterations());  // all threads
 }
 
+// Issue 14's comparison: the full pipeline mesh -> welded tessellation in memory (stitch::Surface
+// for mdc + tessellate at resolution 8) against OpenSubdiv's own route at rate 16 per face edge
+// (osd_native_tessellation), both on both cores, timed one after the other in each iteration so
+// that the ratio comes from one run. Rates are samples (stitch: 81 per corner, shared ones
+// counted per patch) and points (Bfr: per face, shared ones counted per face) per second.
+void BM_vs_bfr(benchmark::State& state) {
+  const auto kind = static_cast<MeshKind>(state.range(0));
+  const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
+  const stitch::TessellationOptions options{kResolution, true};
+  StageTime stitch_time, bfr_time;
+  size_t bfr_points = 0;
+  for (auto _ : state) {
+    const double before = stitch_time.wall + bfr_time.wall;
+    Stopwatch start;
+    {
+      const stitch::Surface surface(mesh, stitch::Method::mdc);
+      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+    }
+    stitch_time.add_since(start);
+    start = Stopwatch();
+    double checksum = 0.0;
+    bfr_points = osd_native_tessellation(mesh, checksum);
+    benchmark::DoNotOptimize(checksum);
+    bfr_time.add_since(start);
+    state.SetIterationTime(stitch_time.wall + bfr_time.wall - before);
+  }
+  const double n = static_cast<double>(state.iterations());
+  const double samples = static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch;
+  const double stitch_rate = samples * n / stitch_time.wall;
+  const double bfr_rate = static_cast<double>(bfr_points) * n / bfr_time.wall;
+  state.SetLabel(mesh_label(kind, mesh));
+  state.counters["stitch_samples/s"] = stitch_rate;
+  state.counters["bfr_points/s"] = bfr_rate;
+  state.counters["stitch/bfr"] = stitch_rate / bfr_rate;
+  state.counters["stitch/bfr_cpu"] =
+      (samples / stitch_time.cpu) / (static_cast<double>(bfr_points) / bfr_time.cpu);
+}
+
+// The full pipeline alone (mdc surface + welded tessellation at resolution 8), on both cores:
+// the stitch half of BM_vs_bfr, small enough at 10k faces to count instructions with
+// valgrind --tool=callgrind.
+void BM_tessellate(benchmark::State& state) {
+  const auto kind = static_cast<MeshKind>(state.range(0));
+  const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
+  const stitch::TessellationOptions options{kResolution, true};
+  for (auto _ : state) {
+    const stitch::Surface surface(mesh, stitch::Method::mdc);
+    benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+  }
+  state.SetLabel(mesh_label(kind, mesh));
+  state.counters["samples/s"] =
+      benchmark::Counter(static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch,
+                         benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Issue 14 item 2: the cost of one sample of a patch at an extraordinary point against one of a
+// regular patch, on one thread, every corner grid of the mesh at resolution 8 sampled a grid at a
+// time as a tessellation samples it (PatchSampler::evaluate_block; before it existed, this
+// benchmark called evaluate_grid sample by sample). "ev/regular" is the ratio of the costs per
+// sample.
+void BM_patch_cost(benchmark::State& state) {
+  const auto kind = static_cast<MeshKind>(state.range(0));
+  const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
+  const stitch::Surface surface(mesh, stitch::Method::mdc);
+  std::vector<Corner> regular, extraordinary;
+  for (const Corner c : surface.corners())
+    (surface.bezier().nets[c.idx].regular() ? regular : extraordinary).push_back(c);
+  auto sample = [&](const std::vector<Corner>& corners) {
+    stitch::PatchSampler sampler(surface, kResolution);
+    std::vector<stitch::Vec3> positions(kSamplesPerPatch), normals(kSamplesPerPatch);
+    double sum = 0.0;
+    for (const Corner c : corners) {
+      sampler.evaluate_block(c, 0, kResolution, 0, kResolution,
+                             {positions.data(), normals.data(), nullptr, kResolution + 1});
+      sum += positions[kSamplesPerPatch / 2].x() + normals[kSamplesPerPatch / 2].x();
+    }
+    return sum;
+  };
+  StageTime regular_time, extraordinary_time;
+  for (auto _ : state) {
+    Stopwatch start;
+    benchmark::DoNotOptimize(sample(regular));
+    regular_time.add_since(start);
+    start = Stopwatch();
+    benchmark::DoNotOptimize(sample(extraordinary));
+    extraordinary_time.add_since(start);
+  }
+  const double n = static_cast<double>(state.iterations());
+  const auto per_sample = [&](const StageTime& t, size_t corners) {
+    return corners == 0 ? 0.0 : t.cpu / n / static_cast<double>(corners * kSamplesPerPatch) * 1e9;
+  };
+  const double regular_ns = per_sample(regular_time, regular.size());
+  const double extraordinary_ns = per_sample(extraordinary_time, extraordinary.size());
+  state.SetLabel(mesh_label(kind, mesh));
+  state.counters["regular_patches"] = static_cast<double>(regular.size());
+  state.counters["ev_patches"] = static_cast<double>(extraordinary.size());
+  state.counters["regular_ns/sample"] = regular_ns;
+  state.counters["ev_ns/sample"] = extraordinary_ns;
+  if (regular_ns > 0) state.counters["ev/regular"] = extraordinary_ns / regular_ns;
+}
+
 void mesh_sizes(benchmark::internal::Benchmark* b) {
   for (int kind : {quad_torus, mixed_torus}) {
     for (int faces : {1000, 10000, 100000}) b->Args({kind, faces});
@@ -241,5 +343,21 @@ void mesh_sizes(benchmark::internal::Benchmark* b) {
 // The 100k meshes take seconds per iteration: a few iterations are enough for stable figures.
 BENCHMARK(BM_compare)->Apply(mesh_sizes)->UseManualTime()->MinTime(2.0);
 BENCHMARK(BM_osd_native)->Apply(mesh_sizes)->MinTime(1.0)->UseRealTime();
+BENCHMARK(BM_vs_bfr)
+    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}})
+    ->ArgNames({"mesh", "faces"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_tessellate)
+    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}})
+    ->ArgNames({"mesh", "faces"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_patch_cost)
+    ->ArgsProduct({{mixed_torus, triangle_torus}, {10000}})
+    ->ArgNames({"mesh", "faces"})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 BENCHMARK_MAIN();

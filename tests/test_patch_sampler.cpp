@@ -72,5 +72,48 @@ TEST(PatchSampler, GridPointsAreExactlySurfaceEvaluate) {
     }
 }
 
+TEST(PatchSampler, BlocksAreExactlySurfaceEvaluateAndStayInTheirPlaces) {
+  HalfedgeMesh mesh = make_cube();
+  apply_operation(mesh, "insert-edge 1@1 5@2");
+  apply_operation(mesh, "insert-edge 2@3 5@3");
+  apply_operation(mesh, "vertex-insertion");
+  for (const Method method : {Method::mdc, Method::asc, Method::cc})
+    for (const int n : {1, 3, 5, 8, 16}) {
+      const Surface surface(mesh, method);
+      PatchSampler sampler(surface, n);
+      const auto& corners = surface.corners();
+      // The whole grid, its interior, one row, one column, a corner sample; the stride leaves a
+      // gap after each row that must stay as it was.
+      const std::vector<std::array<int, 4>> blocks = {
+          {0, n, 0, n}, {1, n - 1, 1, n - 1}, {n, n, 0, n}, {0, n, n / 2, n / 2}, {0, 0, n, n}};
+      for (size_t k = 0; k < corners.size(); ++k)
+        for (const auto& [i0, i1, j0, j1] : blocks) {
+          if (i1 < i0 || j1 < j0) continue;
+          const int stride = j1 - j0 + 3;
+          const size_t size = static_cast<size_t>(i1 - i0 + 1) * stride;
+          const Vec3 unset = Vec3::Constant(std::nan(""));
+          std::vector<Vec3> positions(size, unset), normals(size, unset);
+          std::vector<int> levels(size, -1);
+          sampler.evaluate_block(corners[k], i0, i1, j0, j1,
+                                 {positions.data(), normals.data(), levels.data(), stride});
+          for (int i = i0; i <= i1; ++i)
+            for (int j = j0; j < j0 + stride; ++j) {
+              const size_t at = static_cast<size_t>(i - i0) * stride + (j - j0);
+              if (j > j1) {
+                ASSERT_TRUE(positions[at].hasNaN() && normals[at].hasNaN() && levels[at] == -1);
+                continue;
+              }
+              const SurfacePoint expected = surface.evaluate(corners[k], static_cast<double>(i) / n,
+                                                             static_cast<double>(j) / n);
+              ASSERT_EQ(positions[at], expected.position)
+                  << to_string(method) << " n=" << n << " corner " << corners[k].idx << " (" << i
+                  << ", " << j << ")";
+              ASSERT_EQ(normals[at], expected.normal);
+              ASSERT_EQ(levels[at], expected.level);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace stitch

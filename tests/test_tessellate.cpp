@@ -1,9 +1,17 @@
 // The tessellated surface: welded output is a closed, oriented 2-manifold with the input's
 // topology; unwelded output keeps every patch's own grid.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
+#include <vector>
+
+#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
+#include "tess/layout.hpp"
 #include "test_support.hpp"
 
 namespace stitch {
@@ -77,6 +85,68 @@ TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
   int deepest = 0;
   for (int l : s.level) deepest = std::max(deepest, l);
   EXPECT_GE(deepest, 3);  // (1/5, 0) needs 3 splits before it leaves the corner's child
+}
+
+TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) {
+  // Extraordinary vertices of valence 3 and 5, a 10-sided face, triangles, regular patches and a
+  // boundary (the cube without one face).
+  HalfedgeMesh closed = make_cube();
+  apply_operation(closed, "insert-edge 1@1 5@2");
+  apply_operation(closed, "insert-edge 2@3 5@3");
+  apply_operation(closed, "vertex-insertion");
+  PolygonSoup soup = to_polygon_soup(closed);
+  soup.faces.pop_back();
+  const HalfedgeMesh open = build_mesh(soup);
+  for (const HalfedgeMesh* mesh : std::array<const HalfedgeMesh*, 2>{&closed, &open})
+    for (const Method method : {Method::mdc, Method::asc})
+      for (const int n : {1, 2, 3, 8})
+        for (const bool welded : {true, false}) {
+          const Surface surface(*mesh, method);
+          TessellationOptions options{n, welded};
+          options.sample_attributes = true;
+          const TessellatedMesh s = tessellate(*mesh, surface, options);
+          const TessellationLayout layout(*mesh, surface.corners(), n, welded);
+          ASSERT_EQ(s.num_vertices(), layout.num_vertices());
+          std::vector<GridSample> sharing;
+          for (int v = 0; v < s.num_vertices(); ++v) {
+            // The first sample's point; the normalized sum of all sharing samples' normals.
+            layout.samples(v, sharing);
+            Vec3 normal = Vec3::Zero();
+            SurfacePoint first;
+            for (size_t k = 0; k < sharing.size(); ++k) {
+              const GridSample& g = sharing[k];
+              const SurfacePoint p =
+                  surface.evaluate(surface.corners()[g.corner], static_cast<double>(g.i) / n,
+                                   static_cast<double>(g.j) / n);
+              normal += p.normal;
+              if (k == 0) first = p;
+            }
+            if (sharing.size() > 1) normal.normalize();
+            const std::string where =
+                fmt::format("{} n={} welded={} vertex {}", to_string(method), n, welded, v);
+            ASSERT_EQ(s.positions[v], first.position) << where;
+            ASSERT_EQ(s.normals[v], normal) << where;
+            ASSERT_EQ(s.level[v], first.level) << where;
+            ASSERT_EQ(s.patch[v], surface.corners()[sharing[0].corner].idx) << where;
+            ASSERT_EQ(s.uv[v], Eigen::Vector2d(static_cast<double>(sharing[0].i) / n,
+                                               static_cast<double>(sharing[0].j) / n))
+                << where;
+          }
+          // Quads walked corner by corner, from any start, are quad(q)'s.
+          ASSERT_EQ(static_cast<std::int64_t>(s.quads.size()), layout.num_quads());
+          for (const std::int64_t begin : {std::int64_t{0}, layout.num_quads() / 3 + 1}) {
+            std::vector<int> walked(static_cast<size_t>(4 * (layout.num_quads() - begin)));
+            layout.quads(begin, layout.num_quads(), walked.data());
+            for (std::int64_t q = begin; q < layout.num_quads(); ++q)
+              for (int m = 0; m < 4; ++m) {
+                ASSERT_EQ(walked[static_cast<size_t>(4 * (q - begin) + m)], layout.quad(q)[m])
+                    << to_string(method) << " n=" << n << " welded=" << welded << " quad " << q;
+                if (begin == 0) {
+                  ASSERT_EQ(s.quads[static_cast<size_t>(q)][m], layout.quad(q)[m]);
+                }
+              }
+          }
+        }
 }
 
 TEST(Tessellate, RefusesAResolutionBelowOne) {

@@ -13,6 +13,15 @@
 
 namespace stitch {
 
+/// Where PatchSampler::evaluate_block writes sample (i, j) of its block [i0, i1] x [j0, j1]:
+/// element (i - i0) * stride + (j - j0) of each array (levels may be null).
+struct GridOut {
+  Vec3* positions = nullptr;
+  Vec3* normals = nullptr;
+  int* levels = nullptr;
+  std::ptrdiff_t stride = 0;
+};
+
 class PatchSampler {
  public:
   /// `resolution`: the grid evaluate_grid samples (0 when it is not used).
@@ -27,6 +36,12 @@ class PatchSampler {
   /// summed against the basis at every j (the inner sums of evaluate_polynomial), so a point of
   /// a patch sampled many times costs 12 multiply-adds and a normal.
   SurfacePoint evaluate_grid(Corner c, int i, int j);
+  /// evaluate_grid(c, i, j)'s position, normal and level for every i in [i0, i1] and j in
+  /// [j0, j1], to the bit, at a fraction of the cost: a polynomial net is summed against basis
+  /// tables a grid row at a time (loops over j the compiler vectorises); an extraordinary net is
+  /// split once per level for all the samples below each child, and each regular child is
+  /// evaluated the same way with the bases of its own parameters.
+  void evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out);
 
  private:
   struct Split {
@@ -48,12 +63,39 @@ class PatchSampler {
   [[nodiscard]] SurfacePoint direct(Corner c, double u, double v) const;
   const std::array<ControlNet, 4>& split_at(Patch& patch, const ControlNet& net,
                                             std::uint64_t path);
+  /// Bases in structure-of-arrays form: b[a][k], d[a][k] for the k-th parameter value.
+  struct BasisColumns {
+    std::vector<double> t;  ///< the parameter values
+    std::array<std::vector<double>, 4> b, d;
+    void resize(size_t n);
+    void set(size_t k, double value);  ///< entry k from detail::cubic_basis(value)
+  };
+  /// The samples of the sub-block [iu, iu + nu) x [jv, jv + nv) (block-relative indices) whose
+  /// descent reaches `net` at `level`; their parameters in `net` are u_[level][iu..] and
+  /// v_[level][jv..]. Samples marked in done_ were evaluated higher up.
+  void descend_block(Patch& p, const ControlNet& net, std::uint64_t path, int level, int iu, int nu,
+                     int jv, int nv, const GridOut& out);
+  /// Whether a sample of the sub-block is not yet in done_.
+  [[nodiscard]] bool pending(int iu, int nu, int jv, int nv) const;
+  /// The polynomial of `net` at the sub-block [iu, iu + nu) x [jv, jv + nv), with the bases
+  /// of bu from entry bu_at and of bv from entry bv_at; `origin` (if any) is added to positions;
+  /// samples marked in done_ are skipped if use_done.
+  void polynomial_block(const ControlNet& net, const Vec3* origin, int level,
+                        const BasisColumns& bu, int bu_at, const BasisColumns& bv, int bv_at,
+                        int iu, int nu, int jv, int nv, const GridOut& out, bool use_done);
 
   const Surface* surface_;  ///< null: the Bézier patches of nets_ alone (not cc)
   Method method_;
   const std::vector<ControlNet>& nets_;
   int resolution_;
   std::vector<detail::CubicBasis> basis_;  ///< at t = k / resolution, k = 0..resolution
+  BasisColumns table_;                     ///< basis_ as columns
+  // Scratch of evaluate_block, kept to avoid allocating per call.
+  BasisColumns leaf_u_, leaf_v_;            ///< bases of an extraordinary net's child
+  std::vector<std::vector<double>> u_, v_;  ///< [level][k]: parameters in the level's net
+  std::vector<char> done_;                  ///< [i][j] of the block: already written
+  int done_stride_ = 0;
+  Vec3 origin_ = Vec3::Zero();  ///< the extraordinary root net's first point
   std::array<Patch, 4> patches_;
   int next_ = 0;                                   ///< the slot a new corner takes (round robin)
   std::array<std::array<ControlNet, 4>, 2> deep_;  ///< uncached splits, alternately

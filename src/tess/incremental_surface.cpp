@@ -110,24 +110,22 @@ std::vector<Corner> IncrementalSurface::changed_nets(const HalfedgeMesh& mesh,
 
 void IncrementalSurface::evaluate(const std::vector<Corner>& patches, const Surface* cc) {
   const int per_patch = vertices_per_patch();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, patches.size(), 16),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      // As tessellate samples: grid points from the sampler's tables, the
-                      // same numbers as evaluating each point on its own.
-                      PatchSampler sampler = cc ? PatchSampler(*cc, resolution())
-                                                : PatchSampler(method_, nets_, resolution());
-                      for (size_t q = range.begin(); q < range.end(); ++q) {
-                        const Corner c = patches[q];
-                        for (int s = 0; s < per_patch; ++s) {
-                          const SurfacePoint sp =
-                              sampler.evaluate_grid(c, grid_.row(s), grid_.column(s));
-                          const size_t at = static_cast<size_t>(c.idx) * per_patch + s;
-                          tess_.positions[at] = sp.position;
-                          tess_.normals[at] = sp.normal;
-                          tess_.level[at] = sp.level;
-                        }
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, patches.size(), 16),
+      [&](const tbb::blocked_range<size_t>& range) {
+        // As tessellate samples: a patch's grid at once, the same numbers as
+        // evaluating each point on its own.
+        PatchSampler sampler =
+            cc ? PatchSampler(*cc, resolution()) : PatchSampler(method_, nets_, resolution());
+        const int n = resolution();
+        for (size_t q = range.begin(); q < range.end(); ++q) {
+          const Corner c = patches[q];
+          const size_t at = static_cast<size_t>(c.idx) * per_patch;
+          sampler.evaluate_block(c, 0, n, 0, n,
+                                 {tess_.positions.data() + at, tess_.normals.data() + at,
+                                  tess_.level.data() + at, n + 1});
+        }
+      });
   recomputed_ = patches;
 }
 

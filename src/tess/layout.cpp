@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <limits>
 
 #include "../eval/patch_sampler.hpp"
@@ -88,21 +89,51 @@ std::array<std::int64_t, 4> TessellationLayout::quad(std::int64_t q) const {
 }
 
 void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) const {
-  const std::int64_t cells = static_cast<std::int64_t>(n_) * n_;
-  auto k = static_cast<int>(begin / cells);
-  const auto cell = static_cast<int>(begin % cells);
-  int i = cell / n_, j = cell % n_;
-  for (std::int64_t q = begin; q < end; ++q, out += 4) {
-    const auto corners = cell_quad(k, i, j);
-    for (int m = 0; m < 4; ++m) out[m] = static_cast<int>(corners[m]);
-    if (++j == n_) {
-      j = 0;
-      if (++i == n_) {
-        i = 0;
-        ++k;
-      }
+  // Corner by corner: the numbers of its (n + 1)^2 grid samples once, its cells from them.
+  const int n = n_;
+  const std::int64_t cells = static_cast<std::int64_t>(n) * n;
+  std::vector<std::int64_t> grid(static_cast<size_t>(n + 1) * (n + 1));
+  for (std::int64_t q = begin; q < end;) {
+    const auto k = static_cast<int>(q / cells);
+    grid_vertices(k, grid.data());
+    const std::int64_t last = std::min(end, (k + 1) * cells);
+    for (; q < last; ++q, out += 4) {
+      const auto cell = static_cast<int>(q - k * cells);
+      const int at = (cell / n) * (n + 1) + cell % n;
+      out[0] = static_cast<int>(grid[at]);
+      out[1] = static_cast<int>(grid[at + n + 1]);
+      out[2] = static_cast<int>(grid[at + n + 2]);
+      out[3] = static_cast<int>(grid[at + 1]);
     }
   }
+}
+
+void TessellationLayout::grid_vertices(int k, std::int64_t* out) const {
+  const int n = n_, stride = n + 1;
+  if (!welded_) {
+    const std::int64_t first = static_cast<std::int64_t>(k) * grid_.num_samples();
+    for (int s = 0; s < grid_.num_samples(); ++s) out[s] = first + s;
+    return;
+  }
+  // vertex(k, i, j) a side at a time: the mesh is asked once per side, not once per sample.
+  const Corner c = corners_[k];
+  const std::int64_t side = n - 1, own = block(k);
+  out[0] = vertex(k, 0, 0);
+  out[n * stride] = vertex(k, n, 0);
+  out[n * stride + n] = vertex(k, n, n);
+  out[n] = vertex(k, 0, n);
+  const int x = extra_half_[c.idx];
+  const std::int64_t side_i0 =
+      x >= 0 ? first_extra_ + x * side : block(corner_index(mesh_.rotate_ccw(c)));
+  const std::int64_t side_jn = block(corner_index(mesh_.prev(c))) + side;
+  for (int m = 1; m < n; ++m) {
+    out[m * stride] = own + (m - 1);             // j = 0
+    out[m] = side_i0 + (m - 1);                  // i = 0
+    out[n * stride + m] = own + side + (m - 1);  // i = n
+    out[m * stride + n] = side_jn + (m - 1);     // j = n
+  }
+  for (int i = 1; i < n; ++i)
+    for (int j = 1; j < n; ++j) out[i * stride + j] = own + 2 * side + (i - 1) * side + (j - 1);
 }
 
 std::array<std::int64_t, 4> TessellationLayout::cell_quad(int k, int i, int j) const {
@@ -178,18 +209,143 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
 void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, std::int64_t end,
                                   Vec3* positions, Vec3* normals,
                                   const SampleAttributes& attributes) const {
-  std::vector<GridSample> sharing;
   PatchSampler sampler(surface, n_);
-  for (std::int64_t vertex = begin; vertex < end; ++vertex) {
+  BlockScratch scratch;
+  // Corner blocks (and unwelded grids) are evaluated a block at a time; the mesh vertices, face
+  // centres, edge midpoints and boundary halves, shared by varying numbers of patches, one by
+  // one.
+  const std::int64_t blocks_begin = welded_ ? first_block_ : 0;
+  const std::int64_t blocks_end = welded_ ? first_extra_ : num_vertices_;
+  const std::int64_t per_block = block_size();
+  evaluate_each(sampler, begin, std::min(end, blocks_begin), begin, positions, normals, attributes);
+  const std::int64_t lo = std::max(begin, blocks_begin), hi = std::min(end, blocks_end);
+  if (lo < hi && per_block > 0) {
+    for (std::int64_t k = (lo - blocks_begin) / per_block; blocks_begin + k * per_block < hi; ++k) {
+      const std::int64_t first = blocks_begin + k * per_block;
+      const auto corner = static_cast<int>(k);
+      if (first >= begin && first + per_block <= end) {
+        const std::int64_t at = first - begin;
+        evaluate_block(sampler, corner, positions + at, normals + at,
+                       attributes.level ? attributes.level + at : nullptr, scratch);
+        fill_block_attributes(corner, first, first + per_block, begin, attributes);
+        continue;
+      }
+      // A block cut by the range: evaluated whole aside, its part in the range copied.
+      scratch.positions.resize(static_cast<size_t>(per_block));
+      scratch.normals.resize(static_cast<size_t>(per_block));
+      scratch.levels.resize(static_cast<size_t>(per_block));
+      evaluate_block(sampler, corner, scratch.positions.data(), scratch.normals.data(),
+                     scratch.levels.data(), scratch);
+      const std::int64_t from = std::max(first, begin), to = std::min(first + per_block, end);
+      for (std::int64_t vertex = from; vertex < to; ++vertex) {
+        positions[vertex - begin] = scratch.positions[vertex - first];
+        normals[vertex - begin] = scratch.normals[vertex - first];
+        if (attributes.level) attributes.level[vertex - begin] = scratch.levels[vertex - first];
+      }
+      fill_block_attributes(corner, from, to, begin, attributes);
+    }
+  }
+  evaluate_each(sampler, std::max(begin, blocks_end), end, begin, positions, normals, attributes);
+}
+
+void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* positions,
+                                        Vec3* normals, int* levels, BlockScratch& scratch) const {
+  const int n = n_;
+  const Corner c = corners_[k];
+  // A sample of one patch keeps that patch's unit normal (plus zero, as the sum of one normal
+  // that the shared samples take: the same bits as sampling vertex by vertex).
+  const auto single = [](Vec3* normal, std::int64_t count) {
+    for (std::int64_t s = 0; s < count; ++s) normal[s] = Vec3::Zero() + normal[s];
+  };
+  if (!welded_) {
+    sampler.evaluate_block(c, 0, n, 0, n, {positions, normals, levels, n + 1});
+    single(normals, block_size());
+    return;
+  }
+  const int side = n - 1;
+  if (side == 0) return;
+  // The corner's own samples in one call (one descent of an extraordinary net): rows i = 1..n,
+  // columns j = 0..n - 1, i.e. the interior, the edge half (j = 0), the spoke (i = n) and the
+  // edge midpoint (n, 0), which is not the block's; then laid out in the block's order.
+  const auto own = static_cast<size_t>(n) * n;
+  scratch.grid_positions.resize(own);
+  scratch.grid_normals.resize(own);
+  scratch.grid_levels.resize(own);
+  sampler.evaluate_block(c, 1, n, 0, side,
+                         {scratch.grid_positions.data(), scratch.grid_normals.data(),
+                          levels ? scratch.grid_levels.data() : nullptr, n});
+  const auto place = [&](std::int64_t to, int i, int j) {
+    const size_t from = static_cast<size_t>(i - 1) * n + j;
+    positions[to] = scratch.grid_positions[from];
+    normals[to] = scratch.grid_normals[from];
+    if (levels) levels[to] = scratch.grid_levels[from];
+  };
+  for (int m = 1; m < n; ++m) {
+    place(m - 1, m, 0);         // edge half
+    place(side + m - 1, n, m);  // spoke
+  }
+  for (int i = 1; i < n; ++i)
+    for (int j = 1; j < n; ++j) place(2 * side + (i - 1) * side + (j - 1), i, j);
+  single(normals + 2 * side, static_cast<std::int64_t>(side) * side);
+  // The edge half (i, 0) is shared with (0, i) of the corner across it (none on a boundary), the
+  // spoke (n, j) with (j, n) of the next corner: their normals are the normalized sums, the
+  // first patch's first.
+  scratch.shared_positions.resize(static_cast<size_t>(side));
+  scratch.shared_normals.resize(static_cast<size_t>(side));
+  const auto shared = [&](Vec3* normal, int other, int i0, int i1, int j0, int j1) {
+    if (other < 0) {
+      single(normal, side);
+      return;
+    }
+    sampler.evaluate_block(
+        corners_[other], i0, i1, j0, j1,
+        {scratch.shared_positions.data(), scratch.shared_normals.data(), nullptr, 1});
+    for (int s = 0; s < side; ++s)
+      normal[s] = (Vec3::Zero() + normal[s] + scratch.shared_normals[s]).normalized();
+  };
+  shared(normals, corner_index(mesh_.rotate_cw(c)), 0, 0, 1, side);
+  shared(normals + side, corner_index(mesh_.next(c)), 1, side, n, n);
+}
+
+void TessellationLayout::fill_block_attributes(int k, std::int64_t from, std::int64_t to,
+                                               std::int64_t begin,
+                                               const SampleAttributes& attributes) const {
+  if (!attributes.uv && !attributes.patch) return;
+  const int n = n_, side = n - 1;
+  const std::int64_t first = welded_ ? block(k) : static_cast<std::int64_t>(k) * block_size();
+  for (std::int64_t vertex = from; vertex < to; ++vertex) {
+    const auto r = static_cast<int>(vertex - first);
+    int i = 0, j = 0;
+    if (!welded_) {
+      i = grid_.row(r);
+      j = grid_.column(r);
+    } else if (r < side) {
+      i = r + 1;
+    } else if (r < 2 * side) {
+      i = n;
+      j = r - side + 1;
+    } else {
+      i = (r - 2 * side) / side + 1;
+      j = (r - 2 * side) % side + 1;
+    }
+    if (attributes.uv) attributes.uv[vertex - begin] = grid_.uv(grid_.sample(i, j));
+    if (attributes.patch) attributes.patch[vertex - begin] = corners_[k].idx;
+  }
+}
+
+void TessellationLayout::evaluate_each(PatchSampler& sampler, std::int64_t from, std::int64_t to,
+                                       std::int64_t begin, Vec3* positions, Vec3* normals,
+                                       const SampleAttributes& attributes) const {
+  std::vector<GridSample> sharing;
+  for (std::int64_t vertex = from; vertex < to; ++vertex) {
     samples(vertex, sharing);
-    // Corner blocks (and unwelded grids) come patch by patch and touch only the patch and its
-    // two neighbours across the block's sides, so the sampler's tables pay off there; the mesh
-    // vertices, face centres and edge midpoints are patch corners, evaluated directly.
     const bool grid = !welded_ || vertex >= first_block_;
     const bool single = sharing.size() == 1;
     Vec3 normal = Vec3::Zero();
     for (size_t s = 0; s < sharing.size(); ++s) {
       const GridSample& g = sharing[s];
+      // The mesh vertices, face centres and edge midpoints are patch corners, evaluated
+      // directly: the sampler's tables would not pay off there.
       const Eigen::Vector2d& uv = grid_.uv(grid_.sample(g.i, g.j));
       const SurfacePoint point = grid ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
                                       : sampler.evaluate(corners_[g.corner], uv.x(), uv.y());

@@ -16,6 +16,8 @@
 
 namespace stitch {
 
+class PatchSampler;
+
 /// Sample (i, j) of the k-th corner's (n + 1)^2 grid, u = i / n, v = j / n.
 struct GridSample {
   int corner = 0;  ///< index into the surface's corner list
@@ -66,6 +68,29 @@ class TessellationLayout {
 
  private:
   [[nodiscard]] int corner_index(Corner c) const { return corner_index_[c.idx]; }
+  /// The vertices of corner k's block (welded) or grid (unwelded).
+  [[nodiscard]] std::int64_t block_size() const {
+    return welded_ ? static_cast<std::int64_t>(n_) * n_ - 1 : grid_.num_samples();
+  }
+  struct BlockScratch {
+    std::vector<Vec3> positions, normals;  ///< a block cut by the range
+    std::vector<int> levels;
+    std::vector<Vec3> grid_positions, grid_normals;  ///< a corner's own samples
+    std::vector<int> grid_levels;
+    std::vector<Vec3> shared_positions, shared_normals;  ///< a neighbour's side
+  };
+  /// Positions, normals and levels (if not null) of corner k's block, in its order.
+  void evaluate_block(PatchSampler& sampler, int k, Vec3* positions, Vec3* normals, int* levels,
+                      BlockScratch& scratch) const;
+  /// The uv and patch attributes of output vertices [from, to) of corner k's block, at
+  /// vertex - begin.
+  void fill_block_attributes(int k, std::int64_t from, std::int64_t to, std::int64_t begin,
+                             const SampleAttributes& attributes) const;
+  /// evaluate() vertex by vertex for [from, to), written at vertex - begin.
+  void evaluate_each(PatchSampler& sampler, std::int64_t from, std::int64_t to, std::int64_t begin,
+                     Vec3* positions, Vec3* normals, const SampleAttributes& attributes) const;
+  /// vertex(k, i, j) of every sample of corner k's grid, at i * (n + 1) + j.
+  void grid_vertices(int k, std::int64_t* out) const;
   /// The quad of cell (i, j) of corner k.
   [[nodiscard]] std::array<std::int64_t, 4> cell_quad(int k, int i, int j) const;
 
@@ -87,7 +112,7 @@ class TessellationLayout {
   /// (-1: owned by rotate_ccw(c)'s block); by that number, the corner's index.
   std::vector<int> extra_half_, extra_corner_;
   [[nodiscard]] std::int64_t block(int k) const {
-    return first_block_ + static_cast<std::int64_t>(k) * (static_cast<std::int64_t>(n_) * n_ - 1);
+    return first_block_ + static_cast<std::int64_t>(k) * block_size();
   }
 };
 

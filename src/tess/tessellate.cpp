@@ -4,12 +4,14 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <vector>
+
 #include "layout.hpp"
 
 namespace stitch {
 
 TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
-                       const TessellationOptions& options) {
+                           const TessellationOptions& options) {
   const TessellationLayout layout(mesh, surface.corners(), options.resolution, options.welded);
   const auto nv = static_cast<size_t>(layout.num_vertices());
   TessellatedMesh out;
@@ -34,10 +36,11 @@ TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
   out.quads.resize(static_cast<size_t>(layout.num_quads()));
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_quads(), 4096),
                     [&](const tbb::blocked_range<std::int64_t>& r) {
+                      std::vector<int> corners(static_cast<size_t>(4 * (r.end() - r.begin())));
+                      layout.quads(r.begin(), r.end(), corners.data());
                       for (std::int64_t q = r.begin(); q < r.end(); ++q) {
-                        const auto corners = layout.quad(q);
-                        out.quads[q] = {static_cast<int>(corners[0]), static_cast<int>(corners[1]),
-                                        static_cast<int>(corners[2]), static_cast<int>(corners[3])};
+                        const int* c = corners.data() + 4 * (q - r.begin());
+                        out.quads[q] = {c[0], c[1], c[2], c[3]};
                       }
                     });
   // The input limits (limits.hpp) should make this impossible; whatever shows or writes these
