@@ -16,6 +16,8 @@
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/analysis/sectors.hpp"
 #include "stitch/eval/surface.hpp"
+#include "stitch/kgon/kgon.hpp"
+#include "stitch/topology/primitives.hpp"
 #include "test_support.hpp"
 
 namespace stitch {
@@ -244,6 +246,25 @@ TEST(AnalysisFeatures, CommandLineShowsFeaturesOnlyWhenThereAreSome) {
   EXPECT_FALSE(j["methods"][0].contains("sharp_features"));
   r = testing::stitch_cli(folder, "analyze '" + cube + "' --method mdc");
   EXPECT_EQ(r.out.find("sharp"), std::string::npos) << r.out;
+}
+
+TEST(AnalysisFeatures, SharpFromZeroMakesEveryTagSharpAndNoUntaggedEdge) {
+  // --sharp-from 0 used to make every untagged edge a crease, and the K-gons then read
+  // sharp-curve arrays that a mesh without tags does not have (a crash). Now an untagged edge is
+  // never sharp: the closed cube is the default's surface, and a tagged crease is still a crease.
+  KgonOptions zero;
+  zero.sharp_from = 0;
+  const HalfedgeMesh cube = make_cube();
+  for (Edge e : cube.edges()) EXPECT_FALSE(is_sharp(cube, e, zero));
+  for (Vertex v : cube.vertices()) EXPECT_EQ(vertex_kind(cube, v, zero), VertexKind::smooth);
+  const Surface by_zero(cube, Method::mdc, zero), by_default(cube, Method::mdc);
+  for (Corner c : by_default.corners())
+    EXPECT_EQ(by_zero.evaluate(c, 0.3, 0.7).position, by_default.evaluate(c, 0.3, 0.7).position);
+  HalfedgeMesh tagged = cube;
+  tagged.set_sharpness(Edge(0), 0.5);
+  EXPECT_TRUE(is_sharp(tagged, Edge(0), zero));
+  EXPECT_FALSE(is_sharp(tagged, Edge(0), KgonOptions{}));
+  EXPECT_NO_THROW(Surface(tagged, Method::mdc, zero));
 }
 
 }  // namespace

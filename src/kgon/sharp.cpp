@@ -7,8 +7,19 @@
 
 namespace stitch {
 
+namespace {
+
+/// Whether a crease or corner tag counts as infinitely sharp. An element without a tag
+/// (sharpness 0) never does, whatever sharp_from is: with sharp_from = 0 every untagged edge
+/// would otherwise be a crease, on meshes the K-gon set keeps no sharp-curve arrays for.
+bool sharp_tag(double sharpness, const KgonOptions& options) {
+  return sharpness > 0 && sharpness >= std::min(options.sharp_from, infinitely_sharp);
+}
+
+}  // namespace
+
 bool is_sharp(const HalfedgeMesh& m, Edge e, const KgonOptions& options) {
-  return m.is_boundary(e) || m.sharpness(e) >= std::min(options.sharp_from, infinitely_sharp);
+  return m.is_boundary(e) || sharp_tag(m.sharpness(e), options);
 }
 
 VertexKind vertex_kind(const HalfedgeMesh& m, Vertex v, const KgonOptions& options) {
@@ -17,8 +28,7 @@ VertexKind vertex_kind(const HalfedgeMesh& m, Vertex v, const KgonOptions& optio
     sharp += is_sharp(m, HalfedgeMesh::edge(h), options);
     (m.is_hole(h) ? holes : corners) += 1;
   }
-  if (m.sharpness(v) >= std::min(options.sharp_from, infinitely_sharp) || sharp >= 3)
-    return VertexKind::corner;
+  if (sharp_tag(m.sharpness(v), options) || sharp >= 3) return VertexKind::corner;
   if (holes > 0 && corners == 1 && options.boundary == BoundaryInterpolation::edge_and_corner)
     return VertexKind::corner;
   if (sharp == 2) return VertexKind::crease;
