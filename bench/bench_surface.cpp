@@ -234,10 +234,19 @@ void BM_osd_native(benchmark::State& state) {
 // (osd_native_tessellation), both on both cores, timed one after the other in each iteration so
 // that the ratio comes from one run. Rates are samples (stitch: 81 per corner, shared ones
 // counted per patch) and points (Bfr: per face, shared ones counted per face) per second.
+// Bfr's side keeps nothing; stitch's writes its welded mesh to memory, as:
+//   output 0: a new TessellatedMesh with the per-sample attributes (tessellate()'s default);
+//   output 1: a new one with positions and normals only (what the Bfr side computes);
+//   output 2: positions and normals into the arrays of the previous iteration (tessellating
+//             again, as an animation does: no fresh memory to fault in).
 void BM_vs_bfr(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
-  const stitch::TessellationOptions options{kResolution, true};
+  const auto output = static_cast<int>(state.range(2));
+  const stitch::TessellationOptions options{kResolution, true, output == 0};
+  stitch::TessellatedMesh kept;
+  if (output == 2)
+    stitch::tessellate(mesh, stitch::Surface(mesh, stitch::Method::mdc), options, kept);
   StageTime stitch_time, bfr_time;
   size_t bfr_points = 0;
   for (auto _ : state) {
@@ -245,7 +254,12 @@ void BM_vs_bfr(benchmark::State& state) {
     Stopwatch start;
     {
       const stitch::Surface surface(mesh, stitch::Method::mdc);
-      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+      if (output == 2) {
+        stitch::tessellate(mesh, surface, options, kept);
+        benchmark::DoNotOptimize(kept.positions.data());
+      } else {
+        benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+      }
     }
     stitch_time.add_since(start);
     start = Stopwatch();
@@ -259,7 +273,9 @@ void BM_vs_bfr(benchmark::State& state) {
   const double samples = static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch;
   const double stitch_rate = samples * n / stitch_time.wall;
   const double bfr_rate = static_cast<double>(bfr_points) * n / bfr_time.wall;
-  state.SetLabel(mesh_label(kind, mesh));
+  static const char* const outputs[] = {"new, attributes", "new, positions+normals",
+                                        "reused, positions+normals"};
+  state.SetLabel(mesh_label(kind, mesh) + ", " + outputs[output]);
   state.counters["stitch_samples/s"] = stitch_rate;
   state.counters["bfr_points/s"] = bfr_rate;
   state.counters["stitch/bfr"] = stitch_rate / bfr_rate;
@@ -344,8 +360,8 @@ void mesh_sizes(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_compare)->Apply(mesh_sizes)->UseManualTime()->MinTime(2.0);
 BENCHMARK(BM_osd_native)->Apply(mesh_sizes)->MinTime(1.0)->UseRealTime();
 BENCHMARK(BM_vs_bfr)
-    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}})
-    ->ArgNames({"mesh", "faces"})
+    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}, {0, 1, 2}})
+    ->ArgNames({"mesh", "faces", "output"})
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime()
     ->MinTime(2.0);

@@ -149,6 +149,34 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
         }
 }
 
+// Tessellating into a TessellatedMesh that already holds another tessellation (larger, then
+// smaller, with and without attributes) gives exactly the fresh result: nothing of the old one
+// survives in the reused storage.
+TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
+  const HalfedgeMesh big = make_primitive("torus", {8, 6});
+  const HalfedgeMesh small = test::tetrahedron_mesh();
+  const Surface big_surface(big, Method::mdc), small_surface(small, Method::mdc);
+  TessellatedMesh reused;
+  const auto expect_fresh = [&](const HalfedgeMesh& mesh, const Surface& surface,
+                                const TessellationOptions& options) {
+    tessellate(mesh, surface, options, reused);
+    const TessellatedMesh fresh = tessellate(mesh, surface, options);
+    EXPECT_EQ(reused.positions, fresh.positions);
+    EXPECT_EQ(reused.normals, fresh.normals);
+    EXPECT_EQ(reused.uv, fresh.uv);
+    EXPECT_EQ(reused.patch, fresh.patch);
+    EXPECT_EQ(reused.level, fresh.level);
+    EXPECT_EQ(reused.quads, fresh.quads);
+    EXPECT_EQ(reused.uv.empty(), !options.sample_attributes);
+  };
+  expect_fresh(big, big_surface, {5, true, true});
+  const void* storage = reused.positions.data();
+  expect_fresh(small, small_surface, {3, true, false});
+  EXPECT_EQ(reused.positions.data(), storage) << "smaller output reallocated";
+  expect_fresh(small, small_surface, {4, false, true});
+  expect_fresh(big, big_surface, {6, true, true});
+}
+
 TEST(Tessellate, RefusesAResolutionBelowOne) {
   const HalfedgeMesh tet = test::tetrahedron_mesh();
   EXPECT_THROW(tessellate(tet, Surface(tet, Method::mdc), {0, true}), Error);

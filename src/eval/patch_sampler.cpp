@@ -150,6 +150,12 @@ void PatchSampler::descend_block(Patch& p, const ControlNet& net, std::uint64_t 
     }
 }
 
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+// The kernel's loops run on 4 doubles at a time where the CPU has AVX2 (chosen once at load
+// time), on 2 elsewhere. No FMA: a fused multiply-add rounds once where evaluate_polynomial rounds
+// twice, and the samples must stay Surface::evaluate's to the bit.
+__attribute__((target_clones("avx2", "default")))
+#endif
 void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, int level,
                                     const BasisColumns& bu, int bu_at, const BasisColumns& bv,
                                     int bv_at, int iu, int nu, int jv, int nv, const GridOut& out,

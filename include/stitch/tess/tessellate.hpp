@@ -17,6 +17,12 @@ struct TessellationOptions {
 /// several patches takes the normalized mean of their normals (identical up to round-off where
 /// the surface is smooth). Unwelded: every patch's own (resolution+1)^2 grid.
 TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
-                       const TessellationOptions& options = {});
+                           const TessellationOptions& options = {});
+
+/// The same, into `out`, reusing its arrays' storage where it is large enough: tessellating
+/// again (an animation, a modeler's vertex moves) then allocates and first-touches no memory.
+/// On an exception, `out` holds no usable tessellation.
+void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
+                const TessellationOptions& options, TessellatedMesh& out);
 
 }  // namespace stitch
