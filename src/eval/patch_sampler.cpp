@@ -121,6 +121,9 @@ void PatchSampler::descend_block(Patch& p, const ControlNet& net, std::uint64_t 
       done = 1;
     }
   }
+  // Samples at this net's corners are done; a block that had no others (the deepest net at an
+  // extraordinary corner) needs no split.
+  if (!pending(iu, nu, jv, nv)) return;
   std::vector<double>& child_us = u_[level + 1];
   std::vector<double>& child_vs = v_[level + 1];
   child_us.resize(us.size());
