@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -147,6 +148,43 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
               }
           }
         }
+}
+
+// Any split of the output vertices into ranges gives the same bits: ranges that cut corner
+// blocks, that hold a block but not the neighbours whose sides it shares (evaluated again then),
+// and one range for everything (where every neighbour's grid is at hand).
+TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
+  HalfedgeMesh closed = make_cube();
+  apply_operation(closed, "insert-edge 1@1 5@2");
+  apply_operation(closed, "insert-edge 2@3 5@3");
+  apply_operation(closed, "vertex-insertion");
+  PolygonSoup soup = to_polygon_soup(closed);
+  soup.faces.pop_back();
+  const HalfedgeMesh open = build_mesh(soup);
+  for (const HalfedgeMesh* mesh : std::array<const HalfedgeMesh*, 2>{&closed, &open})
+    for (const int n : {2, 3, 8}) {
+      const Surface surface(*mesh, Method::mdc);
+      const TessellationLayout layout(*mesh, surface.corners(), n, true);
+      const auto count = static_cast<size_t>(layout.num_vertices());
+      std::vector<Vec3> positions(count), normals(count);
+      std::vector<int> levels(count);
+      layout.evaluate(surface, 0, layout.num_vertices(), positions.data(), normals.data(),
+                      {nullptr, nullptr, levels.data()});
+      const std::int64_t block = static_cast<std::int64_t>(n) * n - 1;
+      for (const std::int64_t step : {std::int64_t{1}, std::int64_t{7}, block, block + 1,
+                                      3 * block - 1}) {
+        std::vector<Vec3> p(count), nm(count);
+        std::vector<int> l(count);
+        for (std::int64_t b = 0; b < layout.num_vertices(); b += step) {
+          const std::int64_t e = std::min(b + step, layout.num_vertices());
+          layout.evaluate(surface, b, e, p.data() + b, nm.data() + b,
+                          {nullptr, nullptr, l.data() + b});
+        }
+        EXPECT_EQ(p, positions) << "n=" << n << " step " << step;
+        EXPECT_EQ(nm, normals) << "n=" << n << " step " << step;
+        EXPECT_EQ(l, levels) << "n=" << n << " step " << step;
+      }
+    }
 }
 
 // Tessellating into a TessellatedMesh that already holds another tessellation (larger, then
