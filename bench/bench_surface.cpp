@@ -284,17 +284,26 @@ void BM_vs_bfr(benchmark::State& state) {
 }
 
 // The full pipeline alone (mdc surface + welded tessellation at resolution 8), on both cores:
-// the stitch half of BM_vs_bfr, small enough at 10k faces to count instructions with
-// valgrind --tool=callgrind.
+// the stitch half of BM_vs_bfr (output 0 or 2 as there), small enough at 10k faces to count
+// instructions with valgrind --tool=callgrind.
 void BM_tessellate(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
-  const stitch::TessellationOptions options{kResolution, true};
+  const bool reused = state.range(2) == 2;
+  const stitch::TessellationOptions options{kResolution, true, !reused};
+  stitch::TessellatedMesh kept;
+  if (reused) stitch::tessellate(mesh, stitch::Surface(mesh, stitch::Method::mdc), options, kept);
   for (auto _ : state) {
     const stitch::Surface surface(mesh, stitch::Method::mdc);
-    benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+    if (reused) {
+      stitch::tessellate(mesh, surface, options, kept);
+      benchmark::DoNotOptimize(kept.positions.data());
+    } else {
+      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+    }
   }
-  state.SetLabel(mesh_label(kind, mesh));
+  state.SetLabel(mesh_label(kind, mesh) +
+                 (reused ? ", reused, positions+normals" : ", new, attributes"));
   state.counters["samples/s"] =
       benchmark::Counter(static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch,
                          benchmark::Counter::kIsIterationInvariantRate);
@@ -366,8 +375,8 @@ BENCHMARK(BM_vs_bfr)
     ->UseManualTime()
     ->MinTime(2.0);
 BENCHMARK(BM_tessellate)
-    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}})
-    ->ArgNames({"mesh", "faces"})
+    ->ArgsProduct({{quad_torus, mixed_torus, triangle_torus}, {10000, 100000}, {0, 2}})
+    ->ArgNames({"mesh", "faces", "output"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_patch_cost)
