@@ -88,17 +88,22 @@ TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
   EXPECT_GE(deepest, 3);  // (1/5, 0) needs 3 splits before it leaves the corner's child
 }
 
-TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) {
-  // Extraordinary vertices of valence 3 and 5, a 10-sided face, triangles, regular patches and a
-  // boundary (the cube without one face).
+// Extraordinary vertices of valence 3 and 5, a 10-sided face, triangles, regular patches; and the
+// same with a boundary (without its last face).
+std::array<HalfedgeMesh, 2> closed_and_open_meshes() {
   HalfedgeMesh closed = make_cube();
   apply_operation(closed, "insert-edge 1@1 5@2");
   apply_operation(closed, "insert-edge 2@3 5@3");
   apply_operation(closed, "vertex-insertion");
   PolygonSoup soup = to_polygon_soup(closed);
   soup.faces.pop_back();
-  const HalfedgeMesh open = build_mesh(soup);
-  for (const HalfedgeMesh* mesh : std::array<const HalfedgeMesh*, 2>{&closed, &open})
+  HalfedgeMesh open = build_mesh(soup);
+  return {std::move(closed), std::move(open)};
+}
+
+TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) {
+  for (const HalfedgeMesh& m : closed_and_open_meshes()) {
+    const HalfedgeMesh* mesh = &m;
     for (const Method method : {Method::mdc, Method::asc})
       for (const int n : {1, 2, 3, 8})
         for (const bool welded : {true, false}) {
@@ -148,20 +153,14 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
               }
           }
         }
+  }
 }
 
-// Any split of the output vertices into ranges gives the same bits: ranges that cut corner
-// blocks, that hold a block but not the neighbours whose sides it shares (evaluated again then),
-// and one range for everything (where every neighbour's grid is at hand).
+// Any split of the output vertices into ranges gives the same bits as one range for everything:
+// ranges of single vertices, and ranges that cut corner blocks in different places.
 TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
-  HalfedgeMesh closed = make_cube();
-  apply_operation(closed, "insert-edge 1@1 5@2");
-  apply_operation(closed, "insert-edge 2@3 5@3");
-  apply_operation(closed, "vertex-insertion");
-  PolygonSoup soup = to_polygon_soup(closed);
-  soup.faces.pop_back();
-  const HalfedgeMesh open = build_mesh(soup);
-  for (const HalfedgeMesh* mesh : std::array<const HalfedgeMesh*, 2>{&closed, &open})
+  for (const HalfedgeMesh& m : closed_and_open_meshes()) {
+    const HalfedgeMesh* mesh = &m;
     for (const int n : {2, 3, 8}) {
       const Surface surface(*mesh, Method::mdc);
       const TessellationLayout layout(*mesh, surface.corners(), n, true);
@@ -171,8 +170,8 @@ TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
       layout.evaluate(surface, 0, layout.num_vertices(), positions.data(), normals.data(),
                       {nullptr, nullptr, levels.data()});
       const std::int64_t block = static_cast<std::int64_t>(n) * n - 1;
-      for (const std::int64_t step : {std::int64_t{1}, std::int64_t{7}, block, block + 1,
-                                      3 * block - 1}) {
+      for (const std::int64_t step :
+           {std::int64_t{1}, std::int64_t{7}, block, block + 1, 3 * block - 1}) {
         std::vector<Vec3> p(count), nm(count);
         std::vector<int> l(count);
         for (std::int64_t b = 0; b < layout.num_vertices(); b += step) {
@@ -185,6 +184,7 @@ TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
         EXPECT_EQ(l, levels) << "n=" << n << " step " << step;
       }
     }
+  }
 }
 
 // Tessellating into a TessellatedMesh that already holds another tessellation (larger, then
