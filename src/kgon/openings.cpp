@@ -42,13 +42,16 @@ void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& opening
   // An opening's corners run from its bridge vertex around the rim and back to it: n + 1 corners
   // over a rim of n vertices. Every corner but the two at the bridge vertex keeps the point the
   // Doo-Sabin rule gave it over the rim alone (the face before the merge). The bridge vertex's
-  // point w0 is split in two along the rim polygon, a quarter of the way towards the points on
+  // point w0 is split in two along the rim polygon, kSplit of the way towards the points on
   // either side, so that the bridge's edge K-gon keeps a width. (Shrinking the loop with the
   // bridge vertex twice instead weights that vertex double and pushes the whole rim towards it:
   // on a triangle the two points at the bridge vertex then lie as far out as the corner points
   // of the side faces there, the wall between the hole and the outside has no thickness, and
-  // every tube through a triangular prism intersected itself.)
-  constexpr double kSplit = 0.25;
+  // every tube through a triangular prism intersected itself.) kSplit is measured, not derived
+  // (docs/method.md): from 0.55 to 0.65 every cube and prism tube but prism 6's half twists is
+  // clean and open along the axis; at 0.5 the cube's half twists are clean but off the axis, at
+  // 0.7 three of prism 3's tubes are, and at 0.2 or less the twisted tubes fold.
+  constexpr double kSplit = 0.6;
   for (const auto* corners : {&openings.first, &openings.second}) {
     const size_t n = corners->size() - 1;
     std::vector<Vec3> rim;
