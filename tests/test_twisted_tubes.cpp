@@ -17,6 +17,7 @@
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/eval/surface.hpp"
+#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/operation.hpp"
@@ -151,6 +152,37 @@ TEST(TwistedTubes, EveryCornerPairOfAPrismsCaps) {
     // and the axis is blocked).
     expect_clean_and_open(results, n == 6 ? 2 : n / 2);
   }
+}
+
+TEST(TwistedTubes, HandlesBetweenTwoCubesFacingEachOther) {
+  // Two cubes side by side (the second shifted by 4 along x), an edge inserted between every
+  // corner of the first's right face (x = 1) and every corner of the second's left face (x = 3):
+  // a handle joining two solids, whose openings face each other, with every twist. All 16 are
+  // clean; before issue 13's corner points and face K-gon, 12 were (resolution 16). The axis
+  // through the faces' centres runs inside the handle's solid, so `open` is not checked.
+  PolygonSoup soup = to_polygon_soup(make_cube());
+  const int n = static_cast<int>(soup.positions.size());
+  const size_t faces = soup.faces.size();
+  for (int i = 0; i < n; ++i) soup.positions.push_back(soup.positions[i] + Vec3(4, 0, 0));
+  for (size_t f = 0; f < faces; ++f) {
+    std::vector<int> loop = soup.faces[f];
+    for (int& v : loop) v += n;
+    soup.faces.push_back(loop);
+  }
+  const HalfedgeMesh cubes = build_mesh(soup);
+  // The first cube's right face and the second's left face, 1-based.
+  auto face_at_x = [&](double x) {
+    for (Face f : cubes.faces())
+      if (std::abs(face_centre(cubes, f).x() - x) < 1e-9) return f.idx + 1;
+    return 0;
+  };
+  const int right = face_at_x(1), left = face_at_x(3);
+  ASSERT_GT(right, 0);
+  ASSERT_GT(left, 0);
+  const auto results = sweep(cubes, right, left, true);
+  EXPECT_EQ(count(results).at(-1).total, 16);
+  EXPECT_EQ(count(results).at(-1).clean, 16);
+  for (const PairResult& r : results) EXPECT_TRUE(r.clean) << r.op << "\n" << r.problems;
 }
 
 TEST(TwistedTubes, AdjacentCubeFacesBentTunnels) {
