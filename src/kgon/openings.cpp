@@ -39,11 +39,27 @@ std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
 
 void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& openings,
                                std::vector<Vec3>& corner_point) {
+  // An opening's corners run from its bridge vertex around the rim and back to it: n + 1 corners
+  // over a rim of n vertices. Every corner but the two at the bridge vertex keeps the point the
+  // Doo-Sabin rule gave it over the rim alone (the face before the merge). The bridge vertex's
+  // point w0 is split in two along the rim polygon, kSplit of the way towards the points on
+  // either side, so that the bridge's edge K-gon keeps a width. (Shrinking the loop with the
+  // bridge vertex twice instead weights that vertex double and pushes the whole rim towards it:
+  // on a triangle the two points at the bridge vertex then lie as far out as the corner points
+  // of the side faces there, the wall between the hole and the outside has no thickness, and
+  // every tube through a triangular prism intersected itself.) kSplit is measured, not derived
+  // (docs/method.md): from 0.55 to 0.65 every cube and prism tube but prism 6's half twists is
+  // clean and open along the axis; at 0.5 the cube's half twists are clean but off the axis, at
+  // 0.7 three of prism 3's tubes are, and at 0.2 or less the twisted tubes fold.
+  constexpr double kSplit = 0.6;
   for (const auto* corners : {&openings.first, &openings.second}) {
-    std::vector<Vec3> loop;
-    for (Corner c : *corners) loop.push_back(m.position(m.origin(c)));
-    const auto w = doo_sabin_shrink(loop);
-    for (size_t i = 0; i < corners->size(); ++i) corner_point[(*corners)[i].idx] = w[i];
+    const size_t n = corners->size() - 1;
+    std::vector<Vec3> rim;
+    for (size_t i = 0; i < n; ++i) rim.push_back(m.position(m.origin((*corners)[i])));
+    const auto w = doo_sabin_shrink(rim);
+    for (size_t i = 1; i < n; ++i) corner_point[(*corners)[i].idx] = w[i];
+    corner_point[corners->front().idx] = w[0] + kSplit * (w[1] - w[0]);
+    corner_point[corners->back().idx] = w[0] + kSplit * (w[n - 1] - w[0]);
   }
 }
 
@@ -165,9 +181,28 @@ Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& ope
   return g;
 }
 
-/// The face K-gon of a twisted tube: a regular K-gon on the wall opposite the middle of the
-/// bridge's helix, halfway up, in the wall's tangent plane, turned so that the middle of the
-/// first opening's corners faces that opening.
+/// The face K-gon of a tube that twists, at `centre` on its wall (`normal` the surface's normal
+/// there, `radius` the tube's): the regular K-gon of regular_tube_kgon with its axis along
+/// `along`, the direction of the curve the bridge stands for carried around the tube to `centre`
+/// (the wall, unrolled, is a parallelogram whose sides run along that curve), and with its extent
+/// across that direction cut to the tube's radius. A plane touching a cylinder of radius r is
+/// sqrt(r^2 + d^2) - r off the wall at a distance d to the side, so K-gon points farther out pull
+/// the patches off the wall (the twisted tubes of a triangular prism, K-gon radius 1.4 r, folded).
+/// The K-gon is affinely regular and planar.
+Kgon wall_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings, const Vec3& centre,
+               const Vec3& normal, const Vec3& along, double radius,
+               const std::vector<Vec3>& corner_point) {
+  const Vec3 e1 = (along - along.dot(normal) * normal).normalized();
+  const Vec3 e2 = normal.cross(e1);
+  Kgon g = regular_tube_kgon(loop, openings, centre, normal, e1, e2, corner_point);
+  const double extent = (g.points[0] - centre).norm();
+  if (extent > radius)
+    for (Vec3& p : g.points) p -= (1 - radius / extent) * (p - centre).dot(e2) * e2;
+  return g;
+}
+
+/// The face K-gon of a twisted tube: wall_kgon on the wall opposite the middle of the bridge's
+/// helix, halfway up, along the helix.
 std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const Tube& tube,
                                           const TwoOpenings& openings,
                                           const std::vector<Vec3>& corner_point) {
@@ -179,11 +214,14 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   for (Corner c : openings.second) height_b += tube.height_of(corner_point[c.idx]);
   height_a /= static_cast<double>(openings.first.size());
   height_b /= static_cast<double>(openings.second.size());
+  const double radius = radius_sum / k;
   const double angle = tube.twist / 2 + std::numbers::pi;
-  const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius_sum / k);
-  const Vec3 normal = tube.normal(angle);
-  const Vec3 e1 = tube.axis;  // towards the second opening
-  return regular_tube_kgon(loop, openings, centre, normal, e1, normal.cross(e1), corner_point);
+  const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius);
+  // The helix from the first bridge vertex to the second, at this radius, runs this way at
+  // `angle` (towards the second opening).
+  const Vec3 along = (height_b - height_a) * tube.length * tube.axis +
+                     tube.twist * radius * tube.radial(angle + std::numbers::pi / 2);
+  return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point);
 }
 
 /// The helix a twisted tube's bridge stands for: from the first rim's bridge vertex (angle 0)
@@ -369,8 +407,13 @@ Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
   const double angle = tube.angle_a + tube.twist / 2 + std::numbers::pi;
   const Vec3 centre = tube.wall(sigma, angle, radius);
   const Vec3 normal = tube.normal(sigma, angle);
-  const Vec3 e1 = tube.tangent(sigma);
-  return regular_tube_kgon(loop, openings, centre, normal, e1, normal.cross(e1), corner_point);
+  // The curve the bridge stands for, carried around to the opposite side of the tube.
+  const auto curve = [&](double t) {
+    return tube.wall(sigma_a + t * (sigma_b - sigma_a), angle + (t - 0.5) * tube.twist, radius);
+  };
+  constexpr double kStep = 1.0 / 128;
+  const Vec3 along = curve(0.5 + kStep) - curve(0.5 - kStep);
+  return wall_kgon(loop, openings, centre, normal, along, radius, corner_point);
 }
 
 /// The bridge's edge K-gon on a bent tube that twists: the quad of the twisted cylinder, at the

@@ -6,11 +6,13 @@
 // (a hole through the solid, or a handle between two solids). Section 2's construction puts
 // the face's K-gon at the centroid of its loop, which lies inside the tube, so the surface is
 // pinched shut there. The "openings" construction instead
-//  - takes each corner point from the Doo-Sabin rule over its own opening's loop, so the rims
-//    keep the shape they had before the merge, and
+//  - takes each corner point from the Doo-Sabin rule over its own opening's rim (the bridge
+//    vertex's point split in two along the rim), so the rims keep the shape they had before
+//    the merge, and
 //  - puts the K-gon on the tube's wall opposite the bridge, halfway between the openings, in
 //    the wall's tangent plane, as a regular K-gon whose corners of each opening face that
-//    opening.
+//    opening (on a twisted tube, turned along the bridge's helix and cut across to the tube's
+//    radius: affinely regular).
 #pragma once
 
 #include <optional>
@@ -25,7 +27,8 @@ namespace stitch::detail {
 /// two parts on either side of it are separate simple loops (they share no vertex).
 std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
 
-/// Doo-Sabin corner points of each opening over that opening's own loop (stored by corner).
+/// Doo-Sabin corner points of each opening over that opening's own rim, the bridge vertex's
+/// point split in two along the rim for its two corners (stored by corner).
 void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& openings,
                                std::vector<Vec3>& corner_point);
 
