@@ -46,25 +46,47 @@ Vec3 patch_normal(const ControlNet& net, const CubicBasis& bu, const CubicBasis&
 
 }  // namespace detail
 
+namespace {
+
+// evaluate_polynomial at a corner of the patch (u and v each 0 or 1), as a tessellation asks for
+// every mesh vertex, face centre and edge midpoint once per patch around it. There, of each
+// direction's four basis values only one is not zero (index e, 0 or 3), and of its four
+// derivatives only two (indices d and d + 1). A sum that starts at +0 and adds an exact zero keeps
+// its bits, so these sums, in evaluate_polynomial's order without the zero terms, give the same
+// point to the bit (for a finite net) for a fraction of the work.
+SurfacePoint evaluate_at_patch_corner(const ControlNet& net, const detail::CubicBasis& bu,
+                                      const detail::CubicBasis& bv, bool u_end, bool v_end) {
+  const int eu = u_end ? 3 : 0, du = u_end ? 2 : 0;
+  const int ev = v_end ? 3 : 0, dv = v_end ? 2 : 0;
+  const auto row = [&](int a) -> Vec3 { return Vec3::Zero() + bv.b[ev] * net.at(a, ev); };
+  const auto row_dv = [&](int a) -> Vec3 {
+    return Vec3::Zero() + bv.d[dv] * net.at(a, dv) + bv.d[dv + 1] * net.at(a, dv + 1);
+  };
+  SurfacePoint sp;
+  sp.position = Vec3::Zero() + bu.b[eu] * row(eu);
+  sp.du = Vec3::Zero() + bu.d[du] * row(du) + bu.d[du + 1] * row(du + 1);
+  sp.dv = Vec3::Zero() + bu.b[eu] * row_dv(eu);
+  return sp;
+}
+
+}  // namespace
+
 SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
   const detail::CubicBasis bu = detail::cubic_basis(u), bv = detail::cubic_basis(v);
   SurfacePoint sp;
-  // At a corner of the patch, as a tessellation asks at every mesh vertex, face centre and edge
-  // midpoint once per patch, only two of the four basis values and derivatives are not zero in
-  // each direction. A sum that starts at +0 and adds an exact zero keeps its value, so leaving
-  // those terms out gives the same bits (for a finite net) for a quarter of the work.
-  const bool corner = (u == 0 || u == 1) && (v == 0 || v == 1);
-  for (int a = 0; a < 4; ++a) {
-    if (corner && bu.b[a] == 0 && bu.d[a] == 0) continue;
-    Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();  // sums over b for this a
-    for (int b = 0; b < 4; ++b) {
-      if (corner && bv.b[b] == 0 && bv.d[b] == 0) continue;
-      row += bv.b[b] * net.at(a, b);
-      row_dv += bv.d[b] * net.at(a, b);
+  if ((u == 0 || u == 1) && (v == 0 || v == 1)) {
+    sp = evaluate_at_patch_corner(net, bu, bv, u == 1, v == 1);
+  } else {
+    for (int a = 0; a < 4; ++a) {
+      Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();  // sums over b for this a
+      for (int b = 0; b < 4; ++b) {
+        row += bv.b[b] * net.at(a, b);
+        row_dv += bv.d[b] * net.at(a, b);
+      }
+      sp.position += bu.b[a] * row;
+      sp.du += bu.d[a] * row;
+      sp.dv += bu.b[a] * row_dv;
     }
-    sp.position += bu.b[a] * row;
-    sp.du += bu.d[a] * row;
-    sp.dv += bu.b[a] * row_dv;
   }
   sp.normal =
       detail::patch_normal(net, bu, bv, u, v, sp.du, sp.dv, detail::degenerate_threshold(net));
