@@ -548,12 +548,13 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
                                       const std::vector<Corner>& corners,
                                       const std::vector<Vec3>& corner_point) {
   // The loop may run along a second edge twice (the edge the two faces shared): not the bridge.
-  if (std::find(corners.begin(), corners.end(), openings.first.back()) == corners.end() &&
-      std::find(corners.begin(), corners.end(), openings.second.back()) == corners.end())
+  // (corners[0] is the edge's own halfedge; corners[1] and corners[3] may be the bridge's when
+  // the two edges meet.)
+  if (HalfedgeMesh::edge(corners[0]) != HalfedgeMesh::edge(openings.first.back()))
     return std::nullopt;
   // A bridge from one end of the shared edge to the other runs along that edge, where the tube
   // is pinched: section 2's K-gon (measured on the cube's 24 such bridges: with the bent tube's
-  // quad 22 fold 14 pairs of triangles and 2 intersect themselves, with section 2's all are clean).
+  // quad each folds 14 pairs of triangles, with section 2's all are clean).
   if (on_both_rims(m, openings, m.origin(openings.first.front())) &&
       on_both_rims(m, openings, m.origin(openings.second.front())))
     return std::nullopt;
@@ -574,9 +575,9 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point) {
-  // Two faces that shared an edge: the tube is pinched along that edge, and none of the
-  // placements below keeps it clean; section 2's K-gon over the rims' own corner points does
-  // for the untwisted tubes (docs/method.md).
+  // Two faces that shared an edge: the tube is pinched along that edge. The placements below
+  // fold the cube's quarter-turn bridges there; section 2's K-gon over the rims' own corner
+  // points keeps them clean (docs/method.md).
   for (Corner c : openings.first)
     if (on_both_rims(m, openings, m.origin(c))) return std::nullopt;
   if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
