@@ -1,5 +1,6 @@
 #include "openings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -7,13 +8,14 @@
 
 namespace stitch::detail {
 
-std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
-  const auto loop = m.face_loop(f);
-  std::vector<Halfedge> bridges;
-  for (Halfedge h : loop)
-    if (m.face(HalfedgeMesh::twin(h)) == f) bridges.push_back(h);
-  if (bridges.size() != 2) return std::nullopt;
-  const Halfedge b1 = bridges[0], b2 = HalfedgeMesh::twin(b1);
+namespace {
+
+/// The split of f's loop at bridge b1 (b2 its twin) into its two openings; rims that share a
+/// vertex are allowed only at the ends of `shared` (an edge the loop also runs along twice, or
+/// none). Nothing unless each opening visits its bridge vertex at its two ends and every other
+/// vertex once.
+std::optional<TwoOpenings> split_at(const HalfedgeMesh& m, Halfedge b1, Edge shared) {
+  const Halfedge b2 = HalfedgeMesh::twin(b1);
   TwoOpenings o;
   for (Halfedge h = m.next(b2);; h = m.next(h)) {
     o.first.push_back(h);
@@ -24,17 +26,74 @@ std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
     if (h == b2) break;
   }
   if (o.first.size() < 2 || o.second.size() < 2) return std::nullopt;
-  // Two separate rims: each opening visits its bridge vertex at its two ends and every other
-  // vertex once, and the openings share no vertex. Anything else (random edits make such
-  // faces) is not a tube between two openings, and keeps section 2's K-gon.
   std::vector<int> seen(m.vertex_capacity(), 0);
+  Vertex s0, s1;
+  if (shared.valid()) {
+    const Halfedge hs = HalfedgeMesh::halfedge(shared, 0);
+    s0 = m.origin(hs);
+    s1 = m.origin(HalfedgeMesh::twin(hs));
+  }
   for (const auto* corners : {&o.first, &o.second}) {
     const Vertex bridge_end = m.origin(corners->front());
     if (m.origin(corners->back()) != bridge_end) return std::nullopt;
-    for (size_t i = 1; i < corners->size(); ++i)
-      if (seen[m.origin((*corners)[i]).idx]++) return std::nullopt;
+    std::vector<int> here(m.vertex_capacity(), 0);
+    for (size_t i = 1; i < corners->size(); ++i) {
+      const Vertex v = m.origin((*corners)[i]);
+      if (here[v.idx]++) return std::nullopt;
+      if (seen[v.idx]++ && v != s0 && v != s1) return std::nullopt;
+    }
   }
   return o;
+}
+
+/// How far an opening's rim is from planar: the largest distance of a vertex from the plane
+/// through its centroid with its Newell normal, over the rim's size.
+double non_planarity(const HalfedgeMesh& m, const std::vector<Corner>& corners) {
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i + 1 < corners.size(); ++i) pts.push_back(m.position(m.origin(corners[i])));
+  const Vec3 c = centroid(pts);
+  Vec3 n = newell_normal(pts);
+  double size = 0;
+  for (const Vec3& p : pts) size = std::max(size, (p - c).norm());
+  if (!(n.norm() > 0) || !(size > 0)) return 1;
+  n.normalize();
+  double d = 0;
+  for (const Vec3& p : pts) d = std::max(d, std::abs((p - c).dot(n)));
+  return d / size;
+}
+
+}  // namespace
+
+std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
+  const auto loop = m.face_loop(f);
+  std::vector<Halfedge> doubled;
+  for (Halfedge h : loop)
+    if (m.face(HalfedgeMesh::twin(h)) == f) doubled.push_back(h);
+  // One edge twice: the bridge between two separate rims. Anything else (random edits make such
+  // faces) is not a tube between two openings, and keeps section 2's K-gon, but for two edges
+  // twice (an edge inserted between two faces that share an edge: the loop reads
+  // S B S^-1 B^-1): either edge can be taken as the bridge, and the rims then share the other's
+  // two vertices. The bridge is the one whose rims are planar (the faces before the merge).
+  if (doubled.size() == 2) return split_at(m, doubled[0], Edge());
+  if (doubled.size() != 4) return std::nullopt;
+  std::optional<TwoOpenings> best;
+  double best_score = 0;
+  std::vector<Edge> edges;
+  for (Halfedge h : doubled) {
+    const Edge e = HalfedgeMesh::edge(h);
+    if (std::find(edges.begin(), edges.end(), e) == edges.end()) edges.push_back(e);
+  }
+  if (edges.size() != 2) return std::nullopt;
+  for (int i = 0; i < 2; ++i) {
+    auto o = split_at(m, HalfedgeMesh::halfedge(edges[i], 0), edges[1 - i]);
+    if (!o) continue;
+    const double score = non_planarity(m, o->first) + non_planarity(m, o->second);
+    if (!best || score < best_score - 1e-9) {
+      best = std::move(o);
+      best_score = score;
+    }
+  }
+  return best;
 }
 
 void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& openings,
@@ -383,8 +442,23 @@ std::optional<BentTube> bent_tube_of(const HalfedgeMesh& m, const TwoOpenings& o
   if (!(t.bend_radius > 0) || (t.bend_radius * w - across).norm() > 0.25 * length)
     return std::nullopt;
   t.centre = ca + t.bend_radius * t.m;
-  const auto ends_at = [&](Corner c) { return t.coords(m.position(m.origin(c))); };
-  const auto a = ends_at(o.first.front()), b = ends_at(o.second.front());
+  const auto ends_at = [&](Corner c, double rim_sigma) {
+    const Vec3 p = m.position(m.origin(c));
+    auto co = t.coords(p);
+    const Vec3 q = p - t.centre;
+    if (std::hypot(q.dot(t.d), q.dot(t.m)) < 1e-9 * length) {
+      // On the bend's axis (a vertex of the edge the two faces share): no sigma of its own; the
+      // cross-section of its rim.
+      co.sigma = rim_sigma;
+      const Vec3 r = p - t.line(rim_sigma);
+      const Vec3 tg = t.tangent(rim_sigma);
+      const Vec3 across = r - r.dot(tg) * tg;
+      co.radius = across.norm();
+      co.angle = std::atan2(-across.dot(t.k), across.dot(t.outward(rim_sigma)));
+    }
+    return co;
+  };
+  const auto a = ends_at(o.first.front(), 0), b = ends_at(o.second.front(), 1);
   if (!(a.radius > 1e-9 * length) || !(b.radius > 1e-9 * length)) return std::nullopt;
   t.angle_a = a.angle;
   t.twist = std::remainder(b.angle - a.angle, 2 * std::numbers::pi);
@@ -452,6 +526,14 @@ std::optional<Kgon> place_bridge_on_bent_tube(const HalfedgeMesh& m, const BentT
                    tube.normal(1, tube.angle_a + tube.twist), length, tube.twist, corner_point);
 }
 
+/// Whether both openings' rims visit v (an end of the edge two merged faces shared).
+bool on_both_rims(const HalfedgeMesh& m, const TwoOpenings& o, Vertex v) {
+  const auto visits = [&](const std::vector<Corner>& corners) {
+    return std::any_of(corners.begin(), corners.end(), [&](Corner c) { return m.origin(c) == v; });
+  };
+  return visits(o.first) && visits(o.second);
+}
+
 }  // namespace
 
 std::vector<Corner> edge_kgon_corners(const HalfedgeMesh& m, Edge e) {
@@ -465,6 +547,17 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
                                       const TwoOpenings& openings,
                                       const std::vector<Corner>& corners,
                                       const std::vector<Vec3>& corner_point) {
+  // The loop may run along a second edge twice (the edge the two faces shared): not the bridge.
+  // (corners[0] is the edge's own halfedge; corners[1] and corners[3] may be the bridge's when
+  // the two edges meet.)
+  if (HalfedgeMesh::edge(corners[0]) != HalfedgeMesh::edge(openings.first.back()))
+    return std::nullopt;
+  // A bridge from one end of the shared edge to the other runs along that edge, where the tube
+  // is pinched: section 2's K-gon (measured on the cube's 24 such bridges: with the bent tube's
+  // quad each folds 14 pairs of triangles, with section 2's all are clean).
+  if (on_both_rims(m, openings, m.origin(openings.first.front())) &&
+      on_both_rims(m, openings, m.origin(openings.second.front())))
+    return std::nullopt;
   if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
     return place_bridge_on_bent_tube(m, *bent, openings, corners, corner_point);
   const auto tube = tube_of(m, openings);
@@ -482,6 +575,11 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point) {
+  // Two faces that shared an edge: the tube is pinched along that edge. The placements below
+  // fold the cube's quarter-turn bridges there; section 2's K-gon over the rims' own corner
+  // points keeps them clean (docs/method.md).
+  for (Corner c : openings.first)
+    if (on_both_rims(m, openings, m.origin(c))) return std::nullopt;
   if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
     return place_on_bent_tube(m, f, *bent, openings, corner_point);
   if (const auto tube = tube_of(m, openings); tube && std::abs(tube->twist) >= kNoTwist)

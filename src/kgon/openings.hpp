@@ -24,7 +24,9 @@
 namespace stitch::detail {
 
 /// The two openings of f, or nothing unless f's loop runs along exactly one edge twice and the
-/// two parts on either side of it are separate simple loops (they share no vertex).
+/// two parts on either side of it are separate simple loops (they share no vertex), or along two
+/// edges twice (two faces that shared an edge, merged by an edge between them): then the bridge
+/// is the edge whose two rims are planar, and the rims share the other edge's two vertices.
 std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
 
 /// Doo-Sabin corner points of each opening over that opening's own rim, the bridge vertex's
