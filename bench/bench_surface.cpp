@@ -229,38 +229,45 @@ void BM_osd_native(benchmark::State& state) {
   state.counters["cpu_s"] = total.cpu / static_cast<double>(state.iterations());  // all threads
 }
 
-// Issue 14's comparison: the full pipeline mesh -> welded tessellation in memory (stitch::Surface
-// for mdc + tessellate at resolution 8) against OpenSubdiv's own route at rate 16 per face edge
-// (osd_native_tessellation), both on both cores, timed one after the other in each iteration so
-// that the ratio comes from one run. Rates are samples (stitch: 81 per corner, shared ones
-// counted per patch) and points (Bfr: per face, shared ones counted per face) per second.
-// Bfr's side keeps nothing; stitch's writes its welded mesh to memory, as:
+// stitch's side of the comparison, as its welded mesh is kept in memory (the Bfr side keeps
+// nothing):
 //   output 0: a new TessellatedMesh with the per-sample attributes (tessellate()'s default);
 //   output 1: a new one with positions and normals only (what the Bfr side computes);
-//   output 2: positions and normals into the arrays of the previous iteration (tessellating
-//             again, as an animation does: no fresh memory to fault in).
+//   output 2: positions and normals into the arrays of the previous run (tessellating again, as
+//             an animation does: no fresh memory to fault in).
+const char* const kOutputs[] = {"new, attributes", "new, positions+normals",
+                                "reused, positions+normals"};
+
+/// One run of the full pipeline: the mdc surface and its welded tessellation at kResolution,
+/// into `kept` for output 2, else into a new result.
+void run_pipeline(const HalfedgeMesh& mesh, int output, stitch::TessellatedMesh& kept) {
+  const stitch::Surface surface(mesh, stitch::Method::mdc);
+  const stitch::TessellationOptions options{kResolution, true, output == 0};
+  if (output == 2) {
+    stitch::tessellate(mesh, surface, options, kept);
+    benchmark::DoNotOptimize(kept.positions.data());
+  } else {
+    benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
+  }
+}
+
+// Issue 14's comparison: the full pipeline mesh -> welded tessellation in memory (run_pipeline)
+// against OpenSubdiv's own route at rate 16 per face edge (osd_native_tessellation), both on
+// both cores, timed one after the other in each iteration so that the ratio comes from one run.
+// Rates are samples (stitch: 81 per corner, shared ones counted per patch) and points (Bfr: per
+// face, shared ones counted per face) per second.
 void BM_vs_bfr(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
   const auto output = static_cast<int>(state.range(2));
-  const stitch::TessellationOptions options{kResolution, true, output == 0};
   stitch::TessellatedMesh kept;
-  if (output == 2)
-    stitch::tessellate(mesh, stitch::Surface(mesh, stitch::Method::mdc), options, kept);
+  if (output == 2) run_pipeline(mesh, output, kept);  // the arrays the timed runs reuse
   StageTime stitch_time, bfr_time;
   size_t bfr_points = 0;
   for (auto _ : state) {
     const double before = stitch_time.wall + bfr_time.wall;
     Stopwatch start;
-    {
-      const stitch::Surface surface(mesh, stitch::Method::mdc);
-      if (output == 2) {
-        stitch::tessellate(mesh, surface, options, kept);
-        benchmark::DoNotOptimize(kept.positions.data());
-      } else {
-        benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
-      }
-    }
+    run_pipeline(mesh, output, kept);
     stitch_time.add_since(start);
     start = Stopwatch();
     double checksum = 0.0;
@@ -273,9 +280,7 @@ void BM_vs_bfr(benchmark::State& state) {
   const double samples = static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch;
   const double stitch_rate = samples * n / stitch_time.wall;
   const double bfr_rate = static_cast<double>(bfr_points) * n / bfr_time.wall;
-  static const char* const outputs[] = {"new, attributes", "new, positions+normals",
-                                        "reused, positions+normals"};
-  state.SetLabel(mesh_label(kind, mesh) + ", " + outputs[output]);
+  state.SetLabel(mesh_label(kind, mesh) + ", " + kOutputs[output]);
   state.counters["stitch_samples/s"] = stitch_rate;
   state.counters["bfr_points/s"] = bfr_rate;
   state.counters["stitch/bfr"] = stitch_rate / bfr_rate;
@@ -283,27 +288,16 @@ void BM_vs_bfr(benchmark::State& state) {
       (samples / stitch_time.cpu) / (static_cast<double>(bfr_points) / bfr_time.cpu);
 }
 
-// The full pipeline alone (mdc surface + welded tessellation at resolution 8), on both cores:
-// the stitch half of BM_vs_bfr (output 0 or 2 as there), small enough at 10k faces to count
-// instructions with valgrind --tool=callgrind.
+// The full pipeline alone (run_pipeline, output 0 or 2), on both cores: the stitch half of
+// BM_vs_bfr, small enough at 10k faces to count instructions with valgrind --tool=callgrind.
 void BM_tessellate(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
-  const bool reused = state.range(2) == 2;
-  const stitch::TessellationOptions options{kResolution, true, !reused};
+  const auto output = static_cast<int>(state.range(2));
   stitch::TessellatedMesh kept;
-  if (reused) stitch::tessellate(mesh, stitch::Surface(mesh, stitch::Method::mdc), options, kept);
-  for (auto _ : state) {
-    const stitch::Surface surface(mesh, stitch::Method::mdc);
-    if (reused) {
-      stitch::tessellate(mesh, surface, options, kept);
-      benchmark::DoNotOptimize(kept.positions.data());
-    } else {
-      benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
-    }
-  }
-  state.SetLabel(mesh_label(kind, mesh) +
-                 (reused ? ", reused, positions+normals" : ", new, attributes"));
+  if (output == 2) run_pipeline(mesh, output, kept);
+  for (auto _ : state) run_pipeline(mesh, output, kept);
+  state.SetLabel(mesh_label(kind, mesh) + ", " + kOutputs[output]);
   state.counters["samples/s"] =
       benchmark::Counter(static_cast<double>(mesh.num_halfedges()) * kSamplesPerPatch,
                          benchmark::Counter::kIsIterationInvariantRate);

@@ -152,8 +152,8 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
   const int n = n_;
   if (!welded_) {
     const std::int64_t per_patch = grid_.num_samples();
-    const auto s = static_cast<int>(vertex % per_patch);
-    out.push_back({static_cast<int>(vertex / per_patch), grid_.row(s), grid_.column(s)});
+    out.push_back(
+        block_sample(static_cast<int>(vertex / per_patch), static_cast<int>(vertex % per_patch)));
     return;
   }
   if (vertex < first_face_) {
@@ -191,17 +191,13 @@ void TessellationLayout::samples(std::int64_t vertex, std::vector<GridSample>& o
     const auto k = static_cast<int>(at / per_corner);
     const auto r = static_cast<int>(at % per_corner);
     const int side = n - 1;
+    const GridSample own = block_sample(k, r);
+    out.push_back(own);
     if (r < side) {  // the half of edge(c) at the vertex, shared with rotate_cw(c)'s side i = 0
-      out.push_back({k, r + 1, 0});
       if (const int across = corner_index(mesh_.rotate_cw(corners_[k])); across >= 0)
-        out.push_back({across, 0, r + 1});
+        out.push_back({across, 0, own.i});
     } else if (r < 2 * side) {  // the spoke, shared with next(c)'s side j = n
-      const int m = r - side + 1;
-      out.push_back({k, n, m});
-      out.push_back({corner_index(mesh_.next(corners_[k])), m, n});
-    } else {
-      const int interior = r - 2 * side;
-      out.push_back({k, interior / side + 1, interior % side + 1});
+      out.push_back({corner_index(mesh_.next(corners_[k])), own.j, n});
     }
   }
 }
@@ -307,28 +303,23 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
   shared(normals + side, corner_index(mesh_.next(c)), 1, side, n, n);
 }
 
+GridSample TessellationLayout::block_sample(int k, int r) const {
+  if (!welded_) return {k, grid_.row(r), grid_.column(r)};
+  const int n = n_, side = n - 1;
+  if (r < side) return {k, r + 1, 0};
+  if (r < 2 * side) return {k, n, r - side + 1};
+  const int interior = r - 2 * side;
+  return {k, interior / side + 1, interior % side + 1};
+}
+
 void TessellationLayout::fill_block_attributes(int k, std::int64_t from, std::int64_t to,
                                                std::int64_t begin,
                                                const SampleAttributes& attributes) const {
   if (!attributes.uv && !attributes.patch) return;
-  const int n = n_, side = n - 1;
   const std::int64_t first = welded_ ? block(k) : static_cast<std::int64_t>(k) * block_size();
   for (std::int64_t vertex = from; vertex < to; ++vertex) {
-    const auto r = static_cast<int>(vertex - first);
-    int i = 0, j = 0;
-    if (!welded_) {
-      i = grid_.row(r);
-      j = grid_.column(r);
-    } else if (r < side) {
-      i = r + 1;
-    } else if (r < 2 * side) {
-      i = n;
-      j = r - side + 1;
-    } else {
-      i = (r - 2 * side) / side + 1;
-      j = (r - 2 * side) % side + 1;
-    }
-    if (attributes.uv) attributes.uv[vertex - begin] = grid_.uv(grid_.sample(i, j));
+    const GridSample g = block_sample(k, static_cast<int>(vertex - first));
+    if (attributes.uv) attributes.uv[vertex - begin] = grid_.uv(grid_.sample(g.i, g.j));
     if (attributes.patch) attributes.patch[vertex - begin] = corners_[k].idx;
   }
 }

@@ -82,6 +82,9 @@ class TessellationLayout {
   /// Positions, normals and levels (if not null) of corner k's block, in its order.
   void evaluate_block(PatchSampler& sampler, int k, Vec3* positions, Vec3* normals, int* levels,
                       BlockScratch& scratch) const;
+  /// Sample (i, j) of corner k's grid that is vertex r of its block (welded: edge half, spoke,
+  /// interior) or of its grid (unwelded).
+  [[nodiscard]] GridSample block_sample(int k, int r) const;
   /// The uv and patch attributes of output vertices [from, to) of corner k's block, at
   /// vertex - begin.
   void fill_block_attributes(int k, std::int64_t from, std::int64_t to, std::int64_t begin,
