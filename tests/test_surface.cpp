@@ -6,6 +6,7 @@
 
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/eval/surface.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "test_support.hpp"
 
@@ -40,6 +41,27 @@ TEST(Kgons, EveryCornerHasFourPointsAndExtraordinaryKgonsArePlanar) {
   for (Vertex v : mesh.vertices()) check_planar(k.vertex[v.idx]);
 }
 
+TEST(Kgons, FourGonNormalsAreNewellNormalsAndPlanarOnesTheFitsNormal) {
+  // 4-gons are not flattened and not fitted (kgon.hpp): the normal is the normalized Newell
+  // normal. On the pyramid, every K-gon of a quad face is planar (the shrink of a planar quad),
+  // so there it is also the least-squares plane's normal: each point's distance from the plane
+  // through the centroid is round-off of the coordinates' size (about 1, so 1e-13 allows a few
+  // hundred ulps).
+  const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"));
+  const KgonSet k = build_kgons(mesh);
+  int planar = 0;
+  auto check = [&](const Kgon& g, bool is_planar) {
+    if (g.size() != 4) return;
+    EXPECT_EQ(g.normal, newell_normal(g.points).normalized());
+    if (!is_planar) return;
+    ++planar;
+    for (const Vec3& p : g.points) EXPECT_LT(std::abs((p - g.centroid).dot(g.normal)), 1e-13);
+  };
+  for (Face f : mesh.faces()) check(k.face[f.idx], true);
+  for (Vertex v : mesh.vertices()) check(k.vertex[v.idx], false);
+  for (Edge e : mesh.edges()) check(k.edge[e.idx], false);
+  EXPECT_GT(planar, 0);
+}
 TEST(Kgons, ControlsScaleRotateAndRegularize) {
   const HalfedgeMesh mesh = test::cube_mesh();
   const KgonSet plain = build_kgons(mesh);

@@ -123,9 +123,16 @@ void shape_kgon(Kgon& g, const std::vector<Vec3>& corner_point, const std::vecto
     g.normal = fallback_normal.norm() > 0 ? fallback_normal.normalized() : Vec3::UnitZ();
     return;
   }
+  if (k == 4) {
+    // A 4-gon is not flattened (edge 4-gons are skew), so no plane is fitted: its normal only
+    // orients rotations and displays, and the eigen-solve of the fit was most of the surface
+    // build on a quad mesh. The Newell normal is the fit's normal for a planar 4-gon.
+    const Vec3 n = winding.norm() > 0 ? winding : fallback_normal;
+    g.normal = n.norm() > 0 ? n.normalized() : Vec3::UnitZ();
+    return;
+  }
   g.normal = plane_normal(g.points, g.centroid, winding.norm() > 0 ? winding : fallback_normal);
-  if (k != 4)
-    for (Vec3& p : g.points) p -= (p - g.centroid).dot(g.normal) * g.normal;
+  for (Vec3& p : g.points) p -= (p - g.centroid).dot(g.normal) * g.normal;
 }
 
 // Each element's K-gon in two steps: prepare_* writes what connectivity, tags and options decide
