@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <string>
+
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {
@@ -43,16 +45,41 @@ std::vector<Face> HalfedgeMesh::surface_faces() const {
   return out;
 }
 
-std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
-  std::vector<Halfedge> out;
+namespace {
+
+/// The half-edges from `start` along `step` until it comes back, counted first so that the list
+/// is allocated once (K-gon building lists every face loop and vertex fan: growing each list by
+/// push_back made three allocations for a quad).
+template <class Step>
+int count_cycle(const HalfedgeMesh& m, Halfedge start, Step step, const char* what) {
+  int count = 0;
   Halfedge h = start;
   do {
-    out.push_back(h);
-    h = next(h);
-    if (static_cast<int>(out.size()) > halfedge_capacity())
-      throw Error("internal error: face loop does not close");
+    ++count;
+    h = step(h);
+    if (count > m.halfedge_capacity())
+      throw Error(std::string("internal error: ") + what + " does not close");
   } while (h != start);
+  return count;
+}
+
+template <class Step>
+std::vector<Halfedge> list_cycle(const HalfedgeMesh& m, Halfedge start, Step step,
+                                 const char* what) {
+  std::vector<Halfedge> out(static_cast<size_t>(count_cycle(m, start, step, what)));
+  Halfedge h = start;
+  for (Halfedge& slot : out) {
+    slot = h;
+    h = step(h);
+  }
   return out;
+}
+
+}  // namespace
+
+std::vector<Halfedge> HalfedgeMesh::loop_from(Halfedge start) const {
+  return list_cycle(
+      *this, start, [this](Halfedge h) { return next(h); }, "face loop");
 }
 
 std::vector<Halfedge> HalfedgeMesh::face_loop(Face f) const {
@@ -60,24 +87,21 @@ std::vector<Halfedge> HalfedgeMesh::face_loop(Face f) const {
 }
 
 std::vector<Halfedge> HalfedgeMesh::vertex_fan(Vertex v) const {
-  std::vector<Halfedge> out;
   const Halfedge start = halfedge(v);
-  if (!start.valid()) return out;
-  Halfedge h = start;
-  do {
-    out.push_back(h);
-    h = rotate_ccw(h);
-    if (static_cast<int>(out.size()) > halfedge_capacity())
-      throw Error("internal error: vertex fan does not close");
-  } while (h != start);
-  return out;
+  if (!start.valid()) return {};
+  return list_cycle(
+      *this, start, [this](Halfedge h) { return rotate_ccw(h); }, "vertex fan");
 }
 
 int HalfedgeMesh::degree(Face f) const {
-  return static_cast<int>(face_loop(f).size());
+  return count_cycle(
+      *this, halfedge(f), [this](Halfedge h) { return next(h); }, "face loop");
 }
 int HalfedgeMesh::valence(Vertex v) const {
-  return static_cast<int>(vertex_fan(v).size());
+  const Halfedge start = halfedge(v);
+  if (!start.valid()) return 0;
+  return count_cycle(
+      *this, start, [this](Halfedge h) { return rotate_ccw(h); }, "vertex fan");
 }
 
 int HalfedgeMesh::index_in_face(Halfedge h) const {

@@ -280,9 +280,14 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
     place(m - 1, m, 0);         // edge half
     place(side + m - 1, n, m);  // spoke
   }
-  for (int i = 1; i < n; ++i)
-    for (int j = 1; j < n; ++j) place(2 * side + (i - 1) * side + (j - 1), i, j);
-  single(normals + 2 * side, static_cast<std::int64_t>(side) * side);
+  // The interior row by row, each a contiguous run both here and in the grid, in one pass.
+  for (int i = 1; i < n; ++i) {
+    const size_t from = static_cast<size_t>(i - 1) * n + 1;
+    const std::int64_t to = 2 * side + static_cast<std::int64_t>(i - 1) * side;
+    std::copy_n(scratch.grid_positions.data() + from, side, positions + to);
+    for (int j = 0; j < side; ++j) normals[to + j] = Vec3::Zero() + scratch.grid_normals[from + j];
+    if (levels) std::copy_n(scratch.grid_levels.data() + from, side, levels + to);
+  }
   // The edge half (i, 0) is shared with (0, i) of the corner across it (none on a boundary), the
   // spoke (n, j) with (j, n) of the next corner: their normals are the normalized sums, the
   // first patch's first.
