@@ -54,39 +54,47 @@ namespace {
 // derivatives only two (indices d and d + 1). A sum that starts at +0 and adds an exact zero keeps
 // its bits, so these sums, in evaluate_polynomial's order without the zero terms, give the same
 // point to the bit (for a finite net) for a fraction of the work.
-SurfacePoint evaluate_at_patch_corner(const ControlNet& net, const detail::CubicBasis& bu,
-                                      const detail::CubicBasis& bv, bool u_end, bool v_end) {
+SurfacePoint evaluate_at_patch_corner(const ControlNet& net, bool u_end, bool v_end) {
+  // cubic_basis(0) and cubic_basis(1) give exactly these: b = 1 at index e, d = -3, 3 at d, d + 1.
+  constexpr double kB = 1, kD0 = -3, kD1 = 3;
   const int eu = u_end ? 3 : 0, du = u_end ? 2 : 0;
   const int ev = v_end ? 3 : 0, dv = v_end ? 2 : 0;
-  const auto row = [&](int a) -> Vec3 { return Vec3::Zero() + bv.b[ev] * net.at(a, ev); };
+  const auto row = [&](int a) -> Vec3 { return Vec3::Zero() + kB * net.at(a, ev); };
   const auto row_dv = [&](int a) -> Vec3 {
-    return Vec3::Zero() + bv.d[dv] * net.at(a, dv) + bv.d[dv + 1] * net.at(a, dv + 1);
+    return Vec3::Zero() + kD0 * net.at(a, dv) + kD1 * net.at(a, dv + 1);
   };
   SurfacePoint sp;
-  sp.position = Vec3::Zero() + bu.b[eu] * row(eu);
-  sp.du = Vec3::Zero() + bu.d[du] * row(du) + bu.d[du + 1] * row(du + 1);
-  sp.dv = Vec3::Zero() + bu.b[eu] * row_dv(eu);
+  sp.position = Vec3::Zero() + kB * row(eu);
+  sp.du = Vec3::Zero() + kD0 * row(du) + kD1 * row(du + 1);
+  sp.dv = Vec3::Zero() + kB * row_dv(eu);
   return sp;
 }
 
 }  // namespace
 
 SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
+  if ((u == 0 || u == 1) && (v == 0 || v == 1)) {
+    SurfacePoint sp = evaluate_at_patch_corner(net, u == 1, v == 1);
+    // patch_normal's first test and result; the bases are needed only on its degenerate paths.
+    const Vec3 n = sp.du.cross(sp.dv);
+    const double tiny = detail::degenerate_threshold(net);
+    sp.normal = n.squaredNorm() > tiny
+                    ? Vec3(n.normalized())
+                    : detail::patch_normal(net, detail::cubic_basis(u), detail::cubic_basis(v), u,
+                                           v, sp.du, sp.dv, tiny);
+    return sp;
+  }
   const detail::CubicBasis bu = detail::cubic_basis(u), bv = detail::cubic_basis(v);
   SurfacePoint sp;
-  if ((u == 0 || u == 1) && (v == 0 || v == 1)) {
-    sp = evaluate_at_patch_corner(net, bu, bv, u == 1, v == 1);
-  } else {
-    for (int a = 0; a < 4; ++a) {
-      Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();  // sums over b for this a
-      for (int b = 0; b < 4; ++b) {
-        row += bv.b[b] * net.at(a, b);
-        row_dv += bv.d[b] * net.at(a, b);
-      }
-      sp.position += bu.b[a] * row;
-      sp.du += bu.d[a] * row;
-      sp.dv += bu.b[a] * row_dv;
+  for (int a = 0; a < 4; ++a) {
+    Vec3 row = Vec3::Zero(), row_dv = Vec3::Zero();  // sums over b for this a
+    for (int b = 0; b < 4; ++b) {
+      row += bv.b[b] * net.at(a, b);
+      row_dv += bv.d[b] * net.at(a, b);
     }
+    sp.position += bu.b[a] * row;
+    sp.du += bu.d[a] * row;
+    sp.dv += bu.b[a] * row_dv;
   }
   sp.normal =
       detail::patch_normal(net, bu, bv, u, v, sp.du, sp.dv, detail::degenerate_threshold(net));
