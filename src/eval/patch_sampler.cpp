@@ -164,21 +164,15 @@ void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, cons
     v_.resize(1);
     ub_.resize(1);
     vb_.resize(1);
+    u_basis_.resize(1);
+    v_basis_.resize(1);
   }
   u_[0].assign(table_.t.begin() + i0, table_.t.begin() + i1 + 1);
   v_[0].assign(table_.t.begin() + j0, table_.t.begin() + j1 + 1);
-  const auto copy_columns = [&](BasisColumns& to, int from, int count) {
-    to.resize(static_cast<size_t>(count));
-    for (int k = 0; k < count; ++k) {
-      to.t[k] = table_.t[from + k];
-      for (int a = 0; a < 4; ++a) {
-        to.b[a][k] = table_.b[a][from + k];
-        to.d[a][k] = table_.d[a][from + k];
-      }
-    }
-  };
-  copy_columns(ub_[0], i0, nu);
-  copy_columns(vb_[0], j0, nv);
+  ub_[0].resize(static_cast<size_t>(nu));
+  vb_[0].resize(static_cast<size_t>(nv));
+  for (int k = 0; k < nu; ++k) ub_[0][k] = &basis_[i0 + k];
+  for (int k = 0; k < nv; ++k) vb_[0][k] = &basis_[j0 + k];
   done_.assign(static_cast<size_t>(nu) * nv, 0);
   done_stride_ = nv;
   origin_ = net.p[0];
@@ -201,20 +195,18 @@ bool PatchSampler::pending(int iu, int nu, int jv, int nv) const {
   return false;
 }
 
-void PatchSampler::set_basis(BasisColumns& columns, size_t k, double t) const {
-  const double scaled = t * resolution_;
+void PatchSampler::set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
+                             double t) const {
+  const double scaled = t * resolution_;  // t is in [0, 1]
   if (resolution_ > 0 && scaled >= 0 && scaled <= resolution_) {
     const auto index = static_cast<size_t>(scaled);
     if (static_cast<double>(index) == scaled && table_.t[index] == t) {
-      columns.t[k] = t;
-      for (int a = 0; a < 4; ++a) {
-        columns.b[a][k] = table_.b[a][index];
-        columns.d[a][k] = table_.d[a][index];
-      }
+      basis = &basis_[index];
       return;
     }
   }
-  columns.set(k, t);
+  computed = detail::cubic_basis(t);
+  basis = &computed;
 }
 
 void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, int jv, int nv,
@@ -231,6 +223,8 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
     v_.resize(static_cast<size_t>(level) + 2);
     ub_.resize(static_cast<size_t>(level) + 2);
     vb_.resize(static_cast<size_t>(level) + 2);
+    u_basis_.resize(static_cast<size_t>(level) + 2);
+    v_basis_.resize(static_cast<size_t>(level) + 2);
   }
   while (static_cast<int>(children_.size()) <= level)
     children_.push_back(std::make_unique<LaneNet[]>(4));
@@ -238,11 +232,17 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
   const std::vector<double>& vs = v_[level];
   const auto at_end = [](double t) { return t == 0 || t == 1; };
   bool corner_here = false;
-  for (int i = iu; i < iu + nu; ++i) {
+  double tiny = 0;  // lane_threshold(net), once there is a corner sample
+  // Parameters rise along the block: only its first and last ones can be 0 or 1.
+  const int corner_i[2] = {iu, iu + nu - 1}, corner_j[2] = {jv, jv + nv - 1};
+  for (int ci = 0; ci < (nu > 1 ? 2 : 1); ++ci) {
+    const int i = corner_i[ci];
     if (!at_end(us[i])) continue;
-    for (int j = jv; j < jv + nv; ++j) {
+    for (int cj = 0; cj < (nv > 1 ? 2 : 1); ++cj) {
+      const int j = corner_j[cj];
       char& done = done_[static_cast<size_t>(i) * done_stride_ + j];
       if (!at_end(vs[j]) || done) continue;
+      if (!corner_here) tiny = lane_threshold(net);
       corner_here = true;
       // evaluate_polynomial at a patch corner (evaluate_at_patch_corner): the corner point, and
       // derivatives from it and its neighbours along the sides, with the bases' values there
@@ -265,7 +265,6 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
       const double cy = sdu[2] * sdv[0] - sdu[0] * sdv[2];
       const double cz = sdu[0] * sdv[1] - sdu[1] * sdv[0];
       const double n2 = cx * cx + cy * cy + cz * cz;
-      const double tiny = lane_threshold(net);
       if (n2 > tiny) {
         const double length = std::sqrt(n2);
         out.normals[at] = Vec3(cx / length, cy / length, cz / length);
@@ -283,24 +282,30 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
   if (corner_here && !pending(iu, nu, jv, nv)) return;
   std::vector<double>& child_us = u_[level + 1];
   std::vector<double>& child_vs = v_[level + 1];
-  BasisColumns& child_ub = ub_[level + 1];
-  BasisColumns& child_vb = vb_[level + 1];
+  // Sized for the whole block, before any entry is pointed at (a sibling at this level fills
+  // other entries of the same arrays).
+  std::vector<const detail::CubicBasis*>& child_ub = ub_[level + 1];
+  std::vector<const detail::CubicBasis*>& child_vb = vb_[level + 1];
+  std::vector<detail::CubicBasis>& child_u_basis = u_basis_[level + 1];
+  std::vector<detail::CubicBasis>& child_v_basis = v_basis_[level + 1];
   child_us.resize(us.size());
   child_vs.resize(vs.size());
-  if (child_ub.t.size() < us.size()) child_ub.resize(us.size());
-  if (child_vb.t.size() < vs.size()) child_vb.resize(vs.size());
+  child_ub.resize(us.size());
+  child_vb.resize(vs.size());
+  if (child_u_basis.size() < us.size()) child_u_basis.resize(us.size());
+  if (child_v_basis.size() < vs.size()) child_v_basis.resize(vs.size());
   // Parameters rise along the block, so each half is a contiguous run.
   int su = iu, sv = jv;
   for (int i = iu; i < iu + nu; ++i) {
     const int q = us[i] >= 0.5 ? 1 : 0;
     child_us[i] = 2 * us[i] - q;
-    set_basis(child_ub, static_cast<size_t>(i), child_us[i]);
+    set_basis(child_ub[i], child_u_basis[i], child_us[i]);
     su += 1 - q;
   }
   for (int j = jv; j < jv + nv; ++j) {
     const int q = vs[j] >= 0.5 ? 1 : 0;
     child_vs[j] = 2 * vs[j] - q;
-    set_basis(child_vb, static_cast<size_t>(j), child_vs[j]);
+    set_basis(child_vb[j], child_v_basis[j], child_vs[j]);
     sv += 1 - q;
   }
   LaneNet* children = children_[level].get();
@@ -318,8 +323,8 @@ STITCH_LANE_CLONES
 void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int jv, int nv,
                               const GridOut& out) {
   // polynomial_block's sums on whole points: the row sums of each column, then each sample.
-  const BasisColumns& bu = ub_[level];
-  const BasisColumns& bv = vb_[level];
+  const detail::CubicBasis* const* bu = ub_[level].data();
+  const detail::CubicBasis* const* bv = vb_[level].data();
   constexpr int kChunk = 16;
   const double tiny = lane_threshold(net);
   const Lanes zero = {0, 0, 0, 0};
@@ -329,21 +334,21 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
     const int m = std::min(kChunk, nv - jc);
     Lanes rows[kChunk][4], rows_dv[kChunk][4];  // [k][a]: sums over b, of b(v) and b'(v)
     for (int k = 0; k < m; ++k) {
-      const int vk = jv + jc + k;
+      const detail::CubicBasis& basis = *bv[jv + jc + k];
       for (int a = 0; a < 4; ++a) {
         Lanes r = zero, r_dv = zero;
         for (int b = 0; b < 4; ++b) {
-          r += bv.b[b][vk] * net.p[4 * a + b];
-          r_dv += bv.d[b][vk] * net.p[4 * a + b];
+          r += basis.b[b] * net.p[4 * a + b];
+          r_dv += basis.d[b] * net.p[4 * a + b];
         }
         rows[k][a] = r;
         rows_dv[k][a] = r_dv;
       }
     }
     for (int ii = 0; ii < nu; ++ii) {
-      const int ub = iu + ii;
-      const double b[4] = {bu.b[0][ub], bu.b[1][ub], bu.b[2][ub], bu.b[3][ub]};
-      const double d[4] = {bu.d[0][ub], bu.d[1][ub], bu.d[2][ub], bu.d[3][ub]};
+      const detail::CubicBasis& basis = *bu[iu + ii];
+      const double b[4] = {basis.b[0], basis.b[1], basis.b[2], basis.b[3]};
+      const double d[4] = {basis.d[0], basis.d[1], basis.d[2], basis.d[3]};
       const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv + jc;
       const char* done = done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv + jc;
       for (int k = 0; k < m; ++k) {
@@ -359,17 +364,23 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
         const double cy = u[2] * v[0] - u[0] * v[2];
         const double cz = u[0] * v[1] - u[1] * v[0];
         const double n2 = cx * cx + cy * cy + cz * cz;
+        Vec3& normal = out.normals[row_at + k];
         if (n2 > tiny) {
           const double length = std::sqrt(n2);
-          out.normals[row_at + k] = Vec3(cx / length, cy / length, cz / length);
+          normal[0] = cx / length;
+          normal[1] = cy / length;
+          normal[2] = cz / length;
         } else {  // patch_normal's test; the degenerate points (and NaN) take its whole path
-          const double tu = bu.t[ub], tv = bv.t[jv + jc + k];
-          out.normals[row_at + k] =
+          const double tu = u_[level][iu + ii], tv = v_[level][jv + jc + k];
+          normal =
               detail::patch_normal(to_net(net), detail::cubic_basis(tu), detail::cubic_basis(tv),
                                    tu, tv, Vec3(u[0], u[1], u[2]), Vec3(v[0], v[1], v[2]), tiny);
         }
         const Lanes position = p + origin;
-        out.positions[row_at + k] = Vec3(position[0], position[1], position[2]);
+        Vec3& to = out.positions[row_at + k];
+        to[0] = position[0];
+        to[1] = position[1];
+        to[2] = position[2];
         if (out.levels) out.levels[row_at + k] = level;
       }
     }

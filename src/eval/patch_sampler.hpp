@@ -89,9 +89,10 @@ class PatchSampler {
   /// children_[level] while the samples below them are evaluated.
   void descend_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
                      const GridOut& out);
-  /// Basis entry k of `columns` for the parameter t: the resolution's table entry when t is a
-  /// grid value of it (the same bits as computing it), else detail::cubic_basis(t).
-  void set_basis(BasisColumns& columns, size_t k, double t) const;
+  /// Points `basis` at the basis of the parameter t: the resolution's table entry when t is a
+  /// grid value of it (the same bits as computing it), else `computed`, set to
+  /// detail::cubic_basis(t).
+  void set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed, double t) const;
   /// polynomial_block for a LaneNet: the same sums, a point (3 coordinates) per vector.
   void lane_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
                   const GridOut& out);
@@ -112,7 +113,9 @@ class PatchSampler {
   BasisColumns table_;                     ///< basis_ as columns
   // Scratch of evaluate_block, kept to avoid allocating per call.
   std::vector<std::vector<double>> u_, v_;  ///< [level][k]: parameters in the level's net
-  std::vector<BasisColumns> ub_, vb_;       ///< [level]: their bases, entry k for u_[level][k]
+  /// [level][k]: the basis of u_[level][k] (v_[level][k]), in basis_ or in u_basis_ (v_basis_)
+  std::vector<std::vector<const detail::CubicBasis*>> ub_, vb_;
+  std::vector<std::vector<detail::CubicBasis>> u_basis_, v_basis_;
   /// [level]: the four children of the last split at that level (allocated per level, so that
   /// adding levels moves none).
   std::vector<std::unique_ptr<detail::LaneNet[]>> children_;
