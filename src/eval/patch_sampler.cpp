@@ -197,16 +197,15 @@ bool PatchSampler::pending(int iu, int nu, int jv, int nv) const {
 
 void PatchSampler::set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
                              double t) const {
-  const double scaled = t * resolution_;  // t is in [0, 1]
-  if (resolution_ > 0 && scaled >= 0 && scaled <= resolution_) {
-    const auto index = static_cast<size_t>(scaled);
-    if (static_cast<double>(index) == scaled && table_.t[index] == t) {
-      basis = &basis_[index];
-      return;
-    }
+  // t is in [0, 1] and resolution_ >= 1 (evaluate_block reads the table).
+  const double scaled = t * resolution_;
+  const auto index = static_cast<size_t>(scaled);
+  if (static_cast<double>(index) == scaled && table_.t[index] == t) {
+    basis = &basis_[index];
+  } else {
+    computed = detail::cubic_basis(t);
+    basis = &computed;
   }
-  computed = detail::cubic_basis(t);
-  basis = &computed;
 }
 
 void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, int jv, int nv,

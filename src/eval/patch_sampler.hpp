@@ -92,7 +92,8 @@ class PatchSampler {
   /// Points `basis` at the basis of the parameter t: the resolution's table entry when t is a
   /// grid value of it (the same bits as computing it), else `computed`, set to
   /// detail::cubic_basis(t).
-  void set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed, double t) const;
+  inline void set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
+                        double t) const;
   /// polynomial_block for a LaneNet: the same sums, a point (3 coordinates) per vector.
   void lane_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
                   const GridOut& out);
