@@ -51,8 +51,10 @@ class PatchSampler {
   /// evaluate_grid(c, i, j)'s position, normal and level for every i in [i0, i1] and j in
   /// [j0, j1], to the bit, at a fraction of the cost: a polynomial net is summed against basis
   /// tables a grid row at a time (loops over j the compiler vectorises); an extraordinary net is
-  /// split once per level for all the samples below each child, and each regular child is
-  /// evaluated the same way with the bases of its own parameters.
+  /// split once per level for all the samples below each child (a point per vector of 4 doubles,
+  /// the children kept only while their samples are evaluated, not between calls), and each
+  /// regular child is summed the same way, a point per vector, with the bases of its own
+  /// parameters (the resolution's table entries where they are grid values).
   void evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out);
 
  private:
