@@ -6,12 +6,24 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "polynomial.hpp"
 #include "stitch/eval/surface.hpp"
 
 namespace stitch {
+
+namespace detail {
+/// A point as one vector of 4 doubles (x, y, z, 0): the extraordinary nets' splits and leaves
+/// work on whole points with the operations of the Vec3 code, coordinate by coordinate.
+using Lanes = double __attribute__((vector_size(32)));
+/// A control net in Lanes (the flags that evaluation reads, not corner_k).
+struct LaneNet {
+  Lanes p[16];  ///< P[a][b] = p[4 * a + b]
+  std::uint8_t extraordinary = 0;
+};
+}  // namespace detail
 
 /// Where PatchSampler::evaluate_block writes sample (i, j) of its block [i0, i1] x [j0, j1]:
 /// element (i - i0) * stride + (j - j0) of each array (levels may be null).
@@ -39,8 +51,10 @@ class PatchSampler {
   /// evaluate_grid(c, i, j)'s position, normal and level for every i in [i0, i1] and j in
   /// [j0, j1], to the bit, at a fraction of the cost: a polynomial net is summed against basis
   /// tables a grid row at a time (loops over j the compiler vectorises); an extraordinary net is
-  /// split once per level for all the samples below each child, and each regular child is
-  /// evaluated the same way with the bases of its own parameters.
+  /// split once per level for all the samples below each child (a point per vector of 4 doubles,
+  /// the children kept only while their samples are evaluated, not between calls), and each
+  /// regular child is summed the same way, a point per vector, with the bases of its own
+  /// parameters (the resolution's table entries where they are grid values).
   void evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out);
 
  private:
@@ -72,9 +86,19 @@ class PatchSampler {
   };
   /// The samples of the sub-block [iu, iu + nu) x [jv, jv + nv) (block-relative indices) whose
   /// descent reaches `net` at `level`; their parameters in `net` are u_[level][iu..] and
-  /// v_[level][jv..]. Samples marked in done_ were evaluated higher up.
-  void descend_block(Patch& p, const ControlNet& net, std::uint64_t path, int level, int iu, int nu,
-                     int jv, int nv, const GridOut& out);
+  /// v_[level][jv..], with their bases in ub_[level] and vb_[level] at the same indices. Samples
+  /// marked in done_ were evaluated higher up. The children of a split at `level` are kept in
+  /// children_[level] while the samples below them are evaluated.
+  void descend_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
+                     const GridOut& out);
+  /// Points `basis` at the basis of the parameter t: the resolution's table entry when t is a
+  /// grid value of it (the same bits as computing it), else `computed`, set to
+  /// detail::cubic_basis(t).
+  inline void set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
+                        double t) const;
+  /// polynomial_block for a LaneNet: the same sums, a point (3 coordinates) per vector.
+  void lane_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
+                  const GridOut& out);
   /// Whether a sample of the sub-block is not yet in done_.
   [[nodiscard]] bool pending(int iu, int nu, int jv, int nv) const;
   /// The polynomial of `net` at the sub-block [iu, iu + nu) x [jv, jv + nv), with the bases
@@ -91,9 +115,14 @@ class PatchSampler {
   std::vector<detail::CubicBasis> basis_;  ///< at t = k / resolution, k = 0..resolution
   BasisColumns table_;                     ///< basis_ as columns
   // Scratch of evaluate_block, kept to avoid allocating per call.
-  BasisColumns leaf_u_, leaf_v_;            ///< bases of an extraordinary net's child
   std::vector<std::vector<double>> u_, v_;  ///< [level][k]: parameters in the level's net
-  std::vector<char> done_;                  ///< [i][j] of the block: already written
+  /// [level][k]: the basis of u_[level][k] (v_[level][k]), in basis_ or in u_basis_ (v_basis_)
+  std::vector<std::vector<const detail::CubicBasis*>> ub_, vb_;
+  std::vector<std::vector<detail::CubicBasis>> u_basis_, v_basis_;
+  /// [level]: the four children of the last split at that level (allocated per level, so that
+  /// adding levels moves none).
+  std::vector<std::unique_ptr<detail::LaneNet[]>> children_;
+  std::vector<char> done_;  ///< [i][j] of the block: already written
   int done_stride_ = 0;
   Vec3 origin_ = Vec3::Zero();  ///< the extraordinary root net's first point
   std::array<Patch, 4> patches_;
