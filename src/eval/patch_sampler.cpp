@@ -156,7 +156,7 @@ void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, cons
     return;
   }
   if (method_ == Method::asc || net.regular()) {
-    polynomial_block(net, nullptr, 0, table_, i0, table_, j0, 0, nu, 0, nv, out, false);
+    polynomial_block(net, i0, j0, nu, nv, out);
     return;
   }
   if (u_.empty()) {
@@ -392,10 +392,10 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
 // twice, and the samples must stay Surface::evaluate's to the bit.
 __attribute__((target_clones("avx2", "default")))
 #endif
-void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, int level,
-                                    const BasisColumns& bu, int bu_at, const BasisColumns& bv,
-                                    int bv_at, int iu, int nu, int jv, int nv, const GridOut& out,
-                                    bool use_done) {
+void PatchSampler::polynomial_block(const ControlNet& net, int i0, int j0, int nu, int nv,
+                                    const GridOut& out) {
+  const BasisColumns &bu = table_, &bv = table_;
+  const int bu_at = i0, bv_at = j0;
   // evaluate_polynomial's sums in its order, spread over up to kChunk samples of a grid row: each
   // loop over k below works on local arrays, which the compiler vectorises.
   constexpr int kChunk = 16;
@@ -455,11 +455,8 @@ void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, i
         normal[2][k] = cz / length;
         length2[k] = n2;
       }
-      const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv + jc;
-      const char* done =
-          use_done ? done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv + jc : nullptr;
+      const std::ptrdiff_t row_at = ii * out.stride + jc;
       for (int k = 0; k < m; ++k) {
-        if (done && done[k]) continue;
         // patch_normal's test; the degenerate points (and NaN) take its whole path.
         const double v = bv.t[bv_at + jc + k];
         out.normals[row_at + k] =
@@ -468,10 +465,8 @@ void PatchSampler::polynomial_block(const ControlNet& net, const Vec3* origin, i
                 : detail::patch_normal(net, detail::cubic_basis(bu.t[ub]), detail::cubic_basis(v),
                                        bu.t[ub], v, Vec3(du[0][k], du[1][k], du[2][k]),
                                        Vec3(dv[0][k], dv[1][k], dv[2][k]), tiny);
-        Vec3 p(position[0][k], position[1][k], position[2][k]);
-        if (origin) p += *origin;
-        out.positions[row_at + k] = p;
-        if (out.levels) out.levels[row_at + k] = level;
+        out.positions[row_at + k] = Vec3(position[0][k], position[1][k], position[2][k]);
+        if (out.levels) out.levels[row_at + k] = 0;
       }
     }
   }

@@ -101,12 +101,9 @@ class PatchSampler {
                   const GridOut& out);
   /// Whether a sample of the sub-block is not yet in done_.
   [[nodiscard]] bool pending(int iu, int nu, int jv, int nv) const;
-  /// The polynomial of `net` at the sub-block [iu, iu + nu) x [jv, jv + nv), with the bases
-  /// of bu from entry bu_at and of bv from entry bv_at; `origin` (if any) is added to positions;
-  /// samples marked in done_ are skipped if use_done.
-  void polynomial_block(const ControlNet& net, const Vec3* origin, int level,
-                        const BasisColumns& bu, int bu_at, const BasisColumns& bv, int bv_at,
-                        int iu, int nu, int jv, int nv, const GridOut& out, bool use_done);
+  /// The polynomial of `net` (a regular net, or any net under asc) at the grid samples
+  /// [i0, i0 + nu) x [j0, j0 + nv), with the resolution's bases.
+  void polynomial_block(const ControlNet& net, int i0, int j0, int nu, int nv, const GridOut& out);
 
   const Surface* surface_;  ///< null: the Bézier patches of nets_ alone (not cc)
   Method method_;
