@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "stitch/mesh/build.hpp"
@@ -88,9 +89,10 @@ TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
   EXPECT_GE(deepest, 3);  // (1/5, 0) needs 3 splits before it leaves the corner's child
 }
 
-// Extraordinary vertices of valence 3 and 5, a 10-sided face, triangles, regular patches; and the
-// same with a boundary (without its last face).
-std::array<HalfedgeMesh, 2> closed_and_open_meshes() {
+// Extraordinary vertices of valence 3 and 5, a 10-sided face, triangles, regular patches; the
+// same with a boundary (without its last face); and the same with creases (every edge of its
+// first face and of one more sharp).
+std::array<HalfedgeMesh, 3> closed_and_open_meshes() {
   HalfedgeMesh closed = make_cube();
   apply_operation(closed, "insert-edge 1@1 5@2");
   apply_operation(closed, "insert-edge 2@3 5@3");
@@ -98,7 +100,11 @@ std::array<HalfedgeMesh, 2> closed_and_open_meshes() {
   PolygonSoup soup = to_polygon_soup(closed);
   soup.faces.pop_back();
   HalfedgeMesh open = build_mesh(soup);
-  return {std::move(closed), std::move(open)};
+  HalfedgeMesh creased = closed;
+  for (const Face f : {Face(0), Face(7)})
+    for (const Halfedge h : creased.face_loop(f))
+      creased.set_sharpness(HalfedgeMesh::edge(h), infinitely_sharp);
+  return {std::move(closed), std::move(open), std::move(creased)};
 }
 
 TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) {
@@ -115,11 +121,22 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
           ASSERT_EQ(s.num_vertices(), layout.num_vertices());
           std::vector<GridSample> sharing;
           for (int v = 0; v < s.num_vertices(); ++v) {
-            // The first sample's point; the normalized sum of all sharing samples' normals.
+            // The first sample's point; the normalized sum of all sharing samples' normals at
+            // patch corners (mesh vertices, face centres, edge midpoints), on sharp edges (side
+            // j = 0 lies on edge(c), side i = 0 on edge(prev(c))) and under asc; else the first
+            // sample's normal.
             layout.samples(v, sharing);
+            const GridSample& g0 = sharing[0];
+            const Corner c0 = surface.corners()[g0.corner];
+            const KgonSet& kgons = surface.bezier().kgons;
+            const bool on_patch_corner = (g0.i == 0 || g0.i == n) && (g0.j == 0 || g0.j == n);
+            const bool mean = welded && sharing.size() > 1 &&
+                              (on_patch_corner || method == Method::asc ||
+                               (g0.j == 0 && kgons.sharp(HalfedgeMesh::edge(c0))) ||
+                               (g0.i == 0 && kgons.sharp(HalfedgeMesh::edge(mesh->prev(c0)))));
             Vec3 normal = Vec3::Zero();
             SurfacePoint first;
-            for (size_t k = 0; k < sharing.size(); ++k) {
+            for (size_t k = 0; k < (mean ? sharing.size() : 1); ++k) {
               const GridSample& g = sharing[k];
               const SurfacePoint p =
                   surface.evaluate(surface.corners()[g.corner], static_cast<double>(g.i) / n,
@@ -127,7 +144,7 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
               normal += p.normal;
               if (k == 0) first = p;
             }
-            if (sharing.size() > 1) normal.normalize();
+            if (mean) normal.normalize();
             const std::string where =
                 fmt::format("{} n={} welded={} vertex {}", to_string(method), n, welded, v);
             ASSERT_EQ(s.positions[v], first.position) << where;
@@ -213,6 +230,42 @@ TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
   EXPECT_EQ(reused.positions.data(), storage) << "smaller output reallocated";
   expect_fresh(small, small_surface, {4, false, true});
   expect_fresh(big, big_surface, {6, true, true});
+}
+
+// Where the welded output keeps the first patch's normal (averages_normals is false), the other
+// patch's normal there is the same up to round-off: under mdc and cc the patches meet with C1
+// inside faces and on smooth edges (and G1 at extraordinary points). The bound, 1e-12 rad, is a
+// few thousand ulps of a unit vector's components: room for the round-off of a dozen levels of
+// splits near an extraordinary corner, and far below any visible shading difference or a crease.
+TEST(Tessellate, PatchesThatShareASmoothSampleAgreeOnItsNormal) {
+  for (const HalfedgeMesh& mesh : closed_and_open_meshes())
+    for (const Method method : {Method::mdc, Method::cc}) {
+      const Surface surface(mesh, method);
+      const int n = 8;
+      const TessellationLayout layout(mesh, surface.corners(), n, true);
+      std::vector<GridSample> sharing;
+      double largest = 0;
+      int compared = 0;
+      for (std::int64_t v = 0; v < layout.num_vertices(); ++v) {
+        layout.samples(v, sharing);
+        if (sharing.size() < 2 || layout.averages_normals(v, surface)) continue;
+        const auto normal = [&](const GridSample& g) {
+          return surface
+              .evaluate(surface.corners()[g.corner], static_cast<double>(g.i) / n,
+                        static_cast<double>(g.j) / n)
+              .normal;
+        };
+        const Vec3 first = normal(sharing[0]);
+        for (size_t k = 1; k < sharing.size(); ++k) {
+          const double a =
+              std::atan2(first.cross(normal(sharing[k])).norm(), first.dot(normal(sharing[k])));
+          largest = std::max(largest, a);
+          ++compared;
+        }
+      }
+      EXPECT_GT(compared, 0);
+      EXPECT_LT(largest, 1e-12) << to_string(method);
+    }
 }
 
 TEST(Tessellate, RefusesAResolutionBelowOne) {

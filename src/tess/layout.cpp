@@ -213,7 +213,8 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
   const std::int64_t blocks_begin = welded_ ? first_block_ : 0;
   const std::int64_t blocks_end = welded_ ? first_extra_ : num_vertices_;
   const std::int64_t per_block = block_size();
-  evaluate_each(sampler, begin, std::min(end, blocks_begin), begin, positions, normals, attributes);
+  evaluate_each(sampler, surface, begin, std::min(end, blocks_begin), begin, positions, normals,
+                attributes);
   const std::int64_t lo = std::max(begin, blocks_begin), hi = std::min(end, blocks_end);
   if (lo < hi && per_block > 0) {
     for (std::int64_t k = (lo - blocks_begin) / per_block; blocks_begin + k * per_block < hi; ++k) {
@@ -221,7 +222,7 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
       const auto corner = static_cast<int>(k);
       if (first >= begin && first + per_block <= end) {
         const std::int64_t at = first - begin;
-        evaluate_block(sampler, corner, positions + at, normals + at,
+        evaluate_block(sampler, surface, corner, positions + at, normals + at,
                        attributes.level ? attributes.level + at : nullptr, scratch);
         fill_block_attributes(corner, first, first + per_block, begin, attributes);
         continue;
@@ -230,7 +231,7 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
       scratch.positions.resize(static_cast<size_t>(per_block));
       scratch.normals.resize(static_cast<size_t>(per_block));
       scratch.levels.resize(static_cast<size_t>(per_block));
-      evaluate_block(sampler, corner, scratch.positions.data(), scratch.normals.data(),
+      evaluate_block(sampler, surface, corner, scratch.positions.data(), scratch.normals.data(),
                      scratch.levels.data(), scratch);
       const std::int64_t from = std::max(first, begin), to = std::min(first + per_block, end);
       for (std::int64_t vertex = from; vertex < to; ++vertex) {
@@ -241,11 +242,13 @@ void TessellationLayout::evaluate(const Surface& surface, std::int64_t begin, st
       fill_block_attributes(corner, from, to, begin, attributes);
     }
   }
-  evaluate_each(sampler, std::max(begin, blocks_end), end, begin, positions, normals, attributes);
+  evaluate_each(sampler, surface, std::max(begin, blocks_end), end, begin, positions, normals,
+                attributes);
 }
 
-void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* positions,
-                                        Vec3* normals, int* levels, BlockScratch& scratch) const {
+void TessellationLayout::evaluate_block(PatchSampler& sampler, const Surface& surface, int k,
+                                        Vec3* positions, Vec3* normals, int* levels,
+                                        BlockScratch& scratch) const {
   const int n = n_;
   const Corner c = corners_[k];
   // A sample of one patch keeps that patch's unit normal (plus zero, as the sum of one normal
@@ -289,12 +292,12 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
     if (levels) std::copy_n(scratch.grid_levels.data() + from, side, levels + to);
   }
   // The edge half (i, 0) is shared with (0, i) of the corner across it (none on a boundary), the
-  // spoke (n, j) with (j, n) of the next corner: their normals are the normalized sums, the
-  // first patch's first.
+  // spoke (n, j) with (j, n) of the next corner: where averages_normals, their normals are the
+  // normalized sums, this patch's first; elsewhere this patch's normals.
   scratch.shared_positions.resize(static_cast<size_t>(side));
   scratch.shared_normals.resize(static_cast<size_t>(side));
-  const auto shared = [&](Vec3* normal, int other, int i0, int i1, int j0, int j1) {
-    if (other < 0) {
+  const auto shared = [&](Vec3* normal, int other, bool mean, int i0, int i1, int j0, int j1) {
+    if (other < 0 || !mean) {
       single(normal, side);
       return;
     }
@@ -304,8 +307,23 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, int k, Vec3* posi
     for (int s = 0; s < side; ++s)
       normal[s] = (Vec3::Zero() + normal[s] + scratch.shared_normals[s]).normalized();
   };
-  shared(normals, corner_index(mesh_.rotate_cw(c)), 0, 0, 1, side);
-  shared(normals + side, corner_index(mesh_.next(c)), 1, side, n, n);
+  const bool asc = surface.method() == Method::asc;
+  shared(normals, corner_index(mesh_.rotate_cw(c)),
+         asc || surface.bezier().kgons.sharp(HalfedgeMesh::edge(c)), 0, 0, 1, side);
+  shared(normals + side, corner_index(mesh_.next(c)), asc, 1, side, n, n);
+}
+
+bool TessellationLayout::averages_normals(std::int64_t vertex, const Surface& surface) const {
+  if (!welded_) return false;
+  if (vertex < first_block_) return true;    // mesh vertices, face centres, edge midpoints
+  if (vertex >= first_extra_) return false;  // boundary halves: one patch
+  if (surface.method() == Method::asc) return true;
+  const std::int64_t per_corner = block_size();
+  const std::int64_t at = vertex - first_block_;
+  // The edge half (the first n - 1 of a corner's block) lies on a mesh edge, the spoke and the
+  // interior inside a face.
+  return at % per_corner < n_ - 1 && surface.bezier().kgons.sharp(HalfedgeMesh::edge(
+                                         corners_[static_cast<size_t>(at / per_corner)]));
 }
 
 GridSample TessellationLayout::block_sample(int k, int r) const {
@@ -329,16 +347,17 @@ void TessellationLayout::fill_block_attributes(int k, std::int64_t from, std::in
   }
 }
 
-void TessellationLayout::evaluate_each(PatchSampler& sampler, std::int64_t from, std::int64_t to,
-                                       std::int64_t begin, Vec3* positions, Vec3* normals,
+void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& surface,
+                                       std::int64_t from, std::int64_t to, std::int64_t begin,
+                                       Vec3* positions, Vec3* normals,
                                        const SampleAttributes& attributes) const {
   std::vector<GridSample> sharing;
   for (std::int64_t vertex = from; vertex < to; ++vertex) {
     samples(vertex, sharing);
     const bool grid = !welded_ || vertex >= first_block_;
-    const bool single = sharing.size() == 1;
+    const bool mean = sharing.size() > 1 && averages_normals(vertex, surface);
     Vec3 normal = Vec3::Zero();
-    for (size_t s = 0; s < sharing.size(); ++s) {
+    for (size_t s = 0; s < (mean ? sharing.size() : 1); ++s) {
       const GridSample& g = sharing[s];
       // The mesh vertices, face centres and edge midpoints are patch corners, evaluated
       // directly: the sampler's tables would not pay off there.
@@ -353,9 +372,8 @@ void TessellationLayout::evaluate_each(PatchSampler& sampler, std::int64_t from,
       if (attributes.patch) attributes.patch[at] = corners_[g.corner].idx;
       if (attributes.level) attributes.level[at] = point.level;
     }
-    // A sample of one patch keeps that patch's unit normal as evaluated; a shared one takes the
-    // mean direction of its patches' normals.
-    normals[vertex - begin] = single ? normal : normal.normalized();
+    // One patch's unit normal as evaluated, or the mean direction of its patches' normals.
+    normals[vertex - begin] = mean ? normal.normalized() : normal;
   }
 }
 

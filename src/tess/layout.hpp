@@ -59,10 +59,19 @@ class TessellationLayout {
   /// At most max(valence, face degree, 4) samples.
   void samples(std::int64_t vertex, std::vector<GridSample>& out) const;
 
+  /// Whether output vertex `vertex`, if shared, takes the normalized sum of its samples'
+  /// normals rather than its first sample's normal. The sum is taken at mesh vertices, face
+  /// centres and edge midpoints (few, and where patches of a merged face can meet at an angle),
+  /// on sharp edges (C0 there), and everywhere under asc (AS&C's patches are not C1 along edges
+  /// from an extraordinary vertex). Elsewhere (the spokes inside faces and the smooth edges'
+  /// halves under mdc and cc) the patches meet with C1 and their normals agree up to round-off
+  /// (test PatchesThatShareASmoothSampleAgreeOnItsNormal).
+  [[nodiscard]] bool averages_normals(std::int64_t vertex, const Surface& surface) const;
   /// Positions and unit normals of output vertices [begin, end): the position of the first
-  /// sample, the normalized sum of all sharing samples' normals in a fixed order (the result
-  /// does not depend on threads). With `attributes`, also the first sample's (u, v), corner
-  /// half-edge and level into the TessellatedMesh-like arrays (null to skip).
+  /// sample; the normal of the first sample, or where averages_normals, the normalized sum of all
+  /// sharing samples' normals in a fixed order (the result does not depend on threads). With
+  /// `attributes`, also the first sample's (u, v), corner half-edge and level into the
+  /// TessellatedMesh-like arrays (null to skip).
   void evaluate(const Surface& surface, std::int64_t begin, std::int64_t end, Vec3* positions,
                 Vec3* normals, const SampleAttributes& attributes = {}) const;
 
@@ -80,8 +89,8 @@ class TessellationLayout {
     std::vector<Vec3> shared_positions, shared_normals;  ///< a neighbour's side
   };
   /// Positions, normals and levels (if not null) of corner k's block, in its order.
-  void evaluate_block(PatchSampler& sampler, int k, Vec3* positions, Vec3* normals, int* levels,
-                      BlockScratch& scratch) const;
+  void evaluate_block(PatchSampler& sampler, const Surface& surface, int k, Vec3* positions,
+                      Vec3* normals, int* levels, BlockScratch& scratch) const;
   /// Sample (i, j) of corner k's grid that is vertex r of its block (welded: edge half, spoke,
   /// interior) or of its grid (unwelded).
   [[nodiscard]] GridSample block_sample(int k, int r) const;
@@ -90,8 +99,9 @@ class TessellationLayout {
   void fill_block_attributes(int k, std::int64_t from, std::int64_t to, std::int64_t begin,
                              const SampleAttributes& attributes) const;
   /// evaluate() vertex by vertex for [from, to), written at vertex - begin.
-  void evaluate_each(PatchSampler& sampler, std::int64_t from, std::int64_t to, std::int64_t begin,
-                     Vec3* positions, Vec3* normals, const SampleAttributes& attributes) const;
+  void evaluate_each(PatchSampler& sampler, const Surface& surface, std::int64_t from,
+                     std::int64_t to, std::int64_t begin, Vec3* positions, Vec3* normals,
+                     const SampleAttributes& attributes) const;
   /// vertex(k, i, j) of every sample of corner k's grid, at i * (n + 1) + j.
   void grid_vertices(int k, std::int64_t* out) const;
   /// The quad of cell (i, j) of corner k.

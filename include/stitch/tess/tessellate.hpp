@@ -13,9 +13,11 @@ struct TessellationOptions {
   bool sample_attributes = true;
 };
 
-/// Welded: one watertight, consistently oriented mesh with the input's genus; a sample shared by
-/// several patches takes the normalized mean of their normals (identical up to round-off where
-/// the surface is smooth). Unwelded: every patch's own (resolution+1)^2 grid.
+/// Welded: one watertight, consistently oriented mesh with the input's genus. A sample shared by
+/// several patches takes the first patch's normal where they meet with C1 by construction (inside
+/// a face, on smooth edges: their normals agree up to round-off there), and the normalized mean
+/// of their normals at mesh vertices and on sharp edges (creases). Unwelded: every patch's own
+/// (resolution+1)^2 grid.
 TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                            const TessellationOptions& options = {});
 
