@@ -25,9 +25,11 @@ std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method meth
   return check_patches(mesh, Surface(mesh, method), mesh.patch_corners()).problem_corners;
 }
 
-// A bent tunnel (bottom face to front face) folds (docs/method.md: bent tunnels are not modelled);
-// the cube's half twist "insert-edge 1@1 7@2", which these tests used before, no longer does.
-constexpr const char* kFoldingEdit = "insert-edge 3@1 5@3";
+// A bent tunnel (bottom face to front face, the bridge across the front face's diagonal) folds and
+// crosses itself (docs/method.md, "Bent tunnels"); the cube's half twist "insert-edge 1@1 7@2"
+// and then the space-diagonal bridge "insert-edge 3@1 5@3", which these tests used before, no
+// longer do.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 6@3";
 
 TEST(SurfaceHealth, TheBentTunnelIsReportedAndUndoClearsIt) {
   Session s(make_cube());
@@ -37,15 +39,18 @@ TEST(SurfaceHealth, TheBentTunnelIsReportedAndUndoClearsIt) {
   const SurfaceProblems& p = s.surface_problems();
   ASSERT_FALSE(p.empty());
   EXPECT_GT(p.folds, 0);
-  EXPECT_EQ(p.summary(), "surface folds at 6 patches");
+  EXPECT_EQ(p.summary(), "surface folds and intersects itself at 9 patches");
   EXPECT_EQ(p.corners, whole_surface_problems(s.document.mesh(), Method::mdc));
   EXPECT_GT(p.checked_patches, 0);
   EXPECT_EQ(p.checked_patches, s.last_update.recomputed_patches);
-  EXPECT_NE(r.message.find("; surface folds at 6 patches"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("; surface folds and intersects itself at 9 patches"), std::string::npos)
+      << r.message;
   ASSERT_EQ(printed.lines.size(), 2u);
-  EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 6 patches (corners ", 0), 0u)
+  EXPECT_EQ(printed.lines[1].rfind(
+                "warning: surface folds and intersects itself at 9 patches (corners ", 0),
+            0u)
       << printed.lines[1];
-  EXPECT_NE(printed.lines[1].find("3@1#1"), std::string::npos) << printed.lines[1];
+  EXPECT_NE(printed.lines[1].find("1@1#1"), std::string::npos) << printed.lines[1];
 
   ASSERT_FALSE(run_script(s, {"undo"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
