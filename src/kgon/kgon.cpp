@@ -253,10 +253,15 @@ void place_face(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,
     if (openings && !star_shaped(g)) {
       // Section 2's shrink of the rims' own corner points can wind back on itself (two faces
       // that share an edge, method.md): its fan of patches then folds at the face's centre.
-      // The nearest affinely regular polygon in its plane does not, when it turns the same way.
-      Kgon regular = g;
-      regularize(regular.points, regular.centroid);
-      if (star_shaped(regular)) g = std::move(regular);
+      // Where the bridge starts at an end of the shared edge, the bent tube's K-gon is taken;
+      // elsewhere the nearest affinely regular polygon in the plane, when it turns the same way.
+      std::optional<Kgon> other =
+          detail::place_pinched_tube_kgon(m, f, *openings, set.corner_point);
+      if (!other) {
+        other = g;
+        regularize(other->points, other->centroid);
+      }
+      if (star_shaped(*other)) g = std::move(*other);
     }
   }
   apply_control(g, control_for(options, options.face, f.idx, g.size()));
