@@ -181,15 +181,15 @@ namespace stitch {
 namespace {
 
 // --check warns about folds and self-intersections of what was written, and stays quiet on a
-// clean surface (issue 13, item 4). The half twist through a cube folds near its bridge
-// (docs/method.md).
+// clean surface (issue 13, item 4). A bent tunnel through a cube folds next to its merged face's
+// centre (docs/method.md).
 TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
   testing::TempFolder folder;
   auto r = testing::stitch_cli(folder, "primitive cube -o cube.obj");
   ASSERT_EQ(r.status, 0) << r.err;
-  // The bent tunnel from the bottom face to the front face folds (docs/method.md).
+  // The bent tunnel from the bottom face across the front face's diagonal folds (docs/method.md).
   for (const std::string name : {"straight", "bent"}) {
-    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 3@1 5@3";
+    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 6@3";
     r = testing::stitch_cli(folder, "edit cube.obj --op \"" + op + "\" -o " + name + ".obj");
     ASSERT_EQ(r.status, 0) << r.err;
     r = testing::stitch_cli(folder, "smooth " + name + ".obj -o s.ply --resolution 16 --check");

@@ -99,6 +99,17 @@ void regularize(std::vector<Vec3>& pts, const Vec3& c) {
   }
 }
 
+/// Whether every corner of g turns counter-clockwise about its normal from the one before,
+/// seen from its centroid, by less than half a turn.
+bool star_shaped(const Kgon& g) {
+  const int k = g.size();
+  for (int i = 0; i < k; ++i) {
+    const Vec3 a = g.points[i] - g.centroid, b = g.points[(i + 1) % k] - g.centroid;
+    if (!(a.cross(b).dot(g.normal) > 0)) return false;
+  }
+  return true;
+}
+
 void apply_control(Kgon& g, const KgonControl& ctl) {
   if (ctl == KgonControl{}) return;
   if (ctl.regularize) regularize(g.points, g.centroid);
@@ -241,11 +252,25 @@ void place_face(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,
   Kgon& g = set.face[f.idx];
   std::optional<Kgon> placed;
   if (openings) placed = detail::place_tube_kgon(m, f, *openings, set.corner_point);
-  if (placed)
+  if (placed) {
     g = std::move(*placed);
-  else
+  } else {
     shape_kgon(g, set.corner_point, weights[g.corners.size()],
                normal_around(m, g.corners, normal_of));
+    if (openings && !star_shaped(g)) {
+      // Section 2's shrink of the rims' own corner points can wind back on itself (two faces
+      // that share an edge, method.md): its fan of patches then folds at the face's centre.
+      // Where the bridge starts at an end of the shared edge, the bent tube's K-gon is taken;
+      // elsewhere the nearest affinely regular polygon in the plane, when it turns the same way.
+      std::optional<Kgon> other =
+          detail::place_pinched_tube_kgon(m, f, *openings, set.corner_point);
+      if (!other) {
+        other = g;
+        regularize(other->points, other->centroid);
+      }
+      if (star_shaped(*other)) g = std::move(*other);
+    }
+  }
   apply_control(g, control_for(options, options.face, f.idx, g.size()));
 }
 

@@ -573,6 +573,17 @@ std::optional<Kgon> place_bridge_kgon(const HalfedgeMesh& m, Face /*f*/,
                    helix->length(*tube), tube->twist, corner_point);
 }
 
+std::optional<Kgon> place_pinched_tube_kgon(const HalfedgeMesh& m, Face f,
+                                            const TwoOpenings& openings,
+                                            const std::vector<Vec3>& corner_point) {
+  if (!on_both_rims(m, openings, m.origin(openings.first.front())) &&
+      !on_both_rims(m, openings, m.origin(openings.second.front())))
+    return std::nullopt;
+  const auto bent = bent_tube_of(m, openings);
+  if (!bent || !(std::abs(bent->twist) >= kNoTwist)) return std::nullopt;
+  return place_on_bent_tube(m, f, *bent, openings, corner_point);
+}
+
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point) {
   // Two faces that shared an edge: the tube is pinched along that edge. The placements below

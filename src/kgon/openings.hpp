@@ -39,6 +39,14 @@ void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& open
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& mesh, Face f, const TwoOpenings& openings,
                                     const std::vector<Vec3>& corner_point);
 
+/// The face K-gon of two faces that shared an edge (the rims share its two vertices) when the
+/// bridge starts at an end of that edge and turns around the bent tube: the bent tube's face
+/// K-gon (as for faces apart). Nothing otherwise. Used only where section 2's K-gon over the
+/// rims' own corner points winds back on itself (docs/method.md, "Bent tunnels").
+std::optional<Kgon> place_pinched_tube_kgon(const HalfedgeMesh& mesh, Face f,
+                                            const TwoOpenings& openings,
+                                            const std::vector<Vec3>& corner_point);
+
 /// The K-gon of the bridge edge of such a face when the tube is twisted (the bridge joins
 /// corners at different angles around the tube): a quad on the tube wall halfway along the
 /// helix the bridge stands for, so that the surface runs around the wall instead of along the
