@@ -23,10 +23,11 @@ double degenerate_threshold(const ControlNet& net) {
   return 1e-24 * size2 * size2;
 }
 
-Vec3 patch_normal(const ControlNet& net, const CubicBasis& bu, const CubicBasis& bv, double u,
-                  double v, const Vec3& du, const Vec3& dv, double tiny) {
+Vec3 patch_normal(const ControlNet& net, double u, double v, const Vec3& du, const Vec3& dv,
+                  double tiny) {
   Vec3 n = du.cross(dv);
   if (n.squaredNorm() <= tiny) {
+    const CubicBasis bu = cubic_basis(u), bv = cubic_basis(v);
     // A degenerate point (a corner of a 2-gon): the normal is the limit along the diagonal
     // towards the patch centre, where du ~ t (duu + duv) and dv ~ t (duv + dvv).
     Vec3 duu = Vec3::Zero(), duv = Vec3::Zero(), dvv = Vec3::Zero();
@@ -75,13 +76,7 @@ SurfacePoint evaluate_at_patch_corner(const ControlNet& net, bool u_end, bool v_
 SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
   if ((u == 0 || u == 1) && (v == 0 || v == 1)) {
     SurfacePoint sp = evaluate_at_patch_corner(net, u == 1, v == 1);
-    // patch_normal's first test and result; the bases are needed only on its degenerate paths.
-    const Vec3 n = sp.du.cross(sp.dv);
-    const double tiny = detail::degenerate_threshold(net);
-    sp.normal = n.squaredNorm() > tiny
-                    ? Vec3(n.normalized())
-                    : detail::patch_normal(net, detail::cubic_basis(u), detail::cubic_basis(v), u,
-                                           v, sp.du, sp.dv, tiny);
+    sp.normal = detail::patch_normal(net, u, v, sp.du, sp.dv, detail::degenerate_threshold(net));
     return sp;
   }
   const detail::CubicBasis bu = detail::cubic_basis(u), bv = detail::cubic_basis(v);
@@ -96,8 +91,7 @@ SurfacePoint evaluate_polynomial(const ControlNet& net, double u, double v) {
     sp.du += bu.d[a] * row;
     sp.dv += bu.b[a] * row_dv;
   }
-  sp.normal =
-      detail::patch_normal(net, bu, bv, u, v, sp.du, sp.dv, detail::degenerate_threshold(net));
+  sp.normal = detail::patch_normal(net, u, v, sp.du, sp.dv, detail::degenerate_threshold(net));
   return sp;
 }
 

@@ -268,9 +268,9 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
         const double length = std::sqrt(n2);
         out.normals[at] = Vec3(cx / length, cy / length, cz / length);
       } else {
-        out.normals[at] = detail::patch_normal(
-            to_net(net), detail::cubic_basis(us[i]), detail::cubic_basis(vs[j]), us[i], vs[j],
-            Vec3(sdu[0], sdu[1], sdu[2]), Vec3(sdv[0], sdv[1], sdv[2]), tiny);
+        out.normals[at] =
+            detail::patch_normal(to_net(net), us[i], vs[j], Vec3(sdu[0], sdu[1], sdu[2]),
+                                 Vec3(sdv[0], sdv[1], sdv[2]), tiny);
       }
       if (out.levels) out.levels[at] = level;
       done = 1;
@@ -371,9 +371,8 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
           normal[2] = cz / length;
         } else {  // patch_normal's test; the degenerate points (and NaN) take its whole path
           const double tu = u_[level][iu + ii], tv = v_[level][jv + jc + k];
-          normal =
-              detail::patch_normal(to_net(net), detail::cubic_basis(tu), detail::cubic_basis(tv),
-                                   tu, tv, Vec3(u[0], u[1], u[2]), Vec3(v[0], v[1], v[2]), tiny);
+          normal = detail::patch_normal(to_net(net), tu, tv, Vec3(u[0], u[1], u[2]),
+                                        Vec3(v[0], v[1], v[2]), tiny);
         }
         const Lanes position = p + origin;
         Vec3& to = out.positions[row_at + k];
@@ -462,8 +461,7 @@ void PatchSampler::polynomial_block(const ControlNet& net, int i0, int j0, int n
         out.normals[row_at + k] =
             length2[k] > tiny
                 ? Vec3(normal[0][k], normal[1][k], normal[2][k])
-                : detail::patch_normal(net, detail::cubic_basis(bu.t[ub]), detail::cubic_basis(v),
-                                       bu.t[ub], v, Vec3(du[0][k], du[1][k], du[2][k]),
+                : detail::patch_normal(net, bu.t[ub], v, Vec3(du[0][k], du[1][k], du[2][k]),
                                        Vec3(dv[0][k], dv[1][k], dv[2][k]), tiny);
         out.positions[row_at + k] = Vec3(position[0][k], position[1][k], position[2][k]);
         if (out.levels) out.levels[row_at + k] = 0;
@@ -504,7 +502,7 @@ SurfacePoint PatchSampler::evaluate_grid(Corner c, int i, int j) {
     sp.du += bu.d[a] * p.rows[j][a];
     sp.dv += bu.b[a] * p.rows_dv[j][a];
   }
-  sp.normal = detail::patch_normal(net, bu, basis_[j], u, v, sp.du, sp.dv, p.tiny);
+  sp.normal = detail::patch_normal(net, u, v, sp.du, sp.dv, p.tiny);
   return sp;
 }
 

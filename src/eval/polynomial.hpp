@@ -17,8 +17,9 @@ CubicBasis cubic_basis(double t);
 double degenerate_threshold(const ControlNet& net);
 
 /// The unit normal at (u, v) from the first derivatives there; where du x dv vanishes (a corner
-/// of a 2-gon), the limit along the diagonal towards the patch centre.
-Vec3 patch_normal(const ControlNet& net, const CubicBasis& bu, const CubicBasis& bv, double u,
-                  double v, const Vec3& du, const Vec3& dv, double tiny);
+/// of a 2-gon), the limit along the diagonal towards the patch centre, from the second
+/// derivatives (the bases at u and v are computed only then).
+Vec3 patch_normal(const ControlNet& net, double u, double v, const Vec3& du, const Vec3& dv,
+                  double tiny);
 
 }  // namespace stitch::detail

@@ -307,10 +307,10 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, const Surface& su
     for (int s = 0; s < side; ++s)
       normal[s] = (Vec3::Zero() + normal[s] + scratch.shared_normals[s]).normalized();
   };
-  const bool asc = surface.method() == Method::asc;
-  shared(normals, corner_index(mesh_.rotate_cw(c)),
-         asc || surface.bezier().kgons.sharp(HalfedgeMesh::edge(c)), 0, 0, 1, side);
-  shared(normals + side, corner_index(mesh_.next(c)), asc, 1, side, n, n);
+  shared(normals, corner_index(mesh_.rotate_cw(c)), averages_normals(block(k), surface), 0, 0, 1,
+         side);
+  shared(normals + side, corner_index(mesh_.next(c)), averages_normals(block(k) + side, surface), 1,
+         side, n, n);
 }
 
 bool TessellationLayout::averages_normals(std::int64_t vertex, const Surface& surface) const {

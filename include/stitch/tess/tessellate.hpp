@@ -14,10 +14,10 @@ struct TessellationOptions {
 };
 
 /// Welded: one watertight, consistently oriented mesh with the input's genus. A sample shared by
-/// several patches takes the first patch's normal where they meet with C1 by construction (inside
-/// a face, on smooth edges: their normals agree up to round-off there), and the normalized mean
-/// of their normals at mesh vertices and on sharp edges (creases). Unwelded: every patch's own
-/// (resolution+1)^2 grid.
+/// several patches on a face spoke or a smooth edge takes the first patch's normal under mdc and
+/// cc (the patches meet with C1 there: their normals agree up to round-off); mesh vertices, face
+/// centres, edge midpoints, samples on sharp edges and every shared sample under asc take the
+/// normalized mean of the patches' normals. Unwelded: every patch's own (resolution+1)^2 grid.
 TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                            const TessellationOptions& options = {});
 
