@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "support/fresh_storage.hpp"
+
 namespace stitch {
 
 ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c) {
@@ -57,7 +59,8 @@ ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c)
 }
 
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& m, const KgonSet& kgons) {
-  std::vector<ControlNet> nets(m.halfedge_capacity());
+  std::vector<ControlNet> nets;
+  detail::size_for_overwrite(nets, static_cast<size_t>(m.halfedge_capacity()));
   const std::vector<Corner> corners = m.patch_corners();
   tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
     nets[corners[i].idx] = build_control_net(m, kgons, corners[i]);

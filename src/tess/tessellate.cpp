@@ -10,19 +10,10 @@
 #include <vector>
 
 #include "layout.hpp"
+#include "support/fresh_storage.hpp"
 
 namespace stitch {
 namespace {
-
-// Sizes v to n elements, keeping its storage when it is large enough (no allocation, and no
-// first touch of fresh pages: on this project's 2-core VM, faulting in the 2 GB of a 100k-face
-// tessellation at resolution 8 took longer than evaluating it). Storage that is too small is
-// dropped first, so that growing does not copy the old samples over.
-template <class T>
-void size_for(std::vector<T>& v, size_t n) {
-  if (v.capacity() < n) std::vector<T>().swap(v);
-  v.resize(n);
-}
 
 bool finite(const Vec3& p, const Vec3& n) {
   return p.allFinite() && n.allFinite();
@@ -34,12 +25,12 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                 const TessellationOptions& options, TessellatedMesh& out) {
   const TessellationLayout layout(mesh, surface.corners(), options.resolution, options.welded);
   const auto nv = static_cast<size_t>(layout.num_vertices());
-  size_for(out.positions, nv);
-  size_for(out.normals, nv);
+  detail::size_for_overwrite(out.positions, nv);
+  detail::size_for_overwrite(out.normals, nv);
   if (options.sample_attributes) {
-    size_for(out.uv, nv);
-    size_for(out.patch, nv);
-    size_for(out.level, nv);
+    detail::size_for_overwrite(out.uv, nv);
+    detail::size_for_overwrite(out.patch, nv);
+    detail::size_for_overwrite(out.level, nv);
   } else {
     out.uv.clear();
     out.patch.clear();
@@ -65,7 +56,7 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                         break;
                       }
                     });
-  size_for(out.quads, static_cast<size_t>(layout.num_quads()));
+  detail::size_for_overwrite(out.quads, static_cast<size_t>(layout.num_quads()));
   static_assert(sizeof(std::array<int, 4>) == 4 * sizeof(int));
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_quads(), 4096),
                     [&](const tbb::blocked_range<std::int64_t>& r) {
