@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "stitch/mesh/build.hpp"
@@ -266,6 +267,32 @@ TEST(Tessellate, PatchesThatShareASmoothSampleAgreeOnItsNormal) {
       EXPECT_GT(compared, 0);
       EXPECT_LT(largest, 1e-12) << to_string(method);
     }
+}
+
+// A K-gon moved to NaN (only a control can do that: the input limits refuse such meshes) spoils
+// the patches of its face. The error names a sample of one of them, whichever range of samples
+// holds it; unwelded, every sample belongs to one patch.
+TEST(Tessellate, RefusesASurfaceThatIsNotFiniteNamingTheSample) {
+  const HalfedgeMesh cube = test::cube_mesh();
+  KgonOptions options;
+  options.face[2].offset = Vec3(std::nan(""), 0.0, 0.0);
+  const Surface spoiled(cube, Method::mdc, options);
+  for (const bool welded : {false, true}) {
+    SCOPED_TRACE(welded ? "welded" : "unwelded");
+    try {
+      (void)tessellate(cube, spoiled, {4, welded});
+      ADD_FAILURE() << "a NaN K-gon was tessellated";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("not finite at sample"), std::string::npos) << message;
+      if (welded) continue;  // a shared sample's first patch may be a neighbour's
+      const auto at = message.find("corner half-edge ");
+      ASSERT_NE(at, std::string::npos) << message;
+      const int corner = std::stoi(message.substr(at + 17));
+      EXPECT_EQ(cube.face(Corner(corner)).idx, 2) << message;
+    }
+  }
+  EXPECT_NO_THROW((void)tessellate(cube, Surface(cube, Method::mdc), {4, false}));
 }
 
 TEST(Tessellate, RefusesAResolutionBelowOne) {

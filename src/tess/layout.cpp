@@ -97,13 +97,15 @@ void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) c
     const auto k = static_cast<int>(q / cells);
     grid_vertices(k, grid.data());
     const std::int64_t last = std::min(end, (k + 1) * cells);
-    for (; q < last; ++q, out += 4) {
-      const auto cell = static_cast<int>(q - k * cells);
-      const int at = (cell / n) * (n + 1) + cell % n;
-      out[0] = static_cast<int>(grid[at]);
-      out[1] = static_cast<int>(grid[at + n + 1]);
-      out[2] = static_cast<int>(grid[at + n + 2]);
-      out[3] = static_cast<int>(grid[at + 1]);
+    const auto cell = static_cast<int>(q - k * cells);
+    for (int i = cell / n, j = cell % n; q < last; ++i, j = 0) {
+      const std::int64_t* row = grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1);
+      for (; j < n && q < last; ++j, ++q, out += 4) {
+        out[0] = static_cast<int>(row[j]);
+        out[1] = static_cast<int>(row[j + n + 1]);
+        out[2] = static_cast<int>(row[j + n + 2]);
+        out[3] = static_cast<int>(row[j + 1]);
+      }
     }
   }
 }
@@ -251,14 +253,8 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, const Surface& su
                                         BlockScratch& scratch) const {
   const int n = n_;
   const Corner c = corners_[k];
-  // A sample of one patch keeps that patch's unit normal (plus zero, as the sum of one normal
-  // that the shared samples take: the same bits as sampling vertex by vertex).
-  const auto single = [](Vec3* normal, std::int64_t count) {
-    for (std::int64_t s = 0; s < count; ++s) normal[s] = Vec3::Zero() + normal[s];
-  };
   if (!welded_) {
     sampler.evaluate_block(c, 0, n, 0, n, {positions, normals, levels, n + 1});
-    single(normals, block_size());
     return;
   }
   const int side = n - 1;
@@ -288,7 +284,7 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, const Surface& su
     const size_t from = static_cast<size_t>(i - 1) * n + 1;
     const std::int64_t to = 2 * side + static_cast<std::int64_t>(i - 1) * side;
     std::copy_n(scratch.grid_positions.data() + from, side, positions + to);
-    for (int j = 0; j < side; ++j) normals[to + j] = Vec3::Zero() + scratch.grid_normals[from + j];
+    std::copy_n(scratch.grid_normals.data() + from, side, normals + to);
     if (levels) std::copy_n(scratch.grid_levels.data() + from, side, levels + to);
   }
   // The edge half (i, 0) is shared with (0, i) of the corner across it (none on a boundary), the
@@ -297,15 +293,11 @@ void TessellationLayout::evaluate_block(PatchSampler& sampler, const Surface& su
   scratch.shared_positions.resize(static_cast<size_t>(side));
   scratch.shared_normals.resize(static_cast<size_t>(side));
   const auto shared = [&](Vec3* normal, int other, bool mean, int i0, int i1, int j0, int j1) {
-    if (other < 0 || !mean) {
-      single(normal, side);
-      return;
-    }
+    if (other < 0 || !mean) return;
     sampler.evaluate_block(
         corners_[other], i0, i1, j0, j1,
         {scratch.shared_positions.data(), scratch.shared_normals.data(), nullptr, 1});
-    for (int s = 0; s < side; ++s)
-      normal[s] = (Vec3::Zero() + normal[s] + scratch.shared_normals[s]).normalized();
+    for (int s = 0; s < side; ++s) normal[s] = (normal[s] + scratch.shared_normals[s]).normalized();
   };
   shared(normals, corner_index(mesh_.rotate_cw(c)), averages_normals(block(k), surface), 0, 0, 1,
          side);
@@ -356,7 +348,7 @@ void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& sur
     samples(vertex, sharing);
     const bool grid = !welded_ || vertex >= first_block_;
     const bool mean = sharing.size() > 1 && averages_normals(vertex, surface);
-    Vec3 normal = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();  // set from the first patch: a mean starts from its normal
     for (size_t s = 0; s < (mean ? sharing.size() : 1); ++s) {
       const GridSample& g = sharing[s];
       // The mesh vertices, face centres and edge midpoints are patch corners, evaluated
@@ -364,8 +356,11 @@ void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& sur
       const Eigen::Vector2d& uv = grid_.uv(grid_.sample(g.i, g.j));
       const SurfacePoint point = grid ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
                                       : sampler.evaluate(corners_[g.corner], uv.x(), uv.y());
-      normal += point.normal;
-      if (s > 0) continue;
+      if (s > 0) {
+        normal += point.normal;
+        continue;
+      }
+      normal = point.normal;
       const std::int64_t at = vertex - begin;
       positions[at] = point.position;
       if (attributes.uv) attributes.uv[at] = uv;

@@ -15,8 +15,12 @@
 namespace stitch {
 namespace {
 
-bool finite(const Vec3& p, const Vec3& n) {
-  return p.allFinite() && n.allFinite();
+// Whether all `count` doubles from `x` are finite: x - x is 0 for a finite x and NaN for an
+// infinite or NaN one, and a sum with a NaN in it is NaN. Eigen sums in vector registers, at
+// about a sixth of the instructions of allFinite per sample.
+bool all_finite(const double* x, std::int64_t count) {
+  const Eigen::Map<const Eigen::ArrayXd> a(x, count);
+  return (a - a).sum() == 0.0;
 }
 
 }  // namespace
@@ -48,8 +52,12 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                               out.level.data() + r.begin()};
                       layout.evaluate(surface, r.begin(), r.end(), out.positions.data() + r.begin(),
                                       out.normals.data() + r.begin(), at);
+                      const std::int64_t count = 3 * static_cast<std::int64_t>(r.size());
+                      if (all_finite(out.positions[r.begin()].data(), count) &&
+                          all_finite(out.normals[r.begin()].data(), count))
+                        return;
                       for (std::int64_t i = r.begin(); i < r.end(); ++i) {
-                        if (finite(out.positions[i], out.normals[i])) continue;
+                        if (out.positions[i].allFinite() && out.normals[i].allFinite()) continue;
                         std::int64_t seen = first_bad.load();
                         while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
                         }
