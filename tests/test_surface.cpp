@@ -41,16 +41,25 @@ TEST(Kgons, EveryCornerHasFourPointsAndExtraordinaryKgonsArePlanar) {
   for (Vertex v : mesh.vertices()) check_planar(k.vertex[v.idx]);
 }
 
-TEST(Kgons, FourGonNormalsAreNewellNormalsAndPlanarOnesTheFitsNormal) {
+TEST(Kgons, FourGonAndTriangleNormalsAreNewellNormalsAndPlanarOnesTheFitsNormal) {
   // 4-gons are not flattened and not fitted (kgon.hpp): the normal is the normalized Newell
   // normal. On the pyramid, every K-gon of a quad face is planar (the shrink of a planar quad),
   // so there it is also the least-squares plane's normal: each point's distance from the plane
   // through the centroid is round-off of the coordinates' size (about 1, so 1e-13 allows a few
-  // hundred ulps).
+  // hundred ulps). Triangles (its base vertices have valence 3) are their own plane: the normal
+  // is their Newell normal and the points are the shrink of the corner points, not moved.
   const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"));
   const KgonSet k = build_kgons(mesh);
-  int planar = 0;
+  int planar = 0, triangles = 0;
   auto check = [&](const Kgon& g, bool is_planar) {
+    if (g.size() == 3) {
+      ++triangles;
+      EXPECT_EQ(g.normal, newell_normal(g.points).normalized());
+      std::vector<Vec3> corner_points;
+      for (Corner c : g.corners) corner_points.push_back(k.corner_point[c.idx]);
+      EXPECT_EQ(g.points, doo_sabin_shrink(corner_points));
+      return;
+    }
     if (g.size() != 4) return;
     EXPECT_EQ(g.normal, newell_normal(g.points).normalized());
     if (!is_planar) return;
@@ -61,6 +70,7 @@ TEST(Kgons, FourGonNormalsAreNewellNormalsAndPlanarOnesTheFitsNormal) {
   for (Vertex v : mesh.vertices()) check(k.vertex[v.idx], false);
   for (Edge e : mesh.edges()) check(k.edge[e.idx], false);
   EXPECT_GT(planar, 0);
+  EXPECT_GT(triangles, 0);
 }
 TEST(Kgons, ControlsScaleRotateAndRegularize) {
   const HalfedgeMesh mesh = test::cube_mesh();

@@ -33,7 +33,8 @@ template <class PointAt, class Out>
 void shrink(int n, const double* a, PointAt point, Out out) {
   for (int i = 0; i < n; ++i) {
     Vec3 sum = Vec3::Zero();
-    for (int j = 0; j < n; ++j) sum += a[((j - i) % n + n) % n] * point(j);
+    // a[(j - i) mod n] for j = 0, 1, ..., n - 1, without a division per term.
+    for (int j = 0, w = (n - i) % n; j < n; ++j, w = w + 1 == n ? 0 : w + 1) sum += a[w] * point(j);
     out(i, sum);
   }
 }
@@ -140,6 +141,13 @@ void shape_kgon(Kgon& g, const std::vector<Vec3>& corner_point, const std::vecto
     // build on a quad mesh. The Newell normal is the fit's normal for a planar 4-gon.
     const Vec3 n = winding.norm() > 0 ? winding : fallback_normal;
     g.normal = n.norm() > 0 ? n.normalized() : Vec3::UnitZ();
+    return;
+  }
+  if (k == 3 && winding.norm() > 0) {
+    // Three points that span a plane lie in it: the fit's plane is theirs, its normal their
+    // Newell normal, and flattening would move them by round-off only. The eigen-solve was a
+    // quarter of the surface build on a triangle mesh.
+    g.normal = winding.normalized();
     return;
   }
   g.normal = plane_normal(g.points, g.centroid, winding.norm() > 0 ? winding : fallback_normal);

@@ -75,7 +75,8 @@ struct Kgon {
   Vec3 centroid = Vec3::Zero();
   /// Unit normal of the least-squares plane, oriented like the surface. A 4-gon is not
   /// flattened and no plane is fitted: its normal is its Newell normal, normalized (the same
-  /// plane when the 4-gon is planar). For K = 2 there is no plane: the normal is the average of
+  /// plane when the 4-gon is planar). A triangle is its own plane: its normal is its Newell
+  /// normal too, and it is not moved. For K = 2 there is no plane: the normal is the average of
   /// the adjacent faces' normals (see build_kgons).
   Vec3 normal = Vec3::UnitZ();
   [[nodiscard]] int size() const { return static_cast<int>(points.size()); }
