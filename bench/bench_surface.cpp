@@ -24,6 +24,7 @@
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/bfr/surfaceFactoryCache.h>
 #include <opensubdiv/bfr/tessellation.h>
+#include <sys/resource.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
@@ -80,16 +81,27 @@ double sample_corner_grids(const std::vector<Corner>& corners, const Evaluate& e
 
 // Wall-clock and process CPU time (all threads) of one stage. The machine is shared: CPU time
 // is less sensitive than wall time to other processes taking the cores.
+// Page faults of the process so far (all threads): first touches of fresh memory, which cost
+// this project's VM about 20 microseconds of CPU each (support/fresh_storage.hpp).
+long page_faults() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
 struct Stopwatch {
   std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
   std::clock_t cpu = std::clock();
+  long faults = page_faults();
 };
 
 struct StageTime {
   double wall = 0.0, cpu = 0.0;
+  long faults = 0;
   void add_since(const Stopwatch& start) {
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start.wall).count();
     cpu += static_cast<double>(std::clock() - start.cpu) / CLOCKS_PER_SEC;
+    faults += page_faults() - start.faults;
   }
 };
 
@@ -286,6 +298,8 @@ void BM_vs_bfr(benchmark::State& state) {
   state.counters["stitch/bfr"] = stitch_rate / bfr_rate;
   state.counters["stitch/bfr_cpu"] =
       (samples / stitch_time.cpu) / (static_cast<double>(bfr_points) / bfr_time.cpu);
+  state.counters["stitch_faults"] = static_cast<double>(stitch_time.faults) / n;
+  state.counters["bfr_faults"] = static_cast<double>(bfr_time.faults) / n;
 }
 
 // The full pipeline alone (run_pipeline, output 0 or 2), on both cores: the stitch half of
