@@ -108,8 +108,9 @@ void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& opening
   // of the side faces there, the wall between the hole and the outside has no thickness, and
   // every tube through a triangular prism intersected itself.) kSplit is measured, not derived
   // (docs/method.md): from 0.55 to 0.65 every cube and prism tube but prism 6's half twists is
-  // clean and open along the axis; at 0.5 the cube's half twists are clean but off the axis, at
-  // 0.7 three of prism 3's tubes are, and at 0.2 or less the twisted tubes fold.
+  // clean and open along the axis (measured before place_on_twisted_tube stretched their K-gon); at
+  // 0.5 the cube's half twists are clean but off the axis, at 0.7 three of prism 3's tubes are, and
+  // at 0.2 or less the twisted tubes fold.
   constexpr double kSplit = 0.6;
   for (const auto* corners : {&openings.first, &openings.second}) {
     const size_t n = corners->size() - 1;
@@ -247,17 +248,43 @@ Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& ope
 /// across that direction cut to the tube's radius. A plane touching a cylinder of radius r is
 /// sqrt(r^2 + d^2) - r off the wall at a distance d to the side, so K-gon points farther out pull
 /// the patches off the wall (the twisted tubes of a triangular prism, K-gon radius 1.4 r, folded).
-/// The K-gon is affinely regular and planar.
+/// The K-gon is affinely regular and planar. `along_scale` and `across_scale` stretch it further
+/// for tubes whose fan has to reach far around (place_on_twisted_tube).
 Kgon wall_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings, const Vec3& centre,
                const Vec3& normal, const Vec3& along, double radius,
-               const std::vector<Vec3>& corner_point) {
+               const std::vector<Vec3>& corner_point, double along_scale = 1,
+               double across_scale = 1) {
   const Vec3 e1 = (along - along.dot(normal) * normal).normalized();
   const Vec3 e2 = normal.cross(e1);
   Kgon g = regular_tube_kgon(loop, openings, centre, normal, e1, e2, corner_point);
   const double extent = (g.points[0] - centre).norm();
-  if (extent > radius)
-    for (Vec3& p : g.points) p -= (1 - radius / extent) * (p - centre).dot(e2) * e2;
+  const double across = std::min(extent, radius) * across_scale;
+  if (along_scale != 1 || across != extent)
+    for (Vec3& p : g.points) {
+      const Vec3 d = p - centre;
+      p += (along_scale - 1) * d.dot(e1) * e1 - (1 - across / extent) * d.dot(e2) * e2;
+    }
   return g;
+}
+
+/// How far around a twisted tube the face's fan has to reach: the largest angle about the axis
+/// from the face K-gon's centre (opposite the middle of the helix) to the middle of a rim's
+/// edge, measured on the face unrolled (between the helix and its copy a full turn on).
+double longest_spoke(const HalfedgeMesh& m, const Tube& tube, const TwoOpenings& openings) {
+  const double centre = std::numbers::pi + tube.twist / 2;
+  double longest = 0;
+  for (const auto* corners : {&openings.first, &openings.second}) {
+    const double bridge = corners == &openings.first ? 0 : tube.twist;
+    for (size_t i = 0; i + 1 < corners->size(); ++i) {
+      const Vec3 mid =
+          0.5 * (m.position(m.origin((*corners)[i])) + m.position(m.origin((*corners)[i + 1])));
+      const Vec3 d = mid - tube.base;
+      double around = std::atan2(d.dot(tube.y0), d.dot(tube.x0)) - bridge;
+      around -= 2 * std::numbers::pi * std::floor(around / (2 * std::numbers::pi));
+      longest = std::max(longest, std::abs(bridge + around - centre));
+    }
+  }
+  return longest;
 }
 
 /// The face K-gon of a twisted tube: wall_kgon on the wall opposite the middle of the bridge's
@@ -280,7 +307,22 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   // `angle` (towards the second opening).
   const Vec3 along = (height_b - height_a) * tube.length * tube.axis +
                      tube.twist * radius * tube.radial(angle + std::numbers::pi / 2);
-  return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point);
+  // The fan's spoke to the farthest rim edge leaves the centre in the K-gon's plane and has to
+  // reach past the half turn by `overshoot`: seen along the axis, its cubic only passes the far
+  // side of the axis if its first control point lies at least r tan(overshoot) around the tube,
+  // and the K-gon cut across to r gives about r. The cube's and prism 4's half twists (45 degrees
+  // past) are open with the cut as it is, only just; prism 6's (60 degrees) were not. Past 45
+  // degrees the K-gon is stretched with tan(overshoot) (measured on prism 6's half twists: clean
+  // and open with 1.9 to 2.1 r across and 1.6 to 1.8 times section 2's size along; more across
+  // intersects, less leaves the axis blocked or folds). Measured only up to prism 6: prism 8's
+  // half twists (67.5 degrees) intersect themselves when stretched by tan(overshoot), and keep
+  // that of 60 degrees.
+  const double overshoot = longest_spoke(m, tube, openings) - std::numbers::pi;
+  double spread = 1;
+  if (overshoot > std::numbers::pi / 4 + 1e-9)
+    spread = std::min(std::tan(overshoot), std::tan(std::numbers::pi / 3));
+  return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point, spread,
+                   1 + 1.4 * (spread - 1));
 }
 
 /// The helix a twisted tube's bridge stands for: from the first rim's bridge vertex (angle 0)
