@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "mesh/mesh_writer.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
@@ -19,8 +23,8 @@
 
 namespace {
 
-using stitch::HalfedgeMesh;
 using stitch::Error;
+using stitch::HalfedgeMesh;
 using stitch::PolygonSoup;
 using stitch::Vec3;
 using stitch::test::error_of;
@@ -514,6 +518,57 @@ TEST(WriteSurfaceSamplesPly, StoresEveryAttributeInBinary) {
     EXPECT_EQ(from_bytes<double>(data, at + 48), mesh.uv[i].x());
     EXPECT_EQ(from_bytes<double>(data, at + 56), mesh.uv[i].y());
     EXPECT_EQ(from_bytes<int32_t>(data, at + 64), mesh.patch[i]);
+  }
+}
+
+TEST(WritePly, BinaryRecordsAreEachValueLittleEndian) {
+  TempFolder folder;
+  std::vector<Vec3> positions, normals;
+  for (int i = 0; i < 300; ++i) {
+    const double t = i / 7.0;
+    positions.emplace_back(std::cos(t) / 3, std::sin(t) * 1e-300, t * 6.02214076e23);
+    normals.emplace_back(std::sin(t), -std::cos(t), 1.0 / (i + 3));
+  }
+  std::vector<std::vector<int>> faces = {{0, 1, 2}, {3, 4, 5, 6}, {7, 8, 9, 10, 11}, {299, 0, 1}};
+  std::vector<int> big(300);  // more than 255 sides: the counts become ints
+  std::iota(big.begin(), big.end(), 0);
+  for (const bool with_big : {false, true}) {
+    if (with_big) faces.push_back(big);
+    for (const bool with_normals : {false, true})
+      for (const bool single : {false, true}) {
+        const auto stream =
+            stitch::io_detail::stream_arrays(positions, with_normals ? &normals : nullptr, faces);
+        const std::string path = folder.file("out.ply");
+        stitch::io_detail::write_mesh_file(path, [&](stitch::io_detail::OutputFile& out) {
+          stitch::io_detail::write_ply(out, stream,
+                                       stitch::io_detail::PlyEncoding::binary_little_endian,
+                                       single ? stitch::io_detail::PlyPrecision::single
+                                              : stitch::io_detail::PlyPrecision::double_precision,
+                                       "test");
+        });
+        std::string expected;
+        const auto put = [&](const Vec3& p) {
+          for (int k = 0; k < 3; ++k)
+            expected += single ? bytes(static_cast<float>(p[k])) : bytes(p[k]);
+        };
+        for (size_t i = 0; i < positions.size(); ++i) {
+          put(positions[i]);
+          if (with_normals) put(normals[i]);
+        }
+        for (const auto& face : faces) {
+          const auto size = static_cast<std::int32_t>(face.size());
+          expected += with_big ? bytes(size) : bytes(static_cast<std::uint8_t>(size));
+          for (int v : face) expected += bytes(static_cast<std::int32_t>(v));
+        }
+        const std::string data = read_file(path);
+        const std::string header_end = "end_header\n";
+        const size_t body = data.find(header_end);
+        ASSERT_NE(body, std::string::npos);
+        EXPECT_EQ(data.substr(body + header_end.size()), expected)
+            << "normals " << with_normals << ", float " << single << ", int counts " << with_big;
+        EXPECT_NE(data.find(with_big ? "property list int int" : "property list uchar int"),
+                  std::string::npos);
+      }
   }
 }
 
