@@ -57,14 +57,14 @@ std::set<int> indices(const std::vector<Corner>& corners) {
   return out;
 }
 
-// A bent tunnel (bottom face to front face, the bridge across the front face's diagonal) folds in
-// one pair of triangles at resolution 16 (docs/method.md, "Bent tunnels"); the cube's half twist
-// and then the space-diagonal bridge "insert-edge 3@1 5@3", which these tests used before, no
-// longer do.
-constexpr const char* kFoldingEdit = "insert-edge 1@1 6@3";
+// A tube through prism 7's caps twisted by three corner steps folds in two pairs of triangles
+// at resolution 16 (clean at 24: docs/method.md, item 5). The cube's half twist, its
+// space-diagonal bridge "insert-edge 3@1 5@3" and then its bent tunnel "insert-edge 1@1 6@3",
+// which these tests used before, no longer fold.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 11@2";
 
-TEST(LocalCheck, TheBentTunnelFoldsWhereTheWholeCheckSaysSo) {
-  HalfedgeMesh mesh = make_cube();
+TEST(LocalCheck, TheTwistedTubeFoldsWhereTheWholeCheckSaysSo) {
+  HalfedgeMesh mesh = make_prism(7);
   const std::vector<Corner> changed = edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
   const LocalCheckReport local = check_patches(mesh, surface, changed);
@@ -72,7 +72,7 @@ TEST(LocalCheck, TheBentTunnelFoldsWhereTheWholeCheckSaysSo) {
   EXPECT_GT(local.folds, 0);
   const WholeCheck whole = whole_check(mesh, surface, 16);
   EXPECT_FALSE(whole.report.clean());
-  // On the cube the merged face reaches every patch, so both checks see the same triangles and
+  // On the prism the merged face reaches every patch, so both checks see the same triangles and
   // must count the same problems on the same patches.
   EXPECT_EQ(local.changed_patches, static_cast<int>(mesh.patch_corners().size()));
   EXPECT_EQ(local.triangles, whole.report.triangles);
@@ -97,12 +97,12 @@ TEST(LocalCheck, TheStraightTubeIsClean) {
 }
 
 TEST(LocalCheck, FindsAFoldOnlyWhereItsPatchesAreInFocus) {
-  // The bent tunnel again, but only the patches far from it in focus: the corners of the top
-  // face at vertices 7 and 8 do not touch the folded patches' triangles.
-  HalfedgeMesh mesh = make_cube();
+  // The twisted tube again, but only patches far from its folds in focus: two corners of a side
+  // face do not touch the folded patches' triangles.
+  HalfedgeMesh mesh = make_prism(7);
   edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
-  const std::vector<Corner> far = {parse_corner(mesh, "7@2"), parse_corner(mesh, "8@2")};
+  const std::vector<Corner> far = {parse_corner(mesh, "5@6"), parse_corner(mesh, "12@6")};
   const LocalCheckReport r = check_patches(mesh, surface, far);
   EXPECT_EQ(r.changed_patches, 2);
   EXPECT_GT(r.patches, 2);
@@ -210,20 +210,21 @@ TEST(LocalCheck, CornerNamesNumberAsTheFileDoes) {
   EXPECT_EQ(corner_names(mesh, {twice}, true), std::vector<std::string>{"1@1#2"});
 }
 
-TEST(LocalCheckCli, EditCheckWarnsAboutTheBentTunnelAndNotTheStraightTube) {
+TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
   testing::TempFolder dir;
   write_mesh(dir.file("cube.obj"), make_cube());
+  write_mesh(dir.file("prism7.obj"), make_prism(7));
   auto r = testing::stitch_cli(
-      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+      dir, "edit prism7.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("stitch: warning: the surface folds at patches "), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("2@1#2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(corners 2@1, 10@1 of twisted.obj)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("see stitch check-surface"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("twisted.obj")));
 
   r = testing::stitch_cli(
-      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
+      dir, "edit prism7.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("folds"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("strict.obj")));
@@ -237,15 +238,15 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheBentTunnelAndNotTheStraightTube) {
       << r.out;
 
   // Without --check nothing is checked.
-  r = testing::stitch_cli(dir,
-                          "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o plain.obj");
+  r = testing::stitch_cli(
+      dir, "edit prism7.obj --op \"" + std::string(kFoldingEdit) + "\" -o plain.obj");
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.err.empty()) << r.err;
 
   // The patch numbers are those of the written file read back: the whole check of its surface
   // finds the folds on those patches.
   r = testing::stitch_cli(
-      dir, "edit cube.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+      dir, "edit prism7.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   const size_t from = r.err.find("patches ") + 8, to = r.err.find(" (corners");
   ASSERT_LT(from, to) << r.err;
   std::set<int> numbers;

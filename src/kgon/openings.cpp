@@ -508,9 +508,11 @@ std::optional<BentTube> bent_tube_of(const HalfedgeMesh& m, const TwoOpenings& o
 }
 
 /// The face K-gon of a bent tube that twists: as on a twisted cylinder, a regular K-gon on the
-/// wall opposite the middle of the bridge, halfway along the arc, in the wall's tangent plane.
+/// wall opposite the middle of the bridge, halfway along the arc, in the wall's tangent plane,
+/// its size along the bridge's curve times `along_scale`.
 Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
-                        const TwoOpenings& openings, const std::vector<Vec3>& corner_point) {
+                        const TwoOpenings& openings, const std::vector<Vec3>& corner_point,
+                        double along_scale = 1) {
   const auto loop = m.face_loop(f);
   double radius = 0, sigma_a = 0, sigma_b = 0;
   for (Corner c : loop)
@@ -529,7 +531,7 @@ Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
   };
   constexpr double kStep = 1.0 / 128;
   const Vec3 along = curve(0.5 + kStep) - curve(0.5 - kStep);
-  return wall_kgon(loop, openings, centre, normal, along, radius, corner_point);
+  return wall_kgon(loop, openings, centre, normal, along, radius, corner_point, along_scale);
 }
 
 /// The bridge's edge K-gon on a bent tube that twists: the quad of the twisted cylinder, at the
@@ -623,7 +625,12 @@ std::optional<Kgon> place_pinched_tube_kgon(const HalfedgeMesh& m, Face f,
     return std::nullopt;
   const auto bent = bent_tube_of(m, openings);
   if (!bent || !(std::abs(bent->twist) >= kNoTwist)) return std::nullopt;
-  return place_on_bent_tube(m, f, *bent, openings, corner_point);
+  // Shortened along the bridge's curve: at full size the fan's patches next to the face's centre
+  // are slivers that a grid of 16 cuts into one folded pair of triangles on the cube's 48
+  // bridges across a face's diagonal; from 0.6 to 0.9 of it none of the 168 fold (0.5 and 0.95:
+  // the 48 fold again), measured at resolution 16 (docs/method.md, "Bent tunnels").
+  constexpr double kAlongBridge = 0.75;
+  return place_on_bent_tube(m, f, *bent, openings, corner_point, kAlongBridge);
 }
 
 std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpenings& openings,
