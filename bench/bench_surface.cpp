@@ -79,8 +79,6 @@ double sample_corner_grids(const std::vector<Corner>& corners, const Evaluate& e
   return total;
 }
 
-// Wall-clock and process CPU time (all threads) of one stage. The machine is shared: CPU time
-// is less sensitive than wall time to other processes taking the cores.
 // Page faults of the process so far (all threads): first touches of fresh memory, which cost
 // this project's VM about 20 microseconds of CPU each (support/fresh_storage.hpp).
 long page_faults() {
@@ -89,6 +87,8 @@ long page_faults() {
   return usage.ru_minflt;
 }
 
+// Wall-clock time, process CPU time and page faults (all threads) of one stage. The machine is
+// shared: CPU time is less sensitive than wall time to other processes taking the cores.
 struct Stopwatch {
   std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
   std::clock_t cpu = std::clock();

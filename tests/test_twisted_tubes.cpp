@@ -204,9 +204,9 @@ TEST(TwistedTubes, AdjacentCubeFacesBentTunnels) {
   // the shared edge clean too, the bridge's quad on the bent tube the 48 from an end of the
   // shared edge along a face's edge, replacing the merged face's K-gon by its first harmonic
   // where section 2's winds back on itself the 24 across the space diagonal, and shortening the
-  // bent tube's K-gon along the bridge the 24 across a face's diagonal (resolution 16). C1 is
+  // bent tube's K-gon along the bridge the 48 across a face's diagonal (resolution 16). C1 is
   // checked on every pair: before the first harmonic, the normals across the face's spokes
-  // differed by up to 8.4e-7 degrees next to its centre on those last 24 (method.md).
+  // differed by up to 8.4e-7 degrees next to its centre on those last 48 (method.md).
   const HalfedgeMesh cube = make_cube();
   std::vector<PairResult> all;
   for (int a = 1; a <= 6; ++a)

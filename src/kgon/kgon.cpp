@@ -135,19 +135,15 @@ void shape_kgon(Kgon& g, const std::vector<Vec3>& corner_point, const std::vecto
     g.normal = fallback_normal.norm() > 0 ? fallback_normal.normalized() : Vec3::UnitZ();
     return;
   }
-  if (k == 4) {
-    // A 4-gon is not flattened (edge 4-gons are skew), so no plane is fitted: its normal only
+  if (k == 4 || (k == 3 && winding.norm() > 0)) {
+    // No plane is fitted. A 4-gon is not flattened (edge 4-gons are skew): its normal only
     // orients rotations and displays, and the eigen-solve of the fit was most of the surface
-    // build on a quad mesh. The Newell normal is the fit's normal for a planar 4-gon.
+    // build on a quad mesh; the Newell normal is the fit's normal for a planar 4-gon. Three
+    // points that span a plane lie in it: the fit's normal is their Newell normal, and flattening
+    // would move them by round-off only (the eigen-solve was a quarter of the surface build on a
+    // triangle mesh).
     const Vec3 n = winding.norm() > 0 ? winding : fallback_normal;
     g.normal = n.norm() > 0 ? n.normalized() : Vec3::UnitZ();
-    return;
-  }
-  if (k == 3 && winding.norm() > 0) {
-    // Three points that span a plane lie in it: the fit's plane is theirs, its normal their
-    // Newell normal, and flattening would move them by round-off only. The eigen-solve was a
-    // quarter of the surface build on a triangle mesh.
-    g.normal = winding.normalized();
     return;
   }
   g.normal = plane_normal(g.points, g.centroid, winding.norm() > 0 ? winding : fallback_normal);

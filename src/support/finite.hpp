@@ -20,4 +20,14 @@ inline bool all_finite(const Vec3* v, std::int64_t count) {
   return (x - x).sum() == 0.0;
 }
 
+/// The first of `count` samples whose position or normal is not finite, or -1 when there is
+/// none: all_finite over both arrays, and only when that fails a look sample by sample.
+inline std::int64_t first_non_finite(const Vec3* positions, const Vec3* normals,
+                                     std::int64_t count) {
+  if (all_finite(positions, count) && all_finite(normals, count)) return -1;
+  for (std::int64_t i = 0; i < count; ++i)
+    if (!positions[i].allFinite() || !normals[i].allFinite()) return i;
+  return -1;
+}
+
 }  // namespace stitch::detail

@@ -186,12 +186,10 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   // Evaluates output vertices [begin, end), refusing what no file should hold.
   const auto evaluate = [&](std::int64_t begin, std::int64_t end, Vec3* positions, Vec3* normals) {
     layout.evaluate(surface, begin, end, positions, normals);
-    if (detail::all_finite(positions, end - begin) && detail::all_finite(normals, end - begin))
-      return;
-    for (std::int64_t i = 0; i < end - begin; ++i)
-      if (!positions[i].allFinite() || !normals[i].allFinite())
-        throw OutputError(
-            fmt::format("sample {} has a non-finite position or normal", begin + i + 1));
+    if (const std::int64_t bad = detail::first_non_finite(positions, normals, end - begin);
+        bad >= 0)
+      throw OutputError(
+          fmt::format("sample {} has a non-finite position or normal", begin + bad + 1));
   };
   stream.vertices = [&](std::int64_t begin, std::int64_t end, io_detail::VertexBlock& block) {
     block.positions.resize(static_cast<size_t>(end - begin));

@@ -42,16 +42,13 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                               out.level.data() + r.begin()};
                       layout.evaluate(surface, r.begin(), r.end(), out.positions.data() + r.begin(),
                                       out.normals.data() + r.begin(), at);
-                      const auto count = static_cast<std::int64_t>(r.size());
-                      if (detail::all_finite(out.positions.data() + r.begin(), count) &&
-                          detail::all_finite(out.normals.data() + r.begin(), count))
-                        return;
-                      for (std::int64_t i = r.begin(); i < r.end(); ++i) {
-                        if (out.positions[i].allFinite() && out.normals[i].allFinite()) continue;
-                        std::int64_t seen = first_bad.load();
-                        while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
-                        }
-                        break;
+                      const std::int64_t bad = detail::first_non_finite(
+                          out.positions.data() + r.begin(), out.normals.data() + r.begin(),
+                          static_cast<std::int64_t>(r.size()));
+                      if (bad < 0) return;
+                      const std::int64_t i = r.begin() + bad;
+                      std::int64_t seen = first_bad.load();
+                      while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
                       }
                     });
   detail::size_for_overwrite(out.quads, static_cast<size_t>(layout.num_quads()));
