@@ -174,8 +174,9 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
   }
 }
 
-// Any split of the output vertices into ranges gives the same bits as one range for everything:
-// ranges of single vertices, and ranges that cut corner blocks in different places.
+// Any split of the output vertices into ranges gives the same bits as one range for everything,
+// attributes included: ranges of single vertices, and ranges that cut corner blocks in different
+// places.
 TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
   for (const HalfedgeMesh& m : closed_and_open_meshes()) {
     const HalfedgeMesh* mesh = &m;
@@ -184,21 +185,25 @@ TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
       const TessellationLayout layout(*mesh, surface.corners(), n, true);
       const auto count = static_cast<size_t>(layout.num_vertices());
       std::vector<Vec3> positions(count), normals(count);
-      std::vector<int> levels(count);
+      std::vector<Eigen::Vector2d> uvs(count);
+      std::vector<int> patches(count), levels(count);
       layout.evaluate(surface, 0, layout.num_vertices(), positions.data(), normals.data(),
-                      {nullptr, nullptr, levels.data()});
+                      {uvs.data(), patches.data(), levels.data()});
       const std::int64_t block = static_cast<std::int64_t>(n) * n - 1;
       for (const std::int64_t step :
            {std::int64_t{1}, std::int64_t{7}, block, block + 1, 3 * block - 1}) {
         std::vector<Vec3> p(count), nm(count);
-        std::vector<int> l(count);
+        std::vector<Eigen::Vector2d> uv(count);
+        std::vector<int> patch(count), l(count);
         for (std::int64_t b = 0; b < layout.num_vertices(); b += step) {
           const std::int64_t e = std::min(b + step, layout.num_vertices());
           layout.evaluate(surface, b, e, p.data() + b, nm.data() + b,
-                          {nullptr, nullptr, l.data() + b});
+                          {uv.data() + b, patch.data() + b, l.data() + b});
         }
         EXPECT_EQ(p, positions) << "n=" << n << " step " << step;
         EXPECT_EQ(nm, normals) << "n=" << n << " step " << step;
+        EXPECT_EQ(uv, uvs) << "n=" << n << " step " << step;
+        EXPECT_EQ(patch, patches) << "n=" << n << " step " << step;
         EXPECT_EQ(l, levels) << "n=" << n << " step " << step;
       }
     }

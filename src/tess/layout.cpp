@@ -52,6 +52,11 @@ TessellationLayout::TessellationLayout(const HalfedgeMesh& mesh, const std::vect
     first_extra_ = first_block_ + num_corners * (per_side * per_side + 2 * per_side);
     num_vertices_ = first_extra_ + static_cast<std::int64_t>(extra) * per_side;
   }
+  block_uv_.resize(static_cast<size_t>(block_size()));
+  for (size_t r = 0; r < block_uv_.size(); ++r) {
+    const GridSample g = block_sample(0, static_cast<int>(r));
+    block_uv_[r] = grid_.uv(grid_.sample(g.i, g.j));
+  }
   // Output files and TessellatedMesh number vertices with 32-bit ints.
   if (num_vertices_ > std::numeric_limits<int>::max())
     throw UsageError(
@@ -332,11 +337,11 @@ void TessellationLayout::fill_block_attributes(int k, std::int64_t from, std::in
                                                const SampleAttributes& attributes) const {
   if (!attributes.uv && !attributes.patch) return;
   const std::int64_t first = welded_ ? block(k) : static_cast<std::int64_t>(k) * block_size();
-  for (std::int64_t vertex = from; vertex < to; ++vertex) {
-    const GridSample g = block_sample(k, static_cast<int>(vertex - first));
-    if (attributes.uv) attributes.uv[vertex - begin] = grid_.uv(grid_.sample(g.i, g.j));
-    if (attributes.patch) attributes.patch[vertex - begin] = corners_[k].idx;
-  }
+  if (attributes.uv)
+    std::copy(block_uv_.begin() + (from - first), block_uv_.begin() + (to - first),
+              attributes.uv + (from - begin));
+  if (attributes.patch)
+    std::fill(attributes.patch + (from - begin), attributes.patch + (to - begin), corners_[k].idx);
 }
 
 void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& surface,

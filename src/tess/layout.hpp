@@ -124,6 +124,8 @@ class TessellationLayout {
   /// Boundary halves: by half-edge, the number of the extra block of corner c's side i = 0
   /// (-1: owned by rotate_ccw(c)'s block); by that number, the corner's index.
   std::vector<int> extra_half_, extra_corner_;
+  /// The (u, v) of each place in a block: the same for every corner's block.
+  std::vector<Eigen::Vector2d> block_uv_;
   [[nodiscard]] std::int64_t block(int k) const {
     return first_block_ + static_cast<std::int64_t>(k) * block_size();
   }
