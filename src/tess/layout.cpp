@@ -102,6 +102,19 @@ void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) c
     const auto k = static_cast<int>(q / cells);
     grid_vertices(k, grid.data());
     const std::int64_t last = std::min(end, (k + 1) * cells);
+    if (q == k * cells && last == q + cells) {  // the whole corner, as nearly always
+      for (int i = 0; i < n; ++i) {
+        const std::int64_t* row = grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1);
+        for (int j = 0; j < n; ++j, out += 4) {
+          out[0] = static_cast<int>(row[j]);
+          out[1] = static_cast<int>(row[j + n + 1]);
+          out[2] = static_cast<int>(row[j + n + 2]);
+          out[3] = static_cast<int>(row[j + 1]);
+        }
+      }
+      q = last;
+      continue;
+    }
     const auto cell = static_cast<int>(q - k * cells);
     for (int i = cell / n, j = cell % n; q < last; ++i, j = 0) {
       const std::int64_t* row = grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1);
