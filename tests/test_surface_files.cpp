@@ -240,6 +240,10 @@ TEST(SmoothCommand, BinaryPlyByDefaultAsciiOnRequestAndQuietIsQuiet) {
   ASSERT_EQ(ascii.status, 0) << ascii.err;
   EXPECT_EQ(ascii.err, "");
   EXPECT_NE(read_file(folder.file("a.ply")).find("format ascii 1.0\n"), std::string::npos);
+  // -q as for stitch edit.
+  const auto short_flag = testing::stitch_cli(folder, "smooth cube.obj -o q.ply -q --progress");
+  ASSERT_EQ(short_flag.status, 0) << short_flag.err;
+  EXPECT_EQ(short_flag.err, "");
   const auto doubles = read_polygon_soup(folder.file("b.ply")).positions;
   EXPECT_EQ(read_polygon_soup(folder.file("a.ply")).positions, doubles);
   // --float: half the vertex bytes, each coordinate the nearest float (binary), or the shortest

@@ -198,7 +198,7 @@ void StageReporter::end() {
 void add_progress_option(CLI::App* cmd, ProgressFlags& flags) {
   cmd->add_flag("--progress", flags.progress,
                 "print each stage and its time on stderr (default when stderr is a terminal)");
-  cmd->add_flag("--quiet", flags.quiet, "print nothing on stderr but errors and warnings");
+  cmd->add_flag("-q,--quiet", flags.quiet, "print nothing on stderr but errors and warnings");
 }
 
 }  // namespace stitch::cli
