@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
+#include <tuple>
 #include <utility>
 
 #include "stitch/mesh/limits.hpp"
@@ -42,7 +44,7 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
     const auto& loop = soup.faces[f];
     if (loop.size() < min_degree)
       throw InputError(fmt::format("{} has {} vertices; a face needs at least {}",
-                                  where_face(soup, f), loop.size(), min_degree));
+                                   where_face(soup, f), loop.size(), min_degree));
     corners += loop.size();
     if (corners > static_cast<size_t>(limits::max_halfedges))
       throw InputError(
@@ -52,10 +54,10 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
     for (size_t i = 0; i < loop.size(); ++i) {
       if (loop[i] < 0 || loop[i] >= nv)
         throw InputError(fmt::format("{} refers to vertex {}, but there are {} vertices",
-                                    where_face(soup, f), loop[i] + 1, nv));
+                                     where_face(soup, f), loop[i] + 1, nv));
       if (loop[i] == loop[(i + 1) % loop.size()])
         throw InputError(fmt::format("{} repeats vertex {} at consecutive positions",
-                                    where_face(soup, f), loop[i] + 1));
+                                     where_face(soup, f), loop[i] + 1));
     }
   }
 }
@@ -65,12 +67,23 @@ struct DirectedEdge {
   int slot;  // position in the face loop; the edge runs from slot to slot+1
 };
 
-/// The directed edges of a file joining two vertices, and which of them are twins.
+/// The directed edges of a file joining two vertices, and which of them are twins: ranges
+/// [first, first + count) of EdgeGroups' flat lists (one allocation for all edges, not several
+/// per edge: a mesh has hundreds of thousands).
 struct Group {
-  int a, b;                            // mesh vertices, a < b in soup order
-  std::vector<DirectedEdge> fwd, bwd;  // a -> b and b -> a
-  std::vector<int> perm;               // fwd[i] pairs with bwd[perm[i]]
-  std::vector<DirectedEdge> boundary;  // an edge with no partner (fill_holes only)
+  int a, b;                      // mesh vertices, a < b in soup order
+  int first = 0, count = 0;      // fwd[first + i] pairs with bwd[first + perm[first + i]]
+  DirectedEdge unpaired{-1, 0};  // an edge with no partner (face -1: none)
+  [[nodiscard]] bool has_unpaired() const { return unpaired.face >= 0; }
+};
+
+struct EdgeGroups {
+  std::vector<Group> groups;
+  std::vector<DirectedEdge> fwd, bwd;  // a -> b and b -> a, group by group
+  std::vector<int> perm;
+  [[nodiscard]] auto perm_range(const Group& g) {
+    return std::pair(perm.begin() + g.first, perm.begin() + g.first + g.count);
+  }
 };
 
 /// Corner steps the pairing search may take in all (a fraction of a second); beyond it the mesh is
@@ -87,8 +100,8 @@ constexpr long long kSearchBudget = 20'000'000;
 class PairingSearch {
  public:
   PairingSearch(const PolygonSoup& soup, const std::vector<int>& remap, int num_vertices,
-                std::vector<Group>& groups)
-      : groups_(groups), num_vertices_(num_vertices) {
+                EdgeGroups& edges)
+      : edges_(edges), groups_(edges.groups), num_vertices_(num_vertices) {
     // Corner c = offset[f] + i of face f is also the directed edge leaving it.
     std::vector<int> offset(soup.faces.size() + 1, 0);
     for (size_t f = 0; f < soup.faces.size(); ++f)
@@ -105,15 +118,17 @@ class PairingSearch {
       }
     }
     auto id = [&](const DirectedEdge& d) { return offset[d.face] + d.slot; };
-    fwd_.resize(groups.size());
-    bwd_.resize(groups.size());
+    fwd_.resize(edges.fwd.size());
+    bwd_.resize(edges.bwd.size());
+    for (size_t i = 0; i < edges.fwd.size(); ++i) {
+      fwd_[i] = id(edges.fwd[i]);
+      bwd_[i] = id(edges.bwd[i]);
+    }
     boundary_in_.assign(num_vertices, -1);
-    for (size_t g = 0; g < groups.size(); ++g) {
-      for (const DirectedEdge& d : groups[g].fwd) fwd_[g].push_back(id(d));
-      for (const DirectedEdge& d : groups[g].bwd) bwd_[g].push_back(id(d));
-      for (const DirectedEdge& d : groups[g].boundary) {
+    for (size_t g = 0; g < groups_.size(); ++g) {
+      if (groups_[g].has_unpaired()) {
         // An unpaired edge u -> v: the hole's loop leaves v where this edge arrives.
-        const int c = id(d);
+        const int c = id(groups_[g].unpaired);
         int& in = boundary_in_[vertex_[next_[c]]];
         in = in == -1 ? c : -2;  // -2: several holes meet there (build_mesh refuses it)
       }
@@ -133,7 +148,7 @@ class PairingSearch {
     std::vector<int> open;  // ambiguous groups
     std::vector<std::vector<int>> around(num_vertices_);
     for (size_t g = 0; g < groups_.size(); ++g)
-      if (groups_[g].perm.size() >= 2) {
+      if (groups_[g].count >= 2) {
         open.push_back(static_cast<int>(g));
         around[groups_[g].a].push_back(static_cast<int>(g));
         around[groups_[g].b].push_back(static_cast<int>(g));
@@ -169,9 +184,10 @@ class PairingSearch {
  private:
   void set_twins(int g) {
     const Group& grp = groups_[g];
-    for (size_t i = 0; i < grp.perm.size(); ++i) {
-      twin_[fwd_[g][i]] = bwd_[g][grp.perm[i]];
-      twin_[bwd_[g][grp.perm[i]]] = fwd_[g][i];
+    for (int i = grp.first; i < grp.first + grp.count; ++i) {
+      const int back = grp.first + edges_.perm[i];
+      twin_[fwd_[i]] = bwd_[back];
+      twin_[bwd_[back]] = fwd_[i];
     }
   }
 
@@ -207,7 +223,7 @@ class PairingSearch {
       } else {
         ++pending_[grp.a];
         ++pending_[grp.b];
-        if (!std::next_permutation(grp.perm.begin(), grp.perm.end())) {
+        if (const auto [begin, end] = edges_.perm_range(grp); !std::next_permutation(begin, end)) {
           // Every pairing of this group failed: back to the previous group's next choice.
           started[pos] = 0;
           set_twins(g);
@@ -230,10 +246,11 @@ class PairingSearch {
     return true;
   }
 
+  EdgeGroups& edges_;
   std::vector<Group>& groups_;
   int num_vertices_;
   std::vector<int> next_, vertex_, twin_, boundary_in_;
-  std::vector<std::vector<int>> fwd_, bwd_;
+  std::vector<int> fwd_, bwd_;  // EdgeGroups::fwd and bwd as corner numbers
   std::vector<int> first_corner_, corners_at_, pending_;
   long long work_ = 0;
 };
@@ -299,16 +316,16 @@ void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildRep
   auto check = [&](double s, int line, const char* what) {
     if (!std::isfinite(s) || s < 0)
       throw InputError(fmt::format("{} has sharpness {}: it must be a finite number >= 0",
-                                  where_tag(soup, line, what), s));
+                                   where_tag(soup, line, what), s));
   };
   const int nv = static_cast<int>(soup.positions.size());
   auto vertex = [&](int i, int line, const char* what) {
     if (i < 0 || i >= nv)
       throw InputError(fmt::format("{} names vertex {}{}, but there are {} vertices",
-                                  where_tag(soup, line, what), i + 1, tag_numbers(line, i), nv));
+                                   where_tag(soup, line, what), i + 1, tag_numbers(line, i), nv));
     if (remap[i] < 0)
       throw InputError(fmt::format("{} names vertex {}{}, which no face uses",
-                                  where_tag(soup, line, what), i + 1, tag_numbers(line, i)));
+                                   where_tag(soup, line, what), i + 1, tag_numbers(line, i)));
     return Vertex(remap[i]);
   };
   for (const SoupCorner& c : soup.corners) {
@@ -328,8 +345,8 @@ void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildRep
       }
     if (!found)
       throw InputError(fmt::format("{} names edge ({}, {}){}, but no face has that edge",
-                                  where_tag(soup, c.line, "crease"), vertex_source[a.idx] + 1,
-                                  vertex_source[b.idx] + 1, tag_numbers(c.line, c.a, c.b)));
+                                   where_tag(soup, c.line, "crease"), vertex_source[a.idx] + 1,
+                                   vertex_source[b.idx] + 1, tag_numbers(c.line, c.a, c.b)));
   }
   warn_semi_sharp(mesh, vertex_source, report.warnings);
 }
@@ -360,75 +377,111 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     rep.warnings.push_back(fmt::format("dropped {} unused vertices (not referenced by any face)",
                                        rep.dropped_vertices));
 
-  // Group directed edges by their unordered vertex pair.
-  std::map<std::pair<int, int>, std::pair<std::vector<DirectedEdge>, std::vector<DirectedEdge>>>
-      groups;  // (lo, hi) -> (lo->hi edges, hi->lo edges)
-  for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
-    const auto& loop = soup.faces[f];
-    for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
-      const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      auto& g = groups[{std::min(a, b), std::max(a, b)}];
-      (a < b ? g.first : g.second).push_back({f, i});
+  // Directed edges grouped by their unordered vertex pair (lo, hi), the groups in (lo, hi) order
+  // and each group's edges in face order: the order in which the edges are numbered. Bucketed by
+  // lo, then sorted by (hi, face, slot) within a bucket (a vertex's few edges).
+  std::vector<int> first_at(static_cast<size_t>(nv_in) + 1, 0);
+  for (const auto& loop : soup.faces)
+    for (size_t i = 0; i < loop.size(); ++i)
+      ++first_at[std::min(loop[i], loop[(i + 1) % loop.size()]) + 1];
+  for (int v = 0; v < nv_in; ++v) first_at[v + 1] += first_at[v];
+  struct EdgeAt {
+    int hi;
+    DirectedEdge d;
+  };
+  std::vector<EdgeAt> by_lo(static_cast<size_t>(first_at[nv_in]));
+  {
+    std::vector<int> fill(first_at.begin(), first_at.end() - 1);
+    for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
+      const auto& loop = soup.faces[f];
+      for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
+        const int a = loop[i], b = loop[(i + 1) % loop.size()];
+        by_lo[fill[std::min(a, b)]++] = {std::max(a, b), {f, i}};
+      }
     }
   }
+  auto before = [](const EdgeAt& x, const EdgeAt& y) {
+    return std::tie(x.hi, x.d.face, x.d.slot) < std::tie(y.hi, y.d.face, y.d.slot);
+  };
+  for (int v = 0; v < nv_in; ++v)
+    std::sort(by_lo.begin() + first_at[v], by_lo.begin() + first_at[v + 1], before);
 
   // Pairing: an edge seen once per direction pairs itself. Where several edges join the same two
   // vertices the file cannot say which directed edge is the twin of which, so the pairings of
   // those groups are searched for one under which every vertex has a single fan.
-  std::vector<Group> pairs;
-  for (auto& [key, g] : groups) {
-    auto& [fwd, bwd] = g;
-    Group grp{remap[key.first], remap[key.second], fwd, bwd, {}, {}};
-    const size_t total = fwd.size() + bwd.size();
-    if (fwd.size() != bwd.size()) {
-      if (total == 1) {
-        const DirectedEdge d = fwd.empty() ? bwd[0] : fwd[0];
-        grp.boundary.push_back(d);
-        grp.fwd.clear();  // the unpaired edge lives in `boundary` only (perm stays empty)
-        grp.bwd.clear();
-        pairs.push_back(std::move(grp));
-        continue;
+  EdgeGroups pairs;
+  pairs.fwd.reserve(by_lo.size() / 2);
+  pairs.bwd.reserve(by_lo.size() / 2);
+  pairs.perm.reserve(by_lo.size() / 2);
+  for (int lo = 0; lo < nv_in; ++lo)
+    for (int run = first_at[lo], end = 0; run < first_at[lo + 1]; run = end) {
+      const int hi = by_lo[run].hi;
+      end = run;
+      while (end < first_at[lo + 1] && by_lo[end].hi == hi) ++end;
+      // lo -> hi and hi -> lo, in face order.
+      auto forward = [&](const EdgeAt& e) { return soup.faces[e.d.face][e.d.slot] == lo; };
+      const auto edges = std::span(by_lo).subspan(run, end - run);
+      const auto fwd = static_cast<size_t>(std::count_if(edges.begin(), edges.end(), forward));
+      const size_t bwd = edges.size() - fwd;
+      auto first_of = [&](bool forward_edge) {
+        for (const EdgeAt& e : edges)
+          if (forward(e) == forward_edge) return e.d;
+        return edges[0].d;
+      };
+      Group grp{remap[lo], remap[hi]};
+      if (fwd != bwd) {
+        if (edges.size() == 1) {
+          grp.unpaired = edges[0].d;
+          pairs.groups.push_back(grp);
+          continue;
+        }
+        if (edges.size() == 2) {
+          throw InputError(fmt::format(
+              "inconsistent orientation: {} and {} both run along edge ({}, {}) in the same "
+              "direction (one of them must be flipped)",
+              where_face(soup, edges[0].d.face), where_face(soup, edges[1].d.face), lo + 1,
+              hi + 1));
+        }
+        throw InputError(
+            fmt::format("non-manifold edge ({}, {}): it is shared by {} faces, e.g. {}", lo + 1,
+                        hi + 1, edges.size(), where_face(soup, first_of(fwd > 0).face)));
       }
-      if (total == 2) {
-        const auto& same = fwd.empty() ? bwd : fwd;
-        throw InputError(fmt::format(
-            "inconsistent orientation: {} and {} both run along edge ({}, {}) in the same "
-            "direction (one of them must be flipped)",
-            where_face(soup, same[0].face), where_face(soup, same[1].face), key.first + 1,
-            key.second + 1));
-      }
-      throw InputError(fmt::format("non-manifold edge ({}, {}): it is shared by {} faces, e.g. {}",
-                                  key.first + 1, key.second + 1, total,
-                                  where_face(soup, fwd.empty() ? bwd[0].face : fwd[0].face)));
+      grp.first = static_cast<int>(pairs.fwd.size());
+      grp.count = static_cast<int>(fwd);
+      for (const EdgeAt& e : edges) (forward(e) ? pairs.fwd : pairs.bwd).push_back(e.d);
+      for (int i = 0; i < grp.count; ++i) pairs.perm.push_back(i);
+      pairs.groups.push_back(grp);
     }
-    grp.perm.resize(fwd.size());
-    for (size_t i = 0; i < fwd.size(); ++i) grp.perm[i] = static_cast<int>(i);
-    pairs.push_back(std::move(grp));
-  }
 
   // Builds the connectivity for the chosen pairings; returns the vertices with several fans.
   auto assemble = [&](HalfedgeMesh& out) {
-    std::vector<std::vector<Halfedge>> slot_he(soup.faces.size());
-    for (size_t f = 0; f < soup.faces.size(); ++f) slot_he[f].resize(soup.faces[f].size());
+    // The half-edge of each face's slot, face after face.
+    std::vector<int> slot_first(soup.faces.size() + 1, 0);
+    for (size_t f = 0; f < soup.faces.size(); ++f)
+      slot_first[f + 1] = slot_first[f] + static_cast<int>(soup.faces[f].size());
+    std::vector<Halfedge> slot_he(static_cast<size_t>(slot_first.back()));
+    auto slot = [&](const DirectedEdge& d) -> Halfedge& {
+      return slot_he[static_cast<size_t>(slot_first[d.face] + d.slot)];
+    };
     std::vector<Halfedge> boundary;  // half-edges with no face: twins of unpaired edges
-    for (const Group& g : pairs) {
-      for (const DirectedEdge& d : g.boundary) {
+    for (const Group& g : pairs.groups) {
+      if (g.has_unpaired()) {
+        const DirectedEdge& d = g.unpaired;
         const bool forward = soup.faces[d.face][d.slot] == rep.vertex_source[g.a];
         const Halfedge h = forward ? out.add_edge(Vertex(g.a), Vertex(g.b))
                                    : out.add_edge(Vertex(g.b), Vertex(g.a));
-        slot_he[d.face][d.slot] = h;
+        slot(d) = h;
         boundary.push_back(HalfedgeMesh::twin(h));
       }
-      for (size_t i = 0; i < g.fwd.size(); ++i) {
+      for (int i = g.first; i < g.first + g.count; ++i) {
         const Halfedge h = out.add_edge(Vertex(g.a), Vertex(g.b));
-        slot_he[g.fwd[i].face][g.fwd[i].slot] = h;
-        const DirectedEdge& back = g.bwd[g.perm[i]];
-        slot_he[back.face][back.slot] = HalfedgeMesh::twin(h);
+        slot(pairs.fwd[i]) = h;
+        slot(pairs.bwd[g.first + pairs.perm[i]]) = HalfedgeMesh::twin(h);
       }
     }
     for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
       const Face face = out.add_face();
-      const auto& hs = slot_he[f];
+      const std::span hs(slot_he.data() + slot_first[f], soup.faces[f].size());
       for (size_t i = 0; i < hs.size(); ++i) {
         out.link(hs[i], hs[(i + 1) % hs.size()]);
         out.set_face(hs[i], face);
@@ -467,8 +520,8 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
     return bad;
   };
 
-  const bool ambiguous =
-      std::any_of(pairs.begin(), pairs.end(), [](const Group& g) { return g.perm.size() >= 2; });
+  const bool ambiguous = std::any_of(pairs.groups.begin(), pairs.groups.end(),
+                                     [](const Group& g) { return g.count >= 2; });
   if (ambiguous && !PairingSearch(soup, remap, mesh.vertex_capacity(), pairs).run())
     throw InputError(
         fmt::format("too many faces run along the same pairs of vertices to tell which of them are "
@@ -512,7 +565,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
         for (int i : soup.face_uvs[f]) {
           if (i < 0 || i >= nuv)
             throw InputError(fmt::format("{} refers to texture coordinate {}, but there are {}",
-                                        where_face(soup, f), i + 1, nuv));
+                                         where_face(soup, f), i + 1, nuv));
           out.index[h.idx] = i;
           h = mesh.next(h);
         }
