@@ -321,8 +321,25 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   double spread = 1;
   if (overshoot > std::numbers::pi / 4 + 1e-9)
     spread = std::min(std::tan(overshoot), std::tan(std::numbers::pi / 3));
+  double across = 1 + 1.4 * (spread - 1);
+  // Rims of more than six corners (less than 60 degrees between neighbours around the tube)
+  // want the K-gon longer along the helix whatever the twist, and narrower across it unless the
+  // fan reaches far past the half turn (method.md, item 6; measured on prisms 7 to 10 at
+  // resolution 16): 1.8 times section 2's size along; across, 0.8 r for an overshoot up to 40
+  // degrees (at 1.8 along, prism 9's three-step twists, 40 degrees, are clean and open only at
+  // 0.8 r, prism 10's, 36 degrees, at 0.7 and 0.8 r), 1.8 r from 45 degrees (prism 8's
+  // three-step twists, 45 degrees, at 1.7 to 1.9 r; prism 7's, 51.4 degrees, at 1.7 to 2.0 r),
+  // linearly in between. Prisms 3 to 6 keep the rule above: 1.8 times along and 1.8 r across
+  // fold prism 3's one-step twists, prism 4's half twists and prism 5's two-step twists.
+  const double rim_edges = static_cast<double>(openings.first.size() + openings.second.size() - 2);
+  if (2 * std::numbers::pi / (rim_edges / 2) < std::numbers::pi / 3 - 1e-9) {
+    constexpr double degree = std::numbers::pi / 180;
+    const double t = std::clamp((overshoot - 40 * degree) / (5 * degree), 0.0, 1.0);
+    across = std::max(0.8 + t, spread > 1 ? across : 0.0);
+    spread = std::max(spread, 1.8);
+  }
   return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point, spread,
-                   1 + 1.4 * (spread - 1));
+                   across);
 }
 
 /// The helix a twisted tube's bridge stands for: from the first rim's bridge vertex (angle 0)

@@ -25,14 +25,15 @@ std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method meth
   return check_patches(mesh, Surface(mesh, method), mesh.patch_corners()).problem_corners;
 }
 
-// A tube through prism 7's caps twisted by three corner steps folds in two pairs of triangles at
-// resolution 16 (clean at 24: docs/method.md, item 5). The cube's half twist "insert-edge 1@1
-// 7@2", its space-diagonal bridge "insert-edge 3@1 5@3" and then its bent tunnel "insert-edge 1@1
-// 6@3", which these tests used before, no longer fold.
-constexpr const char* kFoldingEdit = "insert-edge 1@1 11@2";
+// A tube through prism 9's caps twisted by four corner steps folds in eight pairs of triangles at
+// resolution 16 (clean at 24: docs/method.md, item 6). The cube's half twist "insert-edge 1@1
+// 7@2", its space-diagonal bridge "insert-edge 3@1 5@3", then its bent tunnel "insert-edge 1@1
+// 6@3" and then prism 7's three-step twist "insert-edge 1@1 11@2", which these tests used before,
+// no longer fold.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 14@2";
 
 TEST(SurfaceHealth, TheTwistedTubeIsReportedAndUndoClearsIt) {
-  Session s(make_prism(7));
+  Session s(make_prism(9));
   EXPECT_TRUE(s.surface_problems().empty());
   Printed printed;
   const ScriptResult r = run_script_line(s, kFoldingEdit, printed.hooks());
@@ -47,7 +48,7 @@ TEST(SurfaceHealth, TheTwistedTubeIsReportedAndUndoClearsIt) {
   ASSERT_EQ(printed.lines.size(), 2u);
   EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 2 patches (corners ", 0), 0u)
       << printed.lines[1];
-  EXPECT_NE(printed.lines[1].find("(corners 2@1, 10@1;"), std::string::npos) << printed.lines[1];
+  EXPECT_NE(printed.lines[1].find("(corners 2@1, 13@1;"), std::string::npos) << printed.lines[1];
 
   ASSERT_FALSE(run_script(s, {"undo"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
@@ -69,14 +70,16 @@ TEST(SurfaceHealth, TheStraightTubeIsClean) {
 TEST(SurfaceHealth, DisplayResolutionAndMethodChangesKeepTheAnswer) {
   // At resolution 16 the check reads the drawn tessellation instead of evaluating the nets.
   // A method change re-checks the problems found (and their neighbours) on the other method's
-  // patches: kFoldingEdit's 2 at resolution 16. (The cube's bent tunnel "insert-edge 1@1 6@3"
-  // folded on 1 patch with mdc and on 7 with asc, most of them beyond what the method change
-  // re-checks; prism 6's half twist, used here before, is clean at 16 since its face K-gon is
-  // stretched.)
-  Session s(make_prism(7));
-  ASSERT_FALSE(run_script(s, {"resolution 16", kFoldingEdit}, {}));
+  // patches: a bridge between two faces of the icosahedron that folds on 4 patches with mdc
+  // (4 pairs of triangles) and on the same 4 with asc (10 pairs) at resolution 16. (kFoldingEdit
+  // folds on 2 patches with mdc and on 14 with asc, most of them beyond what the method change
+  // re-checks, as did the cube's bent tunnel "insert-edge 1@1 6@3" with 1 and 7; prism 7's
+  // three-step twist, used here before, is clean with mdc since its face K-gon is stretched
+  // along the helix, and prism 6's half twist, used before that, since it is stretched at all.)
+  Session s(make_primitive("icosahedron", {}));
+  ASSERT_FALSE(run_script(s, {"resolution 16", "insert-edge 6@1 2@3"}, {}));
   const std::vector<Corner> found = s.surface_problems().corners;
-  EXPECT_EQ(found.size(), 2u);
+  EXPECT_EQ(found.size(), 4u);
   EXPECT_EQ(found, whole_surface_problems(s.document.mesh(), Method::mdc));
   ASSERT_FALSE(run_script(s, {"method asc"}, {}));
   EXPECT_EQ(s.surface_problems().corners, whole_surface_problems(s.document.mesh(), Method::asc));
@@ -103,17 +106,17 @@ TEST(SurfaceHealth, CheckCommandLooksAtTheWholeSurface) {
 }
 
 TEST(SurfaceHealth, MovesRecheckOnlyTheProblemsFound) {
-  Session s(make_prism(7));
+  Session s(make_prism(9));
   ASSERT_FALSE(run_script(s, {kFoldingEdit}, {}));
   const std::vector<Corner> before = s.surface_problems().corners;
   ASSERT_FALSE(before.empty());
   // A small move of a vertex away from the new edge: the folds stay, and only the patches
   // already found were checked again (with their neighbours).
-  ASSERT_FALSE(run_script(s, {"translate-vertex 8 0 0 0.01"}, {}));
+  ASSERT_FALSE(run_script(s, {"translate-vertex 10 0 0 0.01"}, {}));
   EXPECT_EQ(s.surface_problems().corners, before);
   EXPECT_EQ(s.surface_problems().checked_patches, static_cast<int>(before.size()));
   // Without problems, a move checks nothing.
-  ASSERT_FALSE(run_script(s, {"undo", "undo", "translate-vertex 8 0 0 0.01"}, {}));
+  ASSERT_FALSE(run_script(s, {"undo", "undo", "translate-vertex 10 0 0 0.01"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
 }
 
