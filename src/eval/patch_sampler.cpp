@@ -41,6 +41,13 @@ double squared_norm(const Lanes& p) {
   return p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
 }
 
+// detail::patch_normal for a LaneNet (out of line: the degenerate points are rare).
+[[gnu::noinline, gnu::cold]] Vec3 lane_patch_normal(const LaneNet& net, double u, double v,
+                                                    const Lanes& du, const Lanes& dv, double tiny) {
+  return detail::patch_normal(to_net(net), u, v, Vec3(du[0], du[1], du[2]),
+                              Vec3(dv[0], dv[1], dv[2]), tiny);
+}
+
 // detail::degenerate_threshold.
 double lane_threshold(const LaneNet& net) {
   const Lanes d0 = net.p[15] - net.p[0], d1 = net.p[12] - net.p[3];
@@ -48,34 +55,47 @@ double lane_threshold(const LaneNet& net) {
   return 1e-24 * size2 * size2;
 }
 
-// split_net's T: 3 points to 5.
-void t_apply(const Lanes& x0, const Lanes& x1, const Lanes& x2, Lanes* out) {
-  out[0] = x0;
-  out[1] = (x0 + x1) / 2.0;
-  out[2] = (x0 + 2.0 * x1 + x2) / 4.0;
-  out[3] = (x1 + x2) / 2.0;
-  out[4] = x2;
+// split_net's T: 3 points to 5, each handed to store(k, point).
+template <class Store>
+[[gnu::always_inline]] inline void t_apply(const Lanes& x0, const Lanes& x1, const Lanes& x2,
+                                           Store&& store) {
+  store(0, x0);
+  store(1, (x0 + x1) / 2.0);
+  store(2, (x0 + 2.0 * x1 + x2) / 4.0);
+  store(3, (x1 + x2) / 2.0);
+  store(4, x2);
 }
 
-// split_net's halve: the 7 points of a cubic halved at t = 1/2, written at out[0], out[stride],
-// ..., out[6 * stride].
-void halve(const Lanes& p0, const Lanes& p1, const Lanes& p2, const Lanes& p3, Lanes* out,
-           int stride) {
-  out[0] = p0;
-  out[stride] = (p0 + p1) / 2.0;
-  out[2 * stride] = (p0 + 2.0 * p1 + p2) / 4.0;
-  out[3 * stride] = (p0 + 3.0 * p1 + 3.0 * p2 + p3) / 8.0;
-  out[4 * stride] = (p1 + 2.0 * p2 + p3) / 4.0;
-  out[5 * stride] = (p2 + p3) / 2.0;
-  out[6 * stride] = p3;
+// split_net's halve: the 7 points of a cubic halved at t = 1/2, each handed to store(k, point).
+template <class Store>
+[[gnu::always_inline]] inline void halve(const Lanes& p0, const Lanes& p1, const Lanes& p2,
+                                         const Lanes& p3, Store&& store) {
+  store(0, p0);
+  store(1, (p0 + p1) / 2.0);
+  store(2, (p0 + 2.0 * p1 + p2) / 4.0);
+  store(3, (p0 + 3.0 * p1 + 3.0 * p2 + p3) / 8.0);
+  store(4, (p1 + 2.0 * p2 + p3) / 4.0);
+  store(5, (p2 + p3) / 2.0);
+  store(6, p3);
 }
 
 // split(net, SplitRule::modified) in lanes: split_net's operations on each coordinate in its
-// order (the same bits), the children written in place.
+// order (the same bits). Each point N[i][j] of the 7x7 net is stored straight into the children
+// that hold it (one, two or four), without the 7x7 net in between.
 STITCH_LANE_CLONES
-void split_lanes(const LaneNet& net, LaneNet* children) {
+void split_lanes(const LaneNet& __restrict net, LaneNet* __restrict children) {
   const Lanes* P = net.p;
   const auto at = [P](int a, int b) -> const Lanes& { return P[4 * a + b]; };
+  const auto put = [children](int i, int j, const Lanes& x) {
+    for (int qu = 0; qu < 2; ++qu) {
+      const int a = i - 3 * qu;
+      if (a < 0 || a > 3) continue;
+      for (int qv = 0; qv < 2; ++qv) {
+        const int b = j - 3 * qv;
+        if (b >= 0 && b <= 3) children[2 * qu + qv].p[4 * a + b] = x;
+      }
+    }
+  };
   Lanes B[3][3];
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
@@ -85,25 +105,21 @@ void split_lanes(const LaneNet& net, LaneNet* children) {
   if (net.extraordinary & corner33) B[2][2] = (at(3, 3) + at(2, 2)) / 2.0;
   if (net.extraordinary & corner03) B[0][2] = (at(0, 3) + at(1, 2)) / 2.0;
   Lanes rows[3][5];
-  for (int a = 0; a < 3; ++a) t_apply(B[a][0], B[a][1], B[a][2], rows[a]);
-  Lanes n[7][7];
-  for (int j = 0; j < 5; ++j) {
-    Lanes col[5];
-    t_apply(rows[0][j], rows[1][j], rows[2][j], col);
-    for (int i = 0; i < 5; ++i) n[i + 1][j + 1] = col[i];
-  }
-  halve(at(0, 0), at(1, 0), at(2, 0), at(3, 0), &n[0][0], 7);  // v = 0
-  halve(at(0, 3), at(1, 3), at(2, 3), at(3, 3), &n[0][6], 7);  // v = 1
-  halve(at(0, 0), at(0, 1), at(0, 2), at(0, 3), &n[0][0], 1);  // u = 0
-  halve(at(3, 0), at(3, 1), at(3, 2), at(3, 3), &n[6][0], 1);  // u = 1
+  for (int a = 0; a < 3; ++a)
+    t_apply(B[a][0], B[a][1], B[a][2], [&](int k, const Lanes& x) { rows[a][k] = x; });
+#pragma GCC unroll 5
+  for (int j = 0; j < 5; ++j)
+    t_apply(rows[0][j], rows[1][j], rows[2][j],
+            [&](int i, const Lanes& x) { put(i + 1, j + 1, x); });
+  // The sides (each corner is stored twice, the same point).
+  halve(at(0, 0), at(1, 0), at(2, 0), at(3, 0), [&](int i, const Lanes& x) { put(i, 0, x); });
+  halve(at(0, 3), at(1, 3), at(2, 3), at(3, 3), [&](int i, const Lanes& x) { put(i, 6, x); });
+  halve(at(0, 0), at(0, 1), at(0, 2), at(0, 3), [&](int j, const Lanes& x) { put(0, j, x); });
+  halve(at(3, 0), at(3, 1), at(3, 2), at(3, 3), [&](int j, const Lanes& x) { put(6, j, x); });
   const std::uint8_t corner_bit[2][2] = {{corner00, corner03}, {corner30, corner33}};
   for (int qu = 0; qu < 2; ++qu)
-    for (int qv = 0; qv < 2; ++qv) {
-      LaneNet& c = children[2 * qu + qv];
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) c.p[4 * a + b] = n[3 * qu + a][3 * qv + b];
-      c.extraordinary = net.extraordinary & corner_bit[qu][qv];
-    }
+    for (int qv = 0; qv < 2; ++qv)
+      children[2 * qu + qv].extraordinary = net.extraordinary & corner_bit[qu][qv];
 }
 
 }  // namespace
@@ -159,23 +175,48 @@ void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, cons
     polynomial_block(net, i0, j0, nu, nv, out);
     return;
   }
-  if (u_.empty()) {
-    u_.resize(1);
-    v_.resize(1);
-    ub_.resize(1);
-    vb_.resize(1);
-    u_basis_.resize(1);
-    v_basis_.resize(1);
-  }
-  u_[0].assign(table_.t.begin() + i0, table_.t.begin() + i1 + 1);
-  v_[0].assign(table_.t.begin() + j0, table_.t.begin() + j1 + 1);
-  ub_[0].resize(static_cast<size_t>(nu));
-  vb_[0].resize(static_cast<size_t>(nv));
-  for (int k = 0; k < nu; ++k) ub_[0][k] = &basis_[i0 + k];
-  for (int k = 0; k < nv; ++k) vb_[0][k] = &basis_[j0 + k];
-  done_.assign(static_cast<size_t>(nu) * nv, 0);
-  done_stride_ = nv;
+  const Plan& steps = plan(net.extraordinary, i0, i1, j0, j1);
+  while (static_cast<int>(children_.size()) < steps.levels)
+    children_.push_back(std::make_unique<LaneNet[]>(4));
   origin_ = net.p[0];
+  run_plan(steps, net, out);
+}
+
+inline void PatchSampler::corner_sample(const LaneNet& net, const PlanOp& op,
+                                        const GridOut& out) const {
+  // evaluate_polynomial at a patch corner (evaluate_at_patch_corner): the corner point, and
+  // derivatives from it and its neighbours along the sides, with the bases' values there
+  // (1; -3 and 3), sums from +0 in its order.
+  const bool u_end = op.u_end != 0, v_end = op.v_end != 0;
+  const int eu = u_end ? 3 : 0, du = u_end ? 2 : 0;
+  const int ev = v_end ? 3 : 0, dv = v_end ? 2 : 0;
+  const Lanes zero = {0, 0, 0, 0};
+  const auto point = [&](int a, int b) -> const Lanes& { return net.p[4 * a + b]; };
+  const Lanes row_e = zero + 1.0 * point(eu, ev), row_d = zero + 1.0 * point(du, ev),
+              row_d1 = zero + 1.0 * point(du + 1, ev);
+  const Lanes row_dv = zero + -3.0 * point(eu, dv) + 3.0 * point(eu, dv + 1);
+  const Lanes position = zero + 1.0 * row_e;
+  const Lanes sdu = zero + -3.0 * row_d + 3.0 * row_d1;
+  const Lanes sdv = zero + 1.0 * row_dv;
+  const std::ptrdiff_t at = op.iu * out.stride + op.jv;
+  out.positions[at] =
+      Vec3(position[0] + origin_[0], position[1] + origin_[1], position[2] + origin_[2]);
+  const double cx = sdu[1] * sdv[2] - sdu[2] * sdv[1];
+  const double cy = sdu[2] * sdv[0] - sdu[0] * sdv[2];
+  const double cz = sdu[0] * sdv[1] - sdu[1] * sdv[0];
+  const double n2 = cx * cx + cy * cy + cz * cz;
+  const double tiny = lane_threshold(net);
+  if (n2 > tiny) {
+    const double length = std::sqrt(n2);
+    out.normals[at] = Vec3(cx / length, cy / length, cz / length);
+  } else {
+    out.normals[at] = lane_patch_normal(net, u_end ? 1.0 : 0.0, v_end ? 1.0 : 0.0, sdu, sdv, tiny);
+  }
+  if (out.levels) out.levels[at] = op.level;
+}
+
+STITCH_LANE_CLONES
+void PatchSampler::run_plan(const Plan& steps, const ControlNet& net, const GridOut& out) {
   // The net relative to its first point, as Patch::relative.
   LaneNet relative;
   Lanes origin;
@@ -185,7 +226,60 @@ void PatchSampler::evaluate_block(Corner c, int i0, int i1, int j0, int j1, cons
     relative.p[k] -= origin;
   }
   relative.extraordinary = net.extraordinary;
-  descend_block(relative, 0, 0, nu, 0, nv, out);
+  for (const PlanOp& op : steps.ops) {
+    const LaneNet& at = op.level == 0 ? relative : children_[op.level - 1][op.child];
+    switch (op.kind) {
+      case PlanOp::split:
+        split_lanes(at, children_[op.level].get());
+        break;
+      case PlanOp::corner:
+        corner_sample(at, op, out);
+        break;
+      case PlanOp::block:
+        lane_block(at, op.level, op.iu, op.nu, op.jv, op.nv, steps.bases.data() + op.bases,
+                   steps.bases.data() + op.bases + op.nu, steps.params.data() + op.bases,
+                   steps.params.data() + op.bases + op.nu, steps.skip.data() + op.skip, out);
+        break;
+    }
+  }
+}
+
+const PatchSampler::Plan& PatchSampler::plan(std::uint8_t mask, int i0, int i1, int j0, int j1) {
+  std::vector<Plan>& plans = plans_[mask & 15];
+  for (const Plan& p : plans)
+    if (p.i0 == i0 && p.i1 == i1 && p.j0 == j0 && p.j1 == j1) return p;
+  if (plans.size() >= 64) plans.clear();  // a caller of many different blocks
+  Plan& p = plans.emplace_back();
+  p.i0 = i0;
+  p.i1 = i1;
+  p.j0 = j0;
+  p.j1 = j1;
+  const int nu = i1 - i0 + 1, nv = j1 - j0 + 1;
+  if (u_.empty()) {
+    u_.resize(1);
+    v_.resize(1);
+  }
+  u_[0].assign(table_.t.begin() + i0, table_.t.begin() + i1 + 1);
+  v_[0].assign(table_.t.begin() + j0, table_.t.begin() + j1 + 1);
+  done_.assign(static_cast<size_t>(nu) * nv, 0);
+  done_stride_ = nv;
+  plan_descent(p, mask, 0, 0, 0, nu, 0, nv);
+  // The bases of the blocks' parameters: the resolution's table entry when the parameter is a
+  // grid value of it (the same bits as computing it), else computed (reserved: no reallocation).
+  p.computed.reserve(p.params.size());
+  p.bases.resize(p.params.size());
+  for (size_t k = 0; k < p.params.size(); ++k) {
+    const double t = p.params[k];  // in [0, 1], and resolution_ >= 1 (the table is read)
+    const double scaled = t * resolution_;
+    const auto index = static_cast<size_t>(scaled);
+    if (static_cast<double>(index) == scaled && table_.t[index] == t) {
+      p.bases[k] = &basis_[index];
+    } else {
+      p.computed.push_back(detail::cubic_basis(t));
+      p.bases[k] = &p.computed.back();
+    }
+  }
+  return p;
 }
 
 bool PatchSampler::pending(int iu, int nu, int jv, int nv) const {
@@ -195,43 +289,38 @@ bool PatchSampler::pending(int iu, int nu, int jv, int nv) const {
   return false;
 }
 
-void PatchSampler::set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
-                             double t) const {
-  // t is in [0, 1] and resolution_ >= 1 (evaluate_block reads the table).
-  const double scaled = t * resolution_;
-  const auto index = static_cast<size_t>(scaled);
-  if (static_cast<double>(index) == scaled && table_.t[index] == t) {
-    basis = &basis_[index];
-  } else {
-    computed = detail::cubic_basis(t);
-    basis = &computed;
-  }
-}
-
-void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, int jv, int nv,
-                                 const GridOut& out) {
+void PatchSampler::plan_descent(Plan& plan, std::uint8_t mask, int level, int child, int iu, int nu,
+                                int jv, int nv) {
   // detail::descend for every sample of the sub-block at once: a sample stops at the first net
   // that is regular or has it at a corner (or at kMaxLevel), and goes on into the child of its
   // quadrant with its parameters doubled, exactly as there.
-  if (net.extraordinary == 0 || level >= kMaxLevel) {
-    lane_block(net, level, iu, nu, jv, nv, out);
+  PlanOp op;
+  op.level = static_cast<std::uint8_t>(level);
+  op.child = static_cast<std::uint8_t>(child);
+  if (mask == 0 || level >= kMaxLevel) {
+    op.kind = PlanOp::block;
+    op.iu = iu;
+    op.nu = nu;
+    op.jv = jv;
+    op.nv = nv;
+    op.bases = static_cast<int>(plan.params.size());
+    for (int i = iu; i < iu + nu; ++i) plan.params.push_back(u_[level][i]);
+    for (int j = jv; j < jv + nv; ++j) plan.params.push_back(v_[level][j]);
+    op.skip = static_cast<int>(plan.skip.size());
+    for (int i = iu; i < iu + nu; ++i)
+      for (int j = jv; j < jv + nv; ++j)
+        plan.skip.push_back(done_[static_cast<size_t>(i) * done_stride_ + j]);
+    plan.ops.push_back(op);
     return;
   }
   if (static_cast<int>(u_.size()) <= level + 1) {  // before the references below are taken
     u_.resize(static_cast<size_t>(level) + 2);
     v_.resize(static_cast<size_t>(level) + 2);
-    ub_.resize(static_cast<size_t>(level) + 2);
-    vb_.resize(static_cast<size_t>(level) + 2);
-    u_basis_.resize(static_cast<size_t>(level) + 2);
-    v_basis_.resize(static_cast<size_t>(level) + 2);
   }
-  while (static_cast<int>(children_.size()) <= level)
-    children_.push_back(std::make_unique<LaneNet[]>(4));
   const std::vector<double>& us = u_[level];
   const std::vector<double>& vs = v_[level];
   const auto at_end = [](double t) { return t == 0 || t == 1; };
   bool corner_here = false;
-  double tiny = 0;  // lane_threshold(net), once there is a corner sample
   // Parameters rise along the block: only its first and last ones can be 0 or 1.
   const int corner_i[2] = {iu, iu + nu - 1}, corner_j[2] = {jv, jv + nv - 1};
   for (int ci = 0; ci < (nu > 1 ? 2 : 1); ++ci) {
@@ -241,38 +330,14 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
       const int j = corner_j[cj];
       char& done = done_[static_cast<size_t>(i) * done_stride_ + j];
       if (!at_end(vs[j]) || done) continue;
-      if (!corner_here) tiny = lane_threshold(net);
       corner_here = true;
-      // evaluate_polynomial at a patch corner (evaluate_at_patch_corner): the corner point, and
-      // derivatives from it and its neighbours along the sides, with the bases' values there
-      // (1; -3 and 3), sums from +0 in its order.
-      const bool u_end = us[i] == 1, v_end = vs[j] == 1;
-      const int eu = u_end ? 3 : 0, du = u_end ? 2 : 0;
-      const int ev = v_end ? 3 : 0, dv = v_end ? 2 : 0;
-      const Lanes zero = {0, 0, 0, 0};
-      const auto point = [&](int a, int b) -> const Lanes& { return net.p[4 * a + b]; };
-      const Lanes row_e = zero + 1.0 * point(eu, ev), row_d = zero + 1.0 * point(du, ev),
-                  row_d1 = zero + 1.0 * point(du + 1, ev);
-      const Lanes row_dv = zero + -3.0 * point(eu, dv) + 3.0 * point(eu, dv + 1);
-      const Lanes position = zero + 1.0 * row_e;
-      const Lanes sdu = zero + -3.0 * row_d + 3.0 * row_d1;
-      const Lanes sdv = zero + 1.0 * row_dv;
-      const std::ptrdiff_t at = i * out.stride + j;
-      out.positions[at] =
-          Vec3(position[0] + origin_[0], position[1] + origin_[1], position[2] + origin_[2]);
-      const double cx = sdu[1] * sdv[2] - sdu[2] * sdv[1];
-      const double cy = sdu[2] * sdv[0] - sdu[0] * sdv[2];
-      const double cz = sdu[0] * sdv[1] - sdu[1] * sdv[0];
-      const double n2 = cx * cx + cy * cy + cz * cz;
-      if (n2 > tiny) {
-        const double length = std::sqrt(n2);
-        out.normals[at] = Vec3(cx / length, cy / length, cz / length);
-      } else {
-        out.normals[at] =
-            detail::patch_normal(to_net(net), us[i], vs[j], Vec3(sdu[0], sdu[1], sdu[2]),
-                                 Vec3(sdv[0], sdv[1], sdv[2]), tiny);
-      }
-      if (out.levels) out.levels[at] = level;
+      PlanOp corner = op;
+      corner.kind = PlanOp::corner;
+      corner.iu = i;
+      corner.jv = j;
+      corner.u_end = us[i] == 1 ? 1 : 0;
+      corner.v_end = vs[j] == 1 ? 1 : 0;
+      plan.ops.push_back(corner);
       done = 1;
     }
   }
@@ -281,62 +346,61 @@ void PatchSampler::descend_block(const LaneNet& net, int level, int iu, int nu, 
   if (corner_here && !pending(iu, nu, jv, nv)) return;
   std::vector<double>& child_us = u_[level + 1];
   std::vector<double>& child_vs = v_[level + 1];
-  // Sized for the whole block, before any entry is pointed at (a sibling at this level fills
-  // other entries of the same arrays).
-  std::vector<const detail::CubicBasis*>& child_ub = ub_[level + 1];
-  std::vector<const detail::CubicBasis*>& child_vb = vb_[level + 1];
-  std::vector<detail::CubicBasis>& child_u_basis = u_basis_[level + 1];
-  std::vector<detail::CubicBasis>& child_v_basis = v_basis_[level + 1];
   child_us.resize(us.size());
   child_vs.resize(vs.size());
-  child_ub.resize(us.size());
-  child_vb.resize(vs.size());
-  if (child_u_basis.size() < us.size()) child_u_basis.resize(us.size());
-  if (child_v_basis.size() < vs.size()) child_v_basis.resize(vs.size());
   // Parameters rise along the block, so each half is a contiguous run.
   int su = iu, sv = jv;
   for (int i = iu; i < iu + nu; ++i) {
     const int q = us[i] >= 0.5 ? 1 : 0;
     child_us[i] = 2 * us[i] - q;
-    set_basis(child_ub[i], child_u_basis[i], child_us[i]);
     su += 1 - q;
   }
   for (int j = jv; j < jv + nv; ++j) {
     const int q = vs[j] >= 0.5 ? 1 : 0;
     child_vs[j] = 2 * vs[j] - q;
-    set_basis(child_vb[j], child_v_basis[j], child_vs[j]);
     sv += 1 - q;
   }
-  LaneNet* children = children_[level].get();
-  split_lanes(net, children);
+  op.kind = PlanOp::split;
+  plan.ops.push_back(op);
+  plan.levels = std::max(plan.levels, level + 1);
+  const std::uint8_t corner_bit[2][2] = {{corner00, corner03}, {corner30, corner33}};
   for (int qu = 0; qu < 2; ++qu)
     for (int qv = 0; qv < 2; ++qv) {
       const int ci = qu == 0 ? iu : su, cn = qu == 0 ? su - iu : iu + nu - su;
       const int cj = qv == 0 ? jv : sv, cm = qv == 0 ? sv - jv : jv + nv - sv;
       if (cn == 0 || cm == 0 || !pending(ci, cn, cj, cm)) continue;  // e.g. only the corner
-      descend_block(children[2 * qu + qv], level + 1, ci, cn, cj, cm, out);
+      plan_descent(plan, static_cast<std::uint8_t>(mask & corner_bit[qu][qv]), level + 1,
+                   2 * qu + qv, ci, cn, cj, cm);
     }
 }
 
-STITCH_LANE_CLONES
-void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int jv, int nv,
-                              const GridOut& out) {
+// Inlined into run_plan, its only caller, whose AVX2 clone it shares (no call per child).
+[[gnu::always_inline]] inline void PatchSampler::lane_block(const LaneNet& net, int level, int iu,
+                                                            int nu, int jv, int nv,
+                                                            const detail::CubicBasis* const* bu,
+                                                            const detail::CubicBasis* const* bv,
+                                                            const double* tu, const double* tv,
+                                                            const char* skip, const GridOut& out) {
   // polynomial_block's sums on whole points: the row sums of each column, then each sample.
-  const detail::CubicBasis* const* bu = ub_[level].data();
-  const detail::CubicBasis* const* bv = vb_[level].data();
   constexpr int kChunk = 16;
   const double tiny = lane_threshold(net);
   const Lanes zero = {0, 0, 0, 0};
   Lanes origin;
   to_lanes(origin_, origin);
+  Vec3* const positions = out.positions;
+  Vec3* const normals = out.normals;
+  int* const levels = out.levels;
   for (int jc = 0; jc < nv; jc += kChunk) {
     const int m = std::min(kChunk, nv - jc);
     Lanes rows[kChunk][4], rows_dv[kChunk][4];  // [k][a]: sums over b, of b(v) and b'(v)
     for (int k = 0; k < m; ++k) {
-      const detail::CubicBasis& basis = *bv[jv + jc + k];
+      const detail::CubicBasis& basis = *bv[jc + k];
+      // evaluate_polynomial starts these sums at +0, which only turns a -0 sum into +0; the
+      // sums over a below start at +0 too, and a sum from +0 has the same bits whatever the
+      // signs of its zero terms, so the samples are the same without that first addition.
       for (int a = 0; a < 4; ++a) {
-        Lanes r = zero, r_dv = zero;
-        for (int b = 0; b < 4; ++b) {
+        Lanes r = basis.b[0] * net.p[4 * a], r_dv = basis.d[0] * net.p[4 * a];
+        for (int b = 1; b < 4; ++b) {
           r += basis.b[b] * net.p[4 * a + b];
           r_dv += basis.d[b] * net.p[4 * a + b];
         }
@@ -345,11 +409,11 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
       }
     }
     for (int ii = 0; ii < nu; ++ii) {
-      const detail::CubicBasis& basis = *bu[iu + ii];
+      const detail::CubicBasis& basis = *bu[ii];
       const double b[4] = {basis.b[0], basis.b[1], basis.b[2], basis.b[3]};
       const double d[4] = {basis.d[0], basis.d[1], basis.d[2], basis.d[3]};
       const std::ptrdiff_t row_at = (iu + ii) * out.stride + jv + jc;
-      const char* done = done_.data() + static_cast<size_t>(iu + ii) * done_stride_ + jv + jc;
+      const char* done = skip + static_cast<size_t>(ii) * nv + jc;
       for (int k = 0; k < m; ++k) {
         if (done[k]) continue;
         Lanes p = zero, u = zero, v = zero;
@@ -363,23 +427,21 @@ void PatchSampler::lane_block(const LaneNet& net, int level, int iu, int nu, int
         const double cy = u[2] * v[0] - u[0] * v[2];
         const double cz = u[0] * v[1] - u[1] * v[0];
         const double n2 = cx * cx + cy * cy + cz * cz;
-        Vec3& normal = out.normals[row_at + k];
+        Vec3& normal = normals[row_at + k];
         if (n2 > tiny) {
           const double length = std::sqrt(n2);
           normal[0] = cx / length;
           normal[1] = cy / length;
           normal[2] = cz / length;
         } else {  // patch_normal's test; the degenerate points (and NaN) take its whole path
-          const double tu = u_[level][iu + ii], tv = v_[level][jv + jc + k];
-          normal = detail::patch_normal(to_net(net), tu, tv, Vec3(u[0], u[1], u[2]),
-                                        Vec3(v[0], v[1], v[2]), tiny);
+          normal = lane_patch_normal(net, tu[ii], tv[jc + k], u, v, tiny);
         }
         const Lanes position = p + origin;
-        Vec3& to = out.positions[row_at + k];
+        Vec3& to = positions[row_at + k];
         to[0] = position[0];
         to[1] = position[1];
         to[2] = position[2];
-        if (out.levels) out.levels[row_at + k] = level;
+        if (levels) levels[row_at + k] = level;
       }
     }
   }

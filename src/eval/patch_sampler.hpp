@@ -54,7 +54,8 @@ class PatchSampler {
   /// split once per level for all the samples below each child (a point per vector of 4 doubles,
   /// the children kept only while their samples are evaluated, not between calls), and each
   /// regular child is summed the same way, a point per vector, with the bases of its own
-  /// parameters (the resolution's table entries where they are grid values).
+  /// parameters (the resolution's table entries where they are grid values). Which nets are
+  /// split and which samples go where is planned once per block and corner mask (Plan).
   void evaluate_block(Corner c, int i0, int i1, int j0, int j1, const GridOut& out);
 
  private:
@@ -84,21 +85,48 @@ class PatchSampler {
     void resize(size_t n);
     void set(size_t k, double value);  ///< entry k from detail::cubic_basis(value)
   };
-  /// The samples of the sub-block [iu, iu + nu) x [jv, jv + nv) (block-relative indices) whose
-  /// descent reaches `net` at `level`; their parameters in `net` are u_[level][iu..] and
-  /// v_[level][jv..], with their bases in ub_[level] and vb_[level] at the same indices. Samples
-  /// marked in done_ were evaluated higher up. The children of a split at `level` are kept in
-  /// children_[level] while the samples below them are evaluated.
-  void descend_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
-                     const GridOut& out);
-  /// Points `basis` at the basis of the parameter t: the resolution's table entry when t is a
-  /// grid value of it (the same bits as computing it), else `computed`, set to
-  /// detail::cubic_basis(t).
-  inline void set_basis(const detail::CubicBasis*& basis, detail::CubicBasis& computed,
-                        double t) const;
-  /// polynomial_block for a LaneNet: the same sums, a point (3 coordinates) per vector.
+  /// One step of an extraordinary net's descent for a block (see Plan).
+  struct PlanOp {
+    enum Kind : std::uint8_t { split, corner, block };
+    Kind kind = block;
+    std::uint8_t level = 0;  ///< the level of the net the step works on
+    std::uint8_t child = 0;  ///< that net: children_[level - 1][child], or the root at level 0
+    std::uint8_t u_end = 0, v_end = 0;   ///< corner: the sample's parameters are 1 (else 0)
+    int iu = 0, nu = 0, jv = 0, nv = 0;  ///< the sub-block (block-relative; corner: its sample)
+    int bases = 0;  ///< block: its nu u, then nv v bases from here in Plan::bases (and params)
+    int skip = 0;   ///< block: its nu x nv flags (1: written higher up) from here in Plan::skip
+  };
+  /// The descent of an extraordinary net with a given mask of extraordinary corners for the
+  /// samples of one block: which nets are split, which samples are at a net's corner, which
+  /// sub-blocks are regular children with which bases. It depends only on the block, the mask
+  /// and the resolution, so it is made once per sampler and replayed for every net (the
+  /// recursion's bookkeeping, the parameters and their bases are not redone per patch).
+  struct Plan {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    int levels = 0;  ///< the splits' deepest level + 1
+    std::vector<PlanOp> ops;
+    std::vector<const detail::CubicBasis*> bases;  ///< into basis_ or computed
+    std::vector<double> params;                    ///< the parameter of each entry of bases
+    std::vector<char> skip;
+    std::vector<detail::CubicBasis> computed;  ///< bases of parameters that are not grid values
+  };
+  /// The plan of the block [i0, i1] x [j0, j1] for nets of extraordinary corners `mask`.
+  const Plan& plan(std::uint8_t mask, int i0, int i1, int j0, int j1);
+  /// detail::descend for every sample of the sub-block at once, recorded into `plan`: the
+  /// samples whose descent reaches the net `child` of `level` (of corner mask `mask`), with
+  /// their parameters in it u_[level][iu..] and v_[level][jv..].
+  void plan_descent(Plan& plan, std::uint8_t mask, int level, int child, int iu, int nu, int jv,
+                    int nv);
+  /// polynomial_block for a LaneNet: the same sums, a point (3 coordinates) per vector; `bu`,
+  /// `tu` and `bv`, `tv`: the bases and parameters of the rows and columns; `skip`: nu x nv flags
+  /// of samples not to write.
   void lane_block(const detail::LaneNet& net, int level, int iu, int nu, int jv, int nv,
-                  const GridOut& out);
+                  const detail::CubicBasis* const* bu, const detail::CubicBasis* const* bv,
+                  const double* tu, const double* tv, const char* skip, const GridOut& out);
+  /// Replays `steps` on the extraordinary net `net`.
+  void run_plan(const Plan& steps, const ControlNet& net, const GridOut& out);
+  /// The sample of a net at its corner (u_end, v_end), as evaluate_at_patch_corner sums it.
+  void corner_sample(const detail::LaneNet& net, const PlanOp& op, const GridOut& out) const;
   /// Whether a sample of the sub-block is not yet in done_.
   [[nodiscard]] bool pending(int iu, int nu, int jv, int nv) const;
   /// The polynomial of `net` (a regular net, or any net under asc) at the grid samples
@@ -109,17 +137,15 @@ class PatchSampler {
   Method method_;
   const std::vector<ControlNet>& nets_;
   int resolution_;
-  std::vector<detail::CubicBasis> basis_;  ///< at t = k / resolution, k = 0..resolution
-  BasisColumns table_;                     ///< basis_ as columns
-  // Scratch of evaluate_block, kept to avoid allocating per call.
+  std::vector<detail::CubicBasis> basis_;    ///< at t = k / resolution, k = 0..resolution
+  BasisColumns table_;                       ///< basis_ as columns
+  std::array<std::vector<Plan>, 16> plans_;  ///< by mask of extraordinary corners
+  // Scratch of plan_descent.
   std::vector<std::vector<double>> u_, v_;  ///< [level][k]: parameters in the level's net
-  /// [level][k]: the basis of u_[level][k] (v_[level][k]), in basis_ or in u_basis_ (v_basis_)
-  std::vector<std::vector<const detail::CubicBasis*>> ub_, vb_;
-  std::vector<std::vector<detail::CubicBasis>> u_basis_, v_basis_;
   /// [level]: the four children of the last split at that level (allocated per level, so that
   /// adding levels moves none).
   std::vector<std::unique_ptr<detail::LaneNet[]>> children_;
-  std::vector<char> done_;  ///< [i][j] of the block: already written
+  std::vector<char> done_;  ///< [i][j] of the block: already written (plan_descent)
   int done_stride_ = 0;
   Vec3 origin_ = Vec3::Zero();  ///< the extraordinary root net's first point
   std::array<Patch, 4> patches_;
