@@ -39,7 +39,7 @@ std::string_view without_plus(std::string_view token) {
 
 }  // namespace
 
-double parse_number(std::string_view token, const std::string& where) {
+double parse_number(std::string_view token, const Where& where) {
   const std::string_view t = without_plus(token);
   double value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
@@ -50,7 +50,7 @@ double parse_number(std::string_view token, const std::string& where) {
   return value;
 }
 
-double parse_double(std::string_view token, const std::string& where) {
+double parse_double(std::string_view token, const Where& where) {
   const double value = parse_number(token, where);
   if (!std::isfinite(value))
     throw InputError(
@@ -58,7 +58,7 @@ double parse_double(std::string_view token, const std::string& where) {
   return value;
 }
 
-long long parse_integer(std::string_view token, const std::string& where) {
+long long parse_integer(std::string_view token, const Where& where) {
   const std::string_view t = without_plus(token);
   long long value = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
@@ -70,9 +70,15 @@ long long parse_integer(std::string_view token, const std::string& where) {
 }
 
 std::vector<std::string_view> tokens(std::string_view line) {
+  std::vector<std::string_view> out;
+  tokens(line, out);
+  return out;
+}
+
+void tokens(std::string_view line, std::vector<std::string_view>& out) {
   if (const size_t hash = line.find('#'); hash != std::string_view::npos)
     line = line.substr(0, hash);
-  std::vector<std::string_view> out;
+  out.clear();
   size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
@@ -80,7 +86,6 @@ std::vector<std::string_view> tokens(std::string_view line) {
     while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
     if (i > start) out.push_back(line.substr(start, i - start));
   }
-  return out;
 }
 
 bool LineReader::next(std::string_view& line) {

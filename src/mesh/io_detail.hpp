@@ -24,17 +24,37 @@ namespace stitch::io_detail {
 /// Where a problem is, for messages: "file.obj, line 12".
 std::string at_line(const std::string& path, int line);
 
+/// Where a problem is, as at_line(path, line) or any text, made into text only when a message
+/// needs it: the readers name a line for every number they parse, and formatting it each time
+/// cost as much as parsing the line. Refers to the strings it is given, so it does not take
+/// temporaries. Formats with fmt as its text.
+class Where {
+ public:
+  Where(const std::string& text) : text_(&text) {}  // NOLINT(google-explicit-constructor)
+  Where(std::string&&) = delete;
+  Where(const std::string& path, int line) : path_(&path), line_(line) {}
+  Where(std::string&&, int) = delete;
+  [[nodiscard]] std::string text() const { return text_ ? *text_ : at_line(*path_, line_); }
+
+ private:
+  const std::string* text_ = nullptr;
+  const std::string* path_ = nullptr;
+  int line_ = 0;
+};
+
 /// A number as from_chars reads it (a leading '+' allowed), NaN and infinity included; throws
 /// stitch::Error naming `where` otherwise.
-double parse_number(std::string_view token, const std::string& where);
+double parse_number(std::string_view token, const Where& where);
 
 /// Parses a whole token as a finite double; throws stitch::Error naming `where` otherwise.
-double parse_double(std::string_view token, const std::string& where);
+double parse_double(std::string_view token, const Where& where);
 /// Parses a whole token as an integer; throws stitch::Error naming `where` otherwise.
-long long parse_integer(std::string_view token, const std::string& where);
+long long parse_integer(std::string_view token, const Where& where);
 
 /// Whitespace-separated tokens of a line, with a trailing `#` comment removed.
 std::vector<std::string_view> tokens(std::string_view line);
+/// The same into `out` (cleared first), whose storage a reader reuses from line to line.
+void tokens(std::string_view line, std::vector<std::string_view>& out);
 
 /// Iterates over the lines of a text, counting them from 1; strips a trailing '\r'.
 class LineReader {
@@ -78,3 +98,11 @@ PolygonSoup read_stl(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);
 
 }  // namespace stitch::io_detail
+
+template <>
+struct fmt::formatter<stitch::io_detail::Where> : fmt::formatter<std::string> {
+  template <class FormatContext>
+  auto format(const stitch::io_detail::Where& where, FormatContext& ctx) const {
+    return fmt::formatter<std::string>::format(where.text(), ctx);
+  }
+};

@@ -299,7 +299,7 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
                                           static_cast<unsigned int>(text.size()), folder);
   if (!ok)
     throw InputError(fmt::format("{}: not a glTF 2.0 file tinygltf can read: {}", path,
-                                limits::quoted(err.empty() ? warn : err)));
+                                 limits::quoted(err.empty() ? warn : err)));
   if (!warn.empty() && warnings)
     warnings->push_back(fmt::format("{}: {}", path, limits::quoted(warn)));
   Reader reader(model, path);

@@ -33,8 +33,7 @@ bool is_silently_ignored(std::string_view keyword) {
 
 /// An OBJ index (`f` entry part), 0-based; negative ones count back from the last `what`
 /// defined so far. Positive ones may refer to later lines, so the caller checks them at the end.
-int obj_index(std::string_view token, int defined_so_far, const char* what,
-              const std::string& where) {
+int obj_index(std::string_view token, int defined_so_far, const char* what, const Where& where) {
   const long long index = parse_integer(token, where);
   if (index == 0)
     throw InputError(fmt::format("{}: {} index 0 in face (OBJ indices start at 1)", where, what));
@@ -59,14 +58,14 @@ struct FaceEntry {
 };
 
 FaceEntry face_entry(std::string_view entry, int vertices_so_far, int uvs_so_far,
-                     const std::string& where) {
+                     const Where& where) {
   std::array<std::string_view, 3> parts;
   size_t count = 0, start = 0;
   while (true) {
     const size_t slash = entry.find('/', start);
     if (count == parts.size())
       throw InputError(fmt::format("{}: face entry '{}' has more than three parts", where,
-                                  limits::quoted(entry)));
+                                   limits::quoted(entry)));
     parts[count++] = entry.substr(start, slash == std::string_view::npos ? slash : slash - start);
     if (slash == std::string_view::npos) break;
     start = slash + 1;
@@ -92,7 +91,7 @@ struct Tag {
   std::vector<std::string_view> strings;
 };
 
-Tag parse_tag(const std::vector<std::string_view>& words, const std::string& where) {
+Tag parse_tag(const std::vector<std::string_view>& words, const Where& where) {
   if (words.size() < 3)
     throw InputError(
         fmt::format("{}: a tag needs a name and its argument counts INTS/FLOATS/STRINGS, e.g. "
@@ -113,7 +112,7 @@ Tag parse_tag(const std::vector<std::string_view>& words, const std::string& whe
     counts[k] = parse_integer(rest.substr(0, slash), where);
     if (counts[k] < 0)
       throw InputError(fmt::format("{}: tag '{}' declares a negative number of arguments ('{}')",
-                                  where, limits::quoted(tag.name), limits::quoted(words[2])));
+                                   where, limits::quoted(tag.name), limits::quoted(words[2])));
     if (!last) rest.remove_prefix(slash + 1);
   }
   // Compared before anything is allocated: the counts are the file's word, the words are real.
@@ -132,15 +131,15 @@ Tag parse_tag(const std::vector<std::string_view>& words, const std::string& whe
 
 /// The sharpness of argument `k`: one float applies to all, else one float per element
 /// (OpenSubdiv's far_utils.h and hbr_utils.h).
-double tag_sharpness(const Tag& tag, size_t k, const std::string& where) {
+double tag_sharpness(const Tag& tag, size_t k, const Where& where) {
   const double s = tag.floats.size() == 1 ? tag.floats[0] : tag.floats[k];
   if (!std::isfinite(s) || s < 0)
     throw InputError(fmt::format("{}: {} tag has sharpness {}; it must be a finite number >= 0",
-                                where, tag.name, s));
+                                 where, tag.name, s));
   return s;
 }
 
-int tag_vertex(long long index, const Tag& tag, const std::string& where) {
+int tag_vertex(long long index, const Tag& tag, const Where& where) {
   // OpenSubdiv's tags count vertices from 0 (unlike OBJ's faces) and have no relative form.
   if (index < 0)
     throw InputError(
@@ -152,7 +151,7 @@ int tag_vertex(long long index, const Tag& tag, const std::string& where) {
   return static_cast<int>(index);
 }
 
-void read_crease(const Tag& tag, int line, const std::string& where, PolygonSoup& soup) {
+void read_crease(const Tag& tag, int line, const Where& where, PolygonSoup& soup) {
   // OpenSubdiv reads the integers in pairs, one edge each (not as a chain of vertices).
   const size_t edges = tag.ints.size() / 2;
   if (tag.ints.empty() || tag.ints.size() % 2 != 0)
@@ -177,7 +176,7 @@ void read_crease(const Tag& tag, int line, const std::string& where, PolygonSoup
   }
 }
 
-void read_corner(const Tag& tag, int line, const std::string& where, PolygonSoup& soup) {
+void read_corner(const Tag& tag, int line, const Where& where, PolygonSoup& soup) {
   if (tag.ints.empty())
     throw InputError(
         fmt::format("{}: corner tag names no vertex ('t corner 1/1/0 V SHARPNESS')", where));
@@ -228,16 +227,17 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   std::map<std::string, IgnoredTag, std::less<>> ignored_tags;
   LineReader lines(text);
   std::string_view line;
+  std::vector<std::string_view> words;
   while (lines.next(line)) {
     const int number = lines.line_number();
     if (progress && number % 65536 == 0)
       progress(static_cast<double>(lines.offset()) / static_cast<double>(text.size()));
     require_text(line, path, number);
-    const auto words = tokens(line);
+    tokens(line, words);
     if (words.empty()) continue;
     const std::string_view keyword = words[0];
     if (keyword == "v") {
-      const std::string where = at_line(path, number);
+      const Where where(path, number);
       if (words.size() < 4)
         throw InputError(
             fmt::format("{}: a vertex needs 3 coordinates, found {}", where, words.size() - 1));
@@ -248,10 +248,10 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
       soup.positions.push_back(p);
       soup.vertex_lines.push_back(number);
     } else if (keyword == "vt") {
-      const std::string where = at_line(path, number);
+      const Where where(path, number);
       if (words.size() < 2 || words.size() > 4)
         throw InputError(fmt::format("{}: a texture coordinate needs 1 to 3 numbers, found {}",
-                                    where, words.size() - 1));
+                                     where, words.size() - 1));
       // `vt u [v [w]]`: v defaults to 0; w (3D textures) is not used but must be a number.
       Eigen::Vector2d uv(parse_double(words[1], where),
                          words.size() > 2 ? parse_double(words[2], where) : 0.0);
@@ -259,7 +259,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
       soup.uvs.push_back(uv);
       if (first_uv_line == 0) first_uv_line = number;
     } else if (keyword == "f") {
-      const std::string where = at_line(path, number);
+      const Where where(path, number);
       std::vector<int> loop;
       loop.reserve(words.size() - 1);
       uv_loop.clear();
@@ -281,7 +281,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
       soup.faces.push_back(std::move(loop));
       soup.face_lines.push_back(number);
     } else if (keyword == "t") {
-      const std::string where = at_line(path, number);
+      const Where where(path, number);
       const Tag tag = parse_tag(words, where);
       if (tag.name == "crease") {
         read_crease(tag, number, where, soup);
@@ -301,7 +301,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
                         at_line(path, number), limits::quoted(keyword)));
     } else {
       throw InputError(fmt::format("{}: unrecognised statement '{}'", at_line(path, number),
-                                  limits::quoted(keyword)));
+                                   limits::quoted(keyword)));
     }
   }
   // Positive indices may refer to vertices defined further down, so they are checked at the end.
@@ -310,7 +310,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
     for (int v : soup.faces[f])
       if (v >= nv)
         throw InputError(fmt::format("{}: face refers to vertex {}, but the file has {} vertices",
-                                    at_line(path, soup.face_lines[f]), v + 1, nv));
+                                     at_line(path, soup.face_lines[f]), v + 1, nv));
   // Some faces with texture coordinates and some without: the file has no UV map to carry over
   // (Blender and other importers then invent zeros); say so and go on without UVs.
   if (first_face_with_uv > 0 && first_face_without_uv > 0) {

@@ -26,19 +26,21 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
   LineReader lines(text);
   std::string_view line;
   // The next line with content (comments and blank lines skipped), or empty at the end.
-  auto next_words = [&]() -> std::vector<std::string_view> {
+  std::vector<std::string_view> buffer;  // reused from line to line
+  auto next_words = [&]() -> const std::vector<std::string_view>& {
     while (lines.next(line)) {
       require_text(line, path, lines.line_number());
-      auto words = tokens(line);
-      if (!words.empty()) return words;
+      tokens(line, buffer);
+      if (!buffer.empty()) return buffer;
     }
-    return {};
+    buffer.clear();
+    return buffer;
   };
 
-  auto words = next_words();
+  std::vector<std::string_view> words = next_words();
   if (words.empty() || !is_off_keyword(words[0]))
     throw InputError(fmt::format("{}: not an OFF file (the first line must be 'OFF')",
-                                at_line(path, lines.line_number())));
+                                 at_line(path, lines.line_number())));
   if (words.size() > 1 && words[1] == "BINARY")
     throw InputError(
         fmt::format("{}: binary OFF is not supported", at_line(path, lines.line_number())));
@@ -55,7 +57,7 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
 
   auto truncated = [&](const char* what, long long done, long long declared) {
     return InputError(fmt::format("{}: the file ends after {} of the {} {} declared (truncated?)",
-                                 at_line(path, lines.line_number()), done, declared, what));
+                                  at_line(path, lines.line_number()), done, declared, what));
   };
 
   PolygonSoup soup;
@@ -64,7 +66,7 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
   for (long long v = 0; v < nv; ++v) {
     words = next_words();
     if (words.empty()) throw truncated("vertices", v, nv);
-    const std::string where = at_line(path, lines.line_number());
+    const Where where(path, lines.line_number());
     if (words.size() < 3)
       throw InputError(
           fmt::format("{}: a vertex needs 3 coordinates, found {}", where, words.size()));
@@ -77,7 +79,7 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
   for (long long f = 0; f < nf; ++f) {
     words = next_words();
     if (words.empty()) throw truncated("faces", f, nf);
-    const std::string where = at_line(path, lines.line_number());
+    const Where where(path, lines.line_number());
     const long long n = parse_integer(words[0], where);
     if (n < 0 || static_cast<size_t>(n) + 1 > words.size())
       throw InputError(

@@ -109,7 +109,7 @@ Header read_header(std::string_view text, const std::string& path) {
         const auto item = parse_type(words[3]);
         if (!property.list_count || property.list_count->is_float || !item)
           throw InputError(fmt::format("{}: invalid list property types '{} {}'", where,
-                                      limits::quoted(words[2]), limits::quoted(words[3])));
+                                       limits::quoted(words[2]), limits::quoted(words[3])));
         property.type = *item;
         property.name = limits::quoted(words[4]);
       } else if (words.size() == 3) {
@@ -127,7 +127,8 @@ Header read_header(std::string_view text, const std::string& path) {
       }
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      throw InputError(fmt::format("{}: unknown header line '{}'", where, limits::quoted(words[0])));
+      throw InputError(
+          fmt::format("{}: unknown header line '{}'", where, limits::quoted(words[0])));
     }
   }
   throw InputError(fmt::format("{}: the header has no 'end_header' line", path));
@@ -196,7 +197,7 @@ Roles find_roles(const Header& header, const std::string& path) {
         if (property.name == "vertex_indices" || property.name == "vertex_index") {
           if (!property.list_count || property.type.is_float)
             throw InputError(fmt::format("{}: face property {} must be a list of integers", where,
-                                        property.name));
+                                         property.name));
           roles.indices = p;
         }
       }
@@ -265,7 +266,8 @@ class BodyReader {
   template <class Use>
   void read_ascii(const Element& element, long long index, Use& use) {
     std::string_view line;
-    std::vector<std::string_view> words;
+    std::vector<std::string_view>& words = words_;
+    words.clear();
     while (words.empty()) {
       if (!lines_.next(line))
         throw InputError(
@@ -274,9 +276,9 @@ class BodyReader {
                         at_line(path_, header_.body_line + lines_.line_number() - 1), index,
                         element.count, element.name, element.header_line));
       require_text(line, path_, line_number());
-      words = tokens(line);
+      tokens(line, words);
     }
-    const std::string where = at_line(path_, line_number());
+    const Where where(path_, line_number());
     size_t next = 0;
     auto take = [&](const Type& type) {
       if (next == words.size())
@@ -288,14 +290,14 @@ class BodyReader {
     read_properties(element, take, use, [&] { return where; });
     if (next != words.size())
       throw InputError(fmt::format("{}: {} values more than a '{}' element has", where,
-                                  words.size() - next, element.name));
+                                   words.size() - next, element.name));
   }
 
   /// Hands every property value of one element to `use(property, list_index, value)`
   /// (list_index -1 for a scalar or a list's length), reading values with `take(type)`;
   /// `where()` places the element for messages.
-  template <class Take, class Use, class Where>
-  static void read_properties(const Element& element, Take& take, Use& use, const Where& where) {
+  template <class Take, class Use, class Place>
+  static void read_properties(const Element& element, Take& take, Use& use, const Place& where) {
     for (int p = 0; p < static_cast<int>(element.properties.size()); ++p) {
       const Property& property = element.properties[p];
       if (!property.list_count) {
@@ -306,7 +308,7 @@ class BodyReader {
       if (count < 0) throw InputError(fmt::format("{}: negative list length {}", where(), count));
       if (count > limits::max_halfedges)
         throw InputError(fmt::format("{}: list length {} is more than the {} a face may have",
-                                    where(), count, limits::max_halfedges));
+                                     where(), count, limits::max_halfedges));
       use(p, -1, count);
       for (int i = 0; i < static_cast<int>(count); ++i) use(p, i, take(property.type));
     }
@@ -360,6 +362,7 @@ class BodyReader {
   const std::string& path_;
   std::string_view body_;
   LineReader lines_;
+  std::vector<std::string_view> words_;  ///< an ASCII element's values, reused
   size_t position_ = 0;
 };
 
@@ -391,8 +394,8 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
         });
         if (!p.allFinite() || !uv.allFinite())
           throw InputError(fmt::format("{}, vertex element {} (counting from 0): {} is not finite",
-                                      path, i,
-                                      p.allFinite() ? "a texture coordinate" : "coordinate"));
+                                       path, i,
+                                       p.allFinite() ? "a texture coordinate" : "coordinate"));
         soup.positions.push_back(p);
         if (roles.uv[0] >= 0) soup.uvs.push_back(uv);
         // For binary files there is no line (0); build_mesh then names the vertex number only.

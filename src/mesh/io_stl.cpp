@@ -58,11 +58,12 @@ std::vector<std::array<Vec3, 3>> read_ascii(std::string_view text, const std::st
   std::vector<Vec3> loop;
   int loop_line = 0;
   bool in_loop = false;
+  std::vector<std::string_view> words;
   while (reader.next(line)) {
     require_text(line, path, reader.line_number());
-    const auto words = tokens(line);
+    tokens(line, words);
     if (words.empty()) continue;
-    const std::string where = at_line(path, reader.line_number());
+    const Where where(path, reader.line_number());
     if (words[0] == "outer") {
       if (in_loop) throw InputError(fmt::format("{}: 'outer loop' inside a loop", where));
       in_loop = true;
@@ -77,7 +78,7 @@ std::vector<std::array<Vec3, 3>> read_ascii(std::string_view text, const std::st
       if (!in_loop) throw InputError(fmt::format("{}: 'endloop' without 'outer loop'", where));
       if (loop.size() != 3)
         throw InputError(fmt::format("{}: a facet has {} vertices, STL facets have 3",
-                                    at_line(path, loop_line), loop.size()));
+                                     at_line(path, loop_line), loop.size()));
       triangles.push_back({loop[0], loop[1], loop[2]});
       lines->push_back(loop_line);
       in_loop = false;
