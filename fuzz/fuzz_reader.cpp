@@ -1,6 +1,6 @@
-// libFuzzer target for one mesh reader (STITCH_FUZZ_READ: read_obj, read_off, read_ply, read_gltf or
-// read_stl) on arbitrary bytes, then build_mesh. A file must either be refused with a MeshError or
-// give a mesh that is valid and, written out, reads back as the same surface. Anything else (a
+// libFuzzer target for one mesh reader (STITCH_FUZZ_READ: read_obj, read_off, read_ply, read_gltf
+// or read_stl) on arbitrary bytes, then build_mesh. A file must either be refused with a MeshError
+// or give a mesh that is valid and, written out, reads back as the same surface. Anything else (a
 // crash, a sanitizer report, another exception, a broken invariant) is a finding.
 #include <cstddef>
 #include <cstdint>

@@ -15,8 +15,8 @@ namespace {
 
 using stitch::BuildOptions;
 using stitch::BuildReport;
-using stitch::HalfedgeMesh;
 using stitch::Error;
+using stitch::HalfedgeMesh;
 using stitch::PolygonSoup;
 using stitch::test::error_of;
 

@@ -17,11 +17,11 @@
 #include "options.hpp"
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/render/gl_context.hpp"
 #include "stitch/render/image.hpp"
 #include "stitch/render/options.hpp"
 #include "stitch/render/scene.hpp"
-#include "stitch/mesh/limits.hpp"
 
 extern char** environ;
 

@@ -64,7 +64,7 @@ std::vector<Query> read_queries(const std::string& path, const HalfedgeMesh& mes
       if (ec != std::errc() || p != words[0].data() + words[0].size() || h < 0 ||
           h >= mesh.halfedge_capacity() || mesh.is_deleted(Halfedge(h)))
         throw InputError(fmt::format("{}: '{}' is not a patch number (0 to {})", where,
-                                    limits::quoted(words[0]), mesh.halfedge_capacity() - 1));
+                                     limits::quoted(words[0]), mesh.halfedge_capacity() - 1));
       q.corner = Corner(h);
     } else if (words.size() == 4) {
       try {
@@ -74,7 +74,7 @@ std::vector<Query> read_queries(const std::string& path, const HalfedgeMesh& mes
       }
     } else {
       throw InputError(fmt::format("{}: expected 'patch u v' or 'face vertex u v', got {} words",
-                                  where, words.size()));
+                                   where, words.size()));
     }
     q.u = parameter(words[words.size() - 2], where);
     q.v = parameter(words[words.size() - 1], where);

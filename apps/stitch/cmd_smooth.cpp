@@ -10,10 +10,10 @@
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/limits.hpp"
 #include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
-#include "stitch/mesh/limits.hpp"
 
 namespace stitch::cli {
 
@@ -111,11 +111,11 @@ void run_smooth(const SmoothArgs& a) {
   if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" &&
       ext != ".glb" && ext != ".gltf" && !is_exact_output(a.out))
     throw UsageError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
-                                smooth_output_extensions()));
+                                 smooth_output_extensions()));
   check_exact_outputs(a.out, a.exact);
   if (a.adaptive && (a.unwelded || ext == ".glb" || ext == ".gltf"))
     throw UsageError(fmt::format("--tolerance writes .obj, .ply, .off or .stl, not '{}'{}", a.out,
-                                a.unwelded ? " --unwelded" : ""));
+                                 a.unwelded ? " --unwelded" : ""));
 
   StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);

@@ -46,8 +46,8 @@
 #include "stitch/tess/patch_grid.hpp"
 #include "stitch/tess/patches.hpp"
 #include "stitch/tess/surface_change.hpp"
-#include "stitch/tess/tessellated_mesh.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "stitch/tess/tessellated_mesh.hpp"
 
 // analysis: continuity measured, surface checks
 #include "stitch/analysis/continuity.hpp"

@@ -193,7 +193,7 @@ ContinuityReport analyze_continuity(const HalfedgeMesh& mesh, const Surface& sur
   for (const auto& [t, jump] : rep.jump_by_distance) finite = finite && std::isfinite(jump);
   if (!finite)
     throw Error(fmt::format("the continuity measures of the {} surface are not finite",
-                                to_string(rep.method)));
+                            to_string(rep.method)));
   return rep;
 }
 

@@ -86,7 +86,7 @@ TopoDS_Face make_face(const BezierPatch& patch, double tolerance) {
   BRepBuilderAPI_MakeFace face(surface, tolerance);
   if (!face.IsDone())
     throw Error(fmt::format("OpenCASCADE refused the patch of corner {}@{} (level {})",
-                                patch.vertex + 1, patch.face + 1, patch.level));
+                            patch.vertex + 1, patch.face + 1, patch.level));
   return face.Face();
 }
 
@@ -156,7 +156,7 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
   const std::optional<CadFormat> format = cad_format(path);
   if (!format)
     throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                file_extension(path), kCadExtensions));
+                                 file_extension(path), kCadExtensions));
   const Unit& unit = find_unit(options.units);
   CadReport report;
   const TopoDS_Shape shape = make_shape(patches, options, &report);
@@ -235,7 +235,7 @@ TopoDS_Shape read_cad(const std::string& path) {
   const std::optional<CadFormat> format = cad_format(path);
   if (!format)
     throw InputError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                file_extension(path), kCadExtensions));
+                                 file_extension(path), kCadExtensions));
   std::error_code ec;  // folders and devices are refused as by the mesh readers
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(fmt::format("{}: not a readable regular file", path));

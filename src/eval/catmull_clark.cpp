@@ -275,9 +275,11 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
     try {
       (void)surface_ring(mesh, v);
     } catch (const Error& e) {
-      throw_with_message(e, fmt::format(
-          "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}; use mdc or asc",
-          e.what()));
+      throw_with_message(
+          e,
+          fmt::format(
+              "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}; use mdc or asc",
+              e.what()));
     }
   }
   if (!topology_needing_a_step(mesh).empty()) {

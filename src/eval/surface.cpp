@@ -1,8 +1,8 @@
-#include "stitch/error.hpp"
 #include "stitch/eval/surface.hpp"
 
 #include <stdexcept>
 
+#include "stitch/error.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {

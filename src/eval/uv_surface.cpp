@@ -1,4 +1,3 @@
-#include "stitch/error.hpp"
 #include "stitch/eval/uv_surface.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +7,7 @@
 #include <utility>
 
 #include "patch_sampler.hpp"
+#include "stitch/error.hpp"
 
 namespace stitch {
 
@@ -103,7 +103,7 @@ UvSurface::UvSurface(const HalfedgeMesh& mesh, const CornerUvs& uvs, UvMode mode
     : mode_(mode) {
   if (uvs.index.size() < static_cast<size_t>(mesh.halfedge_capacity()))
     throw InputError(fmt::format("the texture coordinates cover {} half-edges, the mesh has {}",
-                                uvs.index.size(), mesh.halfedge_capacity()));
+                                 uvs.index.size(), mesh.halfedge_capacity()));
   const std::vector<Corner> corners = mesh.patch_corners();
   const int nuv = static_cast<int>(uvs.uv.size());
   for (Corner c : corners)

@@ -33,12 +33,13 @@ int element_number(const HalfedgeMesh& m, KgonKind kind, const json& j) {
     const std::string text = j.get<std::string>();
     const auto words = split_words(text);
     if (words.size() != 2)
-      throw InputError(fmt::format("edge \"{}\" is not \"V W\" or \"V W@F\"", limits::quoted(text)));
+      throw InputError(
+          fmt::format("edge \"{}\" is not \"V W\" or \"V W@F\"", limits::quoted(text)));
     return parse_edge(m, words[0], words[1]).idx;
   }
   if (!j.is_number_integer())
     throw InputError(fmt::format("\"{}\" must be a whole number{}", kind_name(kind),
-                                kind == KgonKind::edge ? " or \"V W\"" : ""));
+                                 kind == KgonKind::edge ? " or \"V W\"" : ""));
   const long long n = j.get<long long>();
   const int count = kind == KgonKind::face     ? m.face_capacity()
                     : kind == KgonKind::vertex ? m.vertex_capacity()
@@ -49,7 +50,7 @@ int element_number(const HalfedgeMesh& m, KgonKind kind, const json& j) {
                                                             : !m.is_deleted(Edge(i)));
   if (!exists)
     throw InputError(fmt::format("there is no {} {} (the mesh has {} {}s, numbered from 1)",
-                                kind_name(kind), n, count, kind_name(kind)));
+                                 kind_name(kind), n, count, kind_name(kind)));
   if (kind == KgonKind::face && m.is_hole(Face(i)))
     throw InputError(
         fmt::format("face {} is a hole (a boundary loop of the input): it has no K-gon", n));

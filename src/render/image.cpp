@@ -7,9 +7,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "stitch/render/gl_context.hpp"
-
 #include "stitch/error.hpp"
+#include "stitch/render/gl_context.hpp"
 
 namespace stitch {
 

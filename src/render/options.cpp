@@ -39,9 +39,8 @@ ImageSize parse_image_size(const std::string& text, int max_side) {
   if (x == std::string::npos || !parse_whole(text.substr(0, x), size.width) ||
       !parse_whole(text.substr(x + 1), size.height) || size.width < 1 || size.height < 1 ||
       size.width > max_side || size.height > max_side) {
-    throw UsageError("image size '" + text +
-                                "' is not WxH with whole numbers from 1 to " +
-                                std::to_string(max_side) + " (e.g. 800x600)");
+    throw UsageError("image size '" + text + "' is not WxH with whole numbers from 1 to " +
+                     std::to_string(max_side) + " (e.g. 800x600)");
   }
   return size;
 }
@@ -52,8 +51,7 @@ Vec3 parse_point(const std::string& text, const std::string& what) {
   bool ok = parts.size() == 3;
   for (size_t i = 0; ok && i < 3; ++i) ok = parse_whole(parts[i], p[static_cast<int>(i)]);
   if (!ok) {
-    throw UsageError(what + " '" + text +
-                                "' is not three finite numbers x,y,z (e.g. 1.5,0,-2)");
+    throw UsageError(what + " '" + text + "' is not three finite numbers x,y,z (e.g. 1.5,0,-2)");
   }
   return p;
 }
@@ -73,8 +71,8 @@ void parse_overlays(const std::string& list, RenderStyle& style) {
       style.markers = true;
     } else {
       throw UsageError("unknown overlay '" + name + "' in --show '" + list +
-                                  "' (expected a comma-separated list of mesh, kgons, nets, ev, "
-                                  "tess)");
+                       "' (expected a comma-separated list of mesh, kgons, nets, ev, "
+                       "tess)");
     }
   }
 }

@@ -7,9 +7,8 @@
 #include <stdexcept>
 
 #include "stitch/analysis/sectors.hpp"
-#include "stitch/mesh/polygon.hpp"
-
 #include "stitch/error.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
 

@@ -45,7 +45,8 @@ int add_accessor(tinygltf::Model& model, int view, int component, int type, size
 
 /// glTF stores 32-bit floats; the normals are normalized again after rounding so that they are
 /// unit to float precision, as the specification asks.
-tinygltf::Model make_model(const TessellatedMesh& mesh, const std::vector<Eigen::Vector2f>* texcoords) {
+tinygltf::Model make_model(const TessellatedMesh& mesh,
+                           const std::vector<Eigen::Vector2f>* texcoords) {
   const size_t nv = mesh.positions.size();
   std::vector<float> positions(3 * nv), normals(3 * nv);
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
@@ -108,7 +109,7 @@ void write_gltf(const std::string& path, const TessellatedMesh& mesh, bool binar
     throw OutputError(fmt::format("cannot write {}: the surface is empty", path));
   if (texcoords && texcoords->size() != mesh.positions.size())
     throw OutputError(fmt::format("cannot write {}: {} texture coordinates for {} vertices", path,
-                                texcoords->size(), mesh.positions.size()));
+                                  texcoords->size(), mesh.positions.size()));
   tinygltf::Model model = make_model(mesh, texcoords);
   tinygltf::TinyGLTF writer;
   if (binary) {

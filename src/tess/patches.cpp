@@ -1,4 +1,3 @@
-#include "stitch/error.hpp"
 #include "stitch/tess/patches.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "stitch/error.hpp"
 
 namespace stitch {
 
@@ -120,11 +121,10 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
     throw UsageError(
         "the Catmull-Clark surface (--method cc) is not a set of Bezier patches; use mdc or asc");
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-    throw UsageError(
-        fmt::format("the tolerance must be a number > 0 (got {})", options.tolerance));
+    throw UsageError(fmt::format("the tolerance must be a number > 0 (got {})", options.tolerance));
   if (!(options.angle_tolerance_deg > 0) || !std::isfinite(options.angle_tolerance_deg))
     throw UsageError(fmt::format("the angle tolerance must be a number > 0 (got {})",
-                                            options.angle_tolerance_deg));
+                                 options.angle_tolerance_deg));
   PatchSet set;
   set.method = surface.method();
   set.tolerance = options.tolerance;

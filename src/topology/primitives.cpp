@@ -123,7 +123,7 @@ HalfedgeMesh make_torus(int m, int n, double major_radius, double minor_radius) 
     throw UsageError(fmt::format("torus: needs m, n >= 3 segments, got {} x {}", m, n));
   if (static_cast<long long>(m) * n > limits::max_primitive_faces)
     throw UsageError(fmt::format("torus: at most {} faces (m x n), got {} x {}",
-                                limits::max_primitive_faces, m, n));
+                                 limits::max_primitive_faces, m, n));
   PolygonSoup soup;
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < n; ++j) {

@@ -49,9 +49,9 @@ std::string coordinate_problem(const Vec3& p);
 /// Throws stitch::Error "<what> ..." when coordinate_problem(p) finds a problem.
 void check_coordinates(const Vec3& p, std::string_view what);
 
-/// Throws stitch::Error when the longest side of the mesh's bounding box is below min_extent. Checked
-/// where a surface is built, not when a mesh is read: such a mesh is a valid mesh, which stitch
-/// edits, writes and reads back, but it has no normals to build a surface from.
+/// Throws stitch::Error when the longest side of the mesh's bounding box is below min_extent.
+/// Checked where a surface is built, not when a mesh is read: such a mesh is a valid mesh, which
+/// stitch edits, writes and reads back, but it has no normals to build a surface from.
 void check_extent(const HalfedgeMesh& mesh);
 
 /// Throws UsageError naming `what` unless lo <= value <= hi (NaN is refused too).

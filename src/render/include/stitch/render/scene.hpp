@@ -14,8 +14,8 @@
 namespace stitch {
 
 struct SceneGeometry {
-  TessellatedMesh surface;                         ///< unwelded: one vertex block per patch
-  TessellatedMesh input;                           ///< the input polygons (input_faces)
+  TessellatedMesh surface;                     ///< unwelded: one vertex block per patch
+  TessellatedMesh input;                       ///< the input polygons (input_faces)
   std::array<LineSet, num_overlays> overlays;  ///< indexed by Overlay
   std::vector<ExtraordinaryPoint> extraordinary;
   /// The surface's boundary and crease curves, shown with the extraordinary points.
@@ -37,7 +37,8 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
                           const OverlaySelection& overlays = all_overlays);
 
 /// The UV of every sample of `surface`: `uvs` at the sample's patch and (u, v).
-std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface, const UvSurface& uvs);
+std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
+                                               const UvSurface& uvs);
 /// Fills scene.surface_texcoords from `uvs` and scene.input_texcoords from `corner_uvs` (the
 /// mesh's, which `uvs` was built on). Throws stitch::Error as input_face_texcoords does.
 void add_texcoords(SceneGeometry& scene, const HalfedgeMesh& mesh, const CornerUvs& corner_uvs,
