@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "descent.hpp"
 #include "stitch/eval/de_casteljau.hpp"
@@ -572,6 +573,18 @@ SurfacePoint PatchSampler::evaluate(Corner c, double u, double v) {
   if (method_ != Method::mdc) return direct(c, u, v);
   const ControlNet& root = nets_[c.idx];
   if (root.regular()) return direct(c, u, v);
+  if ((u == 0 || u == 1) && (v == 0 || v == 1)) {
+    // descend stops at once at a corner of the root (the mesh vertices, face centres and edge
+    // midpoints a tessellation evaluates on every patch around them): the net relative to its
+    // first point, as Patch::relative, is all it reads, so the patch cache is left alone.
+    ControlNet relative = root;
+    for (Vec3& point : relative.p) point -= root.p[0];
+    return detail::descend(
+        relative, root.p[0], u, v, 0,
+        [](const ControlNet&, std::uint64_t) -> const std::array<ControlNet, 4>& {
+          throw std::logic_error("a patch corner needs no split");
+        });
+  }
   Patch& p = patch(c);
   return detail::descend(
       p.relative, root.p[0], u, v,

@@ -28,7 +28,8 @@ Method parse_method(const std::string& s) {
 
 namespace {
 
-const HalfedgeMesh& with_normals(const HalfedgeMesh& mesh) {
+// The mesh, once limits::check_extent has found it large enough to build a surface on.
+const HalfedgeMesh& extent_checked(const HalfedgeMesh& mesh) {
   limits::check_extent(mesh);
   return mesh;
 }
@@ -36,7 +37,7 @@ const HalfedgeMesh& with_normals(const HalfedgeMesh& mesh) {
 }  // namespace
 
 Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
-    : method_(method), bezier_(build_bezier_surface(with_normals(mesh), kgon_options)) {
+    : method_(method), bezier_(build_bezier_surface(extent_checked(mesh), kgon_options)) {
   if (method == Method::cc)
     cc_ = std::make_shared<const CatmullClarkSurface>(mesh, kgon_options.boundary);
 }
