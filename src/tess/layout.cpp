@@ -98,33 +98,29 @@ void TessellationLayout::quads(std::int64_t begin, std::int64_t end, int* out) c
   const int n = n_;
   const std::int64_t cells = static_cast<std::int64_t>(n) * n;
   std::vector<std::int64_t> grid(static_cast<size_t>(n + 1) * (n + 1));
+  // Cell j of the grid row that starts at `row`, counter-clockwise.
+  const auto put_cell = [&out, n](const std::int64_t* row, int j) {
+    out[0] = static_cast<int>(row[j]);
+    out[1] = static_cast<int>(row[j + n + 1]);
+    out[2] = static_cast<int>(row[j + n + 2]);
+    out[3] = static_cast<int>(row[j + 1]);
+    out += 4;
+  };
   for (std::int64_t q = begin; q < end;) {
     const auto k = static_cast<int>(q / cells);
     grid_vertices(k, grid.data());
     const std::int64_t last = std::min(end, (k + 1) * cells);
     if (q == k * cells && last == q + cells) {  // the whole corner, as nearly always
-      for (int i = 0; i < n; ++i) {
-        const std::int64_t* row = grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1);
-        for (int j = 0; j < n; ++j, out += 4) {
-          out[0] = static_cast<int>(row[j]);
-          out[1] = static_cast<int>(row[j + n + 1]);
-          out[2] = static_cast<int>(row[j + n + 2]);
-          out[3] = static_cast<int>(row[j + 1]);
-        }
-      }
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+          put_cell(grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1), j);
       q = last;
       continue;
     }
     const auto cell = static_cast<int>(q - k * cells);
-    for (int i = cell / n, j = cell % n; q < last; ++i, j = 0) {
-      const std::int64_t* row = grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1);
-      for (; j < n && q < last; ++j, ++q, out += 4) {
-        out[0] = static_cast<int>(row[j]);
-        out[1] = static_cast<int>(row[j + n + 1]);
-        out[2] = static_cast<int>(row[j + n + 2]);
-        out[3] = static_cast<int>(row[j + 1]);
-      }
-    }
+    for (int i = cell / n, j = cell % n; q < last; ++i, j = 0)
+      for (; j < n && q < last; ++j, ++q)
+        put_cell(grid.data() + static_cast<std::ptrdiff_t>(i) * (n + 1), j);
   }
 }
 
