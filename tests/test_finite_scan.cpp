@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "stitch/tess/tessellated_mesh.hpp"
 #include "support/finite.hpp"
 
 namespace stitch::detail {
@@ -31,6 +32,21 @@ TEST(FiniteScan, FindsInfinityAndNaNInAnyComponentAndPassesEveryFiniteValue) {
         // Only the vectors asked about are looked at.
         EXPECT_TRUE(all_finite(w.data(), static_cast<std::int64_t>(at)));
       }
+}
+
+// first_non_finite_sample, which checks a held tessellation before it is written, names the first
+// bad sample, whether its position or its normal is bad, also when the mesh has fewer normals.
+TEST(FiniteScan, FirstNonFiniteSampleNamesTheFirstBadSample) {
+  TessellatedMesh mesh;
+  mesh.positions.assign(20, Vec3(1, 2, 3));
+  mesh.normals.assign(20, Vec3(0, 0, 1));
+  EXPECT_EQ(first_non_finite_sample(mesh), -1);
+  mesh.positions[12].y() = std::nan("");
+  EXPECT_EQ(first_non_finite_sample(mesh), 12);
+  mesh.normals[7].x() = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(first_non_finite_sample(mesh), 7);
+  mesh.normals.resize(5);  // the bad normal is no longer there
+  EXPECT_EQ(first_non_finite_sample(mesh), 12);
 }
 
 }  // namespace

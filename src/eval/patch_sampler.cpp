@@ -16,6 +16,9 @@ constexpr int kCachedLevels = 20;
 // As deep as Surface::evaluate descends (evaluate_patch's default).
 constexpr int kMaxLevel = 60;
 
+// The extraordinary corner a split's child (qu, qv) keeps of its parent's: its own corner.
+constexpr std::uint8_t kChildCorner[2][2] = {{corner00, corner03}, {corner30, corner33}};
+
 using detail::LaneNet;
 using detail::Lanes;
 
@@ -117,10 +120,9 @@ void split_lanes(const LaneNet& __restrict net, LaneNet* __restrict children) {
   halve(at(0, 3), at(1, 3), at(2, 3), at(3, 3), [&](int i, const Lanes& x) { put(i, 6, x); });
   halve(at(0, 0), at(0, 1), at(0, 2), at(0, 3), [&](int j, const Lanes& x) { put(0, j, x); });
   halve(at(3, 0), at(3, 1), at(3, 2), at(3, 3), [&](int j, const Lanes& x) { put(6, j, x); });
-  const std::uint8_t corner_bit[2][2] = {{corner00, corner03}, {corner30, corner33}};
   for (int qu = 0; qu < 2; ++qu)
     for (int qv = 0; qv < 2; ++qv)
-      children[2 * qu + qv].extraordinary = net.extraordinary & corner_bit[qu][qv];
+      children[2 * qu + qv].extraordinary = net.extraordinary & kChildCorner[qu][qv];
 }
 
 }  // namespace
@@ -364,13 +366,12 @@ void PatchSampler::plan_descent(Plan& plan, std::uint8_t mask, int level, int ch
   op.kind = PlanOp::split;
   plan.ops.push_back(op);
   plan.levels = std::max(plan.levels, level + 1);
-  const std::uint8_t corner_bit[2][2] = {{corner00, corner03}, {corner30, corner33}};
   for (int qu = 0; qu < 2; ++qu)
     for (int qv = 0; qv < 2; ++qv) {
       const int ci = qu == 0 ? iu : su, cn = qu == 0 ? su - iu : iu + nu - su;
       const int cj = qv == 0 ? jv : sv, cm = qv == 0 ? sv - jv : jv + nv - sv;
       if (cn == 0 || cm == 0 || !pending(ci, cn, cj, cm)) continue;  // e.g. only the corner
-      plan_descent(plan, static_cast<std::uint8_t>(mask & corner_bit[qu][qv]), level + 1,
+      plan_descent(plan, static_cast<std::uint8_t>(mask & kChildCorner[qu][qv]), level + 1,
                    2 * qu + qv, ci, cn, cj, cm);
     }
 }

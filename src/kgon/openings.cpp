@@ -331,8 +331,8 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   // three-step twists, 45 degrees, at 1.7 to 1.9 r; prism 7's, 51.4 degrees, at 1.7 to 2.0 r),
   // linearly in between. Prisms 3 to 6 keep the rule above: 1.8 times along and 1.8 r across
   // fold prism 3's one-step twists, prism 4's half twists and prism 5's two-step twists.
-  const double rim_edges = static_cast<double>(openings.first.size() + openings.second.size() - 2);
-  if (2 * std::numbers::pi / (rim_edges / 2) < std::numbers::pi / 3 - 1e-9) {
+  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
+  if (rim_edges > 2 * 6) {
     constexpr double degree = std::numbers::pi / 180;
     const double t = std::clamp((overshoot - 40 * degree) / (5 * degree), 0.0, 1.0);
     across = std::max(0.8 + t, spread > 1 ? across : 0.0);
