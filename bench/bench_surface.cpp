@@ -281,22 +281,34 @@ void BM_osd_native(benchmark::State& state) {
 //   output 0: new arrays per call; stitch's with the per-sample attributes (tessellate()'s
 //             default), which Bfr's side does not compute;
 //   output 1: new arrays per call, positions and normals only (the same work on both sides);
-//   output 2: positions and normals into the arrays of the previous run (tessellating again, as
-//             an animation does: no fresh memory to fault in).
+//   output 2: the surface rebuilt into the previous run's storage (Surface::rebuild) and its
+//             positions and normals into the previous run's arrays (tessellating again, as an
+//             animation does: no fresh memory to fault in).
 // Until 2026-12-02's fourth session the Bfr side kept nothing (a checksum, as BM_osd_native
-// still does), so that outputs 0 and 1 compared stitch's fresh memory with none.
+// still does), so that outputs 0 and 1 compared stitch's fresh memory with none. Until its fifth,
+// output 2 built a new Surface each run, whose 160 MB of control nets at 100k faces were fresh.
 const char* const kOutputs[] = {"new, attributes", "new, positions+normals",
                                 "reused, positions+normals"};
 
+/// What output 2 keeps from one run of the pipeline to the next.
+struct Kept {
+  std::optional<stitch::Surface> surface;
+  stitch::TessellatedMesh tessellation;
+};
+
 /// One run of the full pipeline: the mdc surface and its welded tessellation at kResolution,
-/// into `kept` for output 2, else into a new result.
-void run_pipeline(const HalfedgeMesh& mesh, int output, stitch::TessellatedMesh& kept) {
-  const stitch::Surface surface(mesh, stitch::Method::mdc);
+/// into `kept` for output 2, else into a new surface and result.
+void run_pipeline(const HalfedgeMesh& mesh, int output, Kept& kept) {
   const stitch::TessellationOptions options{kResolution, true, output == 0};
   if (output == 2) {
-    stitch::tessellate(mesh, surface, options, kept);
-    benchmark::DoNotOptimize(kept.positions.data());
+    if (kept.surface)
+      kept.surface->rebuild(mesh);
+    else
+      kept.surface.emplace(mesh, stitch::Method::mdc);
+    stitch::tessellate(mesh, *kept.surface, options, kept.tessellation);
+    benchmark::DoNotOptimize(kept.tessellation.positions.data());
   } else {
+    const stitch::Surface surface(mesh, stitch::Method::mdc);
     benchmark::DoNotOptimize(stitch::tessellate(mesh, surface, options));
   }
 }
@@ -311,7 +323,7 @@ void BM_vs_bfr(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
   const auto output = static_cast<int>(state.range(2));
-  stitch::TessellatedMesh kept;
+  Kept kept;
   BfrTessellation bfr_kept;
   double checksum = 0.0;
   // Untimed first runs: for output 2 they fill the arrays the timed runs reuse; for all outputs
@@ -364,7 +376,7 @@ void BM_tessellate(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const HalfedgeMesh& mesh = bench_mesh(kind, static_cast<int>(state.range(1)));
   const auto output = static_cast<int>(state.range(2));
-  stitch::TessellatedMesh kept;
+  Kept kept;
   if (output == 2) run_pipeline(mesh, output, kept);
   for (auto _ : state) run_pipeline(mesh, output, kept);
   state.SetLabel(mesh_label(kind, mesh) + ", " + kOutputs[output]);

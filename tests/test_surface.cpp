@@ -8,6 +8,8 @@
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
 #include "test_support.hpp"
 
 namespace stitch {
@@ -188,6 +190,47 @@ TEST(Surface, TwoGonsGiveFiniteOutput) {
           EXPECT_NEAR(p.normal.norm(), 1.0, 1e-12);
         }
   }
+}
+
+// A rebuilt surface is the one a new Surface would be, bit for bit, whatever the rebuilt one held
+// before: a larger or smaller mesh, with or without unused half-edge indices and boundaries.
+TEST(Surface, RebuildMakesTheSurfaceANewOneWouldBe) {
+  HalfedgeMesh gaps = make_torus(8, 6);
+  apply_operation(gaps, "delete-face 1");
+  ASSERT_LT(gaps.num_halfedges(), static_cast<size_t>(gaps.halfedge_capacity()));
+  PolygonSoup grid;  // four quads: a boundary, whose hole's corners make no patch
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) grid.positions.emplace_back(i, j, 0.1 * i * j);
+  grid.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}};
+  const HalfedgeMesh boundary = build_mesh(grid);
+  const std::vector<HalfedgeMesh> meshes = {make_torus(12, 8), gaps, make_torus(9, 5), boundary,
+                                            test::cube_mesh()};
+  for (Method method : {Method::mdc, Method::asc, Method::cc}) {
+    Surface rebuilt(make_torus(16, 10), method);
+    for (const HalfedgeMesh& mesh : meshes) {
+      rebuilt.rebuild(mesh);
+      const Surface fresh(mesh, method);
+      ASSERT_EQ(rebuilt.corners(), fresh.corners());
+      EXPECT_TRUE(rebuilt.bezier().nets == fresh.bezier().nets) << to_string(method);
+      for (Corner c : fresh.corners())
+        for (double u : {0.0, 0.3, 1.0})
+          for (double v : {0.0, 0.7}) {
+            EXPECT_EQ(rebuilt.evaluate(c, u, v).position, fresh.evaluate(c, u, v).position);
+            EXPECT_EQ(rebuilt.evaluate(c, u, v).normal, fresh.evaluate(c, u, v).normal);
+          }
+    }
+  }
+}
+
+// A mesh the surface cannot be built on is refused before the surface changes.
+TEST(Surface, RebuildRefusesATinyMeshAndKeepsTheSurface) {
+  const HalfedgeMesh cube = test::cube_mesh();
+  HalfedgeMesh tiny = cube;
+  for (Vertex v : tiny.vertices()) tiny.position(v) *= 1e-300;
+  Surface surface(cube, Method::mdc);
+  const std::vector<ControlNet> before = surface.bezier().nets;
+  EXPECT_THROW(surface.rebuild(tiny), InputError);
+  EXPECT_TRUE(surface.bezier().nets == before);
 }
 
 }  // namespace

@@ -23,10 +23,15 @@ SurfacePoint evaluate_patch(const ControlNet& root, double u, double v, BezierRu
 
 BezierSurface build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& options) {
   BezierSurface s;
-  s.kgons = build_kgons(mesh, options);
-  s.nets = build_control_nets(mesh, s.kgons);
-  s.corners = mesh.patch_corners();
+  build_bezier_surface(mesh, options, s);
   return s;
+}
+
+void build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& options,
+                          BezierSurface& into) {
+  into.kgons = build_kgons(mesh, options);
+  build_control_nets(mesh, into.kgons, into.nets);
+  into.corners = mesh.patch_corners();
 }
 
 }  // namespace stitch

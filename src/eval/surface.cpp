@@ -26,20 +26,23 @@ Method parse_method(const std::string& s) {
   throw UsageError("unknown method '" + s + "' (expected mdc, asc or cc)");
 }
 
-namespace {
-
-// The mesh, once limits::check_extent has found it large enough to build a surface on.
-const HalfedgeMesh& extent_checked(const HalfedgeMesh& mesh) {
-  limits::check_extent(mesh);
-  return mesh;
+Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
+    : method_(method) {
+  rebuild(mesh, kgon_options);
 }
 
-}  // namespace
-
-Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)
-    : method_(method), bezier_(build_bezier_surface(extent_checked(mesh), kgon_options)) {
-  if (method == Method::cc)
-    cc_ = std::make_shared<const CatmullClarkSurface>(mesh, kgon_options.boundary);
+void Surface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& kgon_options) {
+  limits::check_extent(mesh);
+  try {
+    build_bezier_surface(mesh, kgon_options, bezier_);
+    cc_ = method_ == Method::cc
+              ? std::make_shared<const CatmullClarkSurface>(mesh, kgon_options.boundary)
+              : nullptr;
+  } catch (...) {
+    bezier_ = {};
+    cc_.reset();
+    throw;
+  }
 }
 
 SurfacePoint Surface::evaluate(Corner c, double u, double v) const {

@@ -58,14 +58,31 @@ ControlNet build_control_net(const HalfedgeMesh& m, const KgonSet& kg, Corner c)
   return net;
 }
 
+ControlNet unused_net() {
+  ControlNet net;
+  net.p.fill(Vec3::Zero());
+  return net;
+}
+
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& m, const KgonSet& kgons) {
   std::vector<ControlNet> nets;
+  build_control_nets(m, kgons, nets);
+  return nets;
+}
+
+void build_control_nets(const HalfedgeMesh& m, const KgonSet& kgons,
+                        std::vector<ControlNet>& nets) {
   detail::size_for_overwrite(nets, static_cast<size_t>(m.halfedge_capacity()));
   const std::vector<Corner> corners = m.patch_corners();
-  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
-    nets[corners[i].idx] = build_control_net(m, kgons, corners[i]);
+  // Each step also empties the indices before its corner that make no patch (deleted half-edges,
+  // holes' corners): storage reused from another mesh still holds that mesh's nets there.
+  const ControlNet unused = unused_net();
+  tbb::parallel_for(size_t{0}, corners.size() + 1, [&](size_t i) {
+    const size_t from = i == 0 ? 0 : static_cast<size_t>(corners[i - 1].idx) + 1;
+    const size_t to = i == corners.size() ? nets.size() : static_cast<size_t>(corners[i].idx);
+    for (size_t k = from; k < to; ++k) nets[k] = unused;
+    if (i < corners.size()) nets[corners[i].idx] = build_control_net(m, kgons, corners[i]);
   });
-  return nets;
 }
 
 PatchNeighbour neighbour_across(const HalfedgeMesh& m, Corner c, int side) {

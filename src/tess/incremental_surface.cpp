@@ -208,9 +208,7 @@ SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
   resize_to(kgons_.face, m.face_capacity());
   resize_to(kgons_.vertex, m.vertex_capacity());
   resize_to(kgons_.edge, m.edge_capacity());
-  ControlNet unused;
-  unused.p.fill(Vec3::Zero());
-  nets_.resize(static_cast<size_t>(nh), unused);
+  nets_.resize(static_cast<size_t>(nh), unused_net());
   for (int h = nh; h < old_nh; ++h) num_patches_ -= live_[h];
   live_.resize(static_cast<size_t>(nh), 0);
 

@@ -34,5 +34,8 @@ struct BezierSurface {
 };
 
 BezierSurface build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& options = {});
+/// The same into `into`, keeping the storage of its control nets where it is large enough.
+void build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& options,
+                          BezierSurface& into);
 
 }  // namespace stitch

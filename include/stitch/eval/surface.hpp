@@ -26,6 +26,14 @@ class Surface {
  public:
   Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options = {});
 
+  /// Makes this the surface Surface(mesh, method(), kgon_options) would be, in this object's
+  /// storage: the control nets (about 400 bytes per corner, most of a surface's memory) are
+  /// rebuilt in place where their array is large enough, as tessellate(..., out) reuses its
+  /// arrays, so that the next frame of an animation touches no fresh memory for them. A mesh
+  /// too large or too small to build on (limits::check_extent) is refused before anything
+  /// changes; any later exception leaves a surface with no patches.
+  void rebuild(const HalfedgeMesh& mesh, const KgonOptions& kgon_options = {});
+
   [[nodiscard]] Method method() const { return method_; }
   [[nodiscard]] const std::vector<Corner>& corners() const { return bezier_.corners; }
   /// The Bézier patches (also built for cc, for overlays).

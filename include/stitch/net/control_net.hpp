@@ -44,11 +44,19 @@ struct ControlNet {
   bool operator==(const ControlNet&) const = default;
 };
 
+/// The net kept at an index that makes no patch (a deleted half-edge, a hole's corner): all
+/// points at the origin.
+ControlNet unused_net();
+
 /// The net of one corner.
 ControlNet build_control_net(const HalfedgeMesh& mesh, const KgonSet& kgons, Corner c);
 
-/// The nets of every corner, indexed by half-edge (nets of deleted half-edges are left empty).
+/// The nets of every corner, indexed by half-edge (unused_net() where there is no patch).
 std::vector<ControlNet> build_control_nets(const HalfedgeMesh& mesh, const KgonSet& kgons);
+/// The same into `nets`, whose storage is kept when it is large enough (rebuilding a surface
+/// without fresh memory for its largest array).
+void build_control_nets(const HalfedgeMesh& mesh, const KgonSet& kgons,
+                        std::vector<ControlNet>& nets);
 
 /// The dependency rule of the nets: the corners whose nets read a K-gon of `kgons` (a net reads
 /// the K-gons of its face, its vertex, its edge and its previous edge), sorted, without repeats
