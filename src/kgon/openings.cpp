@@ -524,12 +524,35 @@ std::optional<BentTube> bent_tube_of(const HalfedgeMesh& m, const TwoOpenings& o
   return t;
 }
 
+/// How far around a bent tube the face's fan has to reach: longest_spoke with the bent tube's
+/// angles, from the face K-gon's centre (opposite the middle of the bridge) to the middle of a
+/// rim's edge, measured on the face unrolled.
+double longest_spoke(const HalfedgeMesh& m, const BentTube& tube, const TwoOpenings& openings) {
+  const double centre = std::numbers::pi + tube.twist / 2;
+  double longest = 0;
+  for (const auto* corners : {&openings.first, &openings.second}) {
+    const double bridge = corners == &openings.first ? 0 : tube.twist;
+    for (size_t i = 0; i + 1 < corners->size(); ++i) {
+      const Vec3 mid =
+          0.5 * (m.position(m.origin((*corners)[i])) + m.position(m.origin((*corners)[i + 1])));
+      double around = tube.coords(mid).angle - tube.angle_a - bridge;
+      around -= 2 * std::numbers::pi * std::floor(around / (2 * std::numbers::pi));
+      longest = std::max(longest, std::abs(bridge + around - centre));
+    }
+  }
+  return longest;
+}
+
+/// Which way the face K-gon of a bent tube runs: along the curve the bridge stands for, carried
+/// around the tube, or along the tube (the arc's direction).
+enum class BentAxis { bridge, tube };
+
 /// The face K-gon of a bent tube that twists: as on a twisted cylinder, a regular K-gon on the
 /// wall opposite the middle of the bridge, halfway along the arc, in the wall's tangent plane,
-/// its size along the bridge's curve times `along_scale`.
+/// its size along its axis (the bridge's curve or the arc, `axis`) times `along_scale`.
 Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
                         const TwoOpenings& openings, const std::vector<Vec3>& corner_point,
-                        double along_scale = 1) {
+                        double along_scale = 1, BentAxis axis = BentAxis::bridge) {
   const auto loop = m.face_loop(f);
   double radius = 0, sigma_a = 0, sigma_b = 0;
   for (Corner c : loop)
@@ -547,7 +570,8 @@ Kgon place_on_bent_tube(const HalfedgeMesh& m, Face f, const BentTube& tube,
     return tube.wall(sigma_a + t * (sigma_b - sigma_a), angle + (t - 0.5) * tube.twist, radius);
   };
   constexpr double kStep = 1.0 / 128;
-  const Vec3 along = curve(0.5 + kStep) - curve(0.5 - kStep);
+  const Vec3 along =
+      axis == BentAxis::tube ? tube.tangent(sigma) : curve(0.5 + kStep) - curve(0.5 - kStep);
   return wall_kgon(loop, openings, centre, normal, along, radius, corner_point, along_scale);
 }
 
@@ -657,8 +681,20 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // points keeps them clean (docs/method.md).
   for (Corner c : openings.first)
     if (on_both_rims(m, openings, m.origin(c))) return std::nullopt;
-  if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
+  if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist) {
+    // A fan that reaches far past the half turn (longest_spoke on the bent tube) wants the face
+    // K-gon along the tube, 1.8 times section 2's size along it (method.md, "Fans far past the
+    // half turn on a bent tube"). Measured at resolution 16 on the dodecahedron's bent tunnels,
+    // whose fans reach 36 degrees past (50 of 125 pairs; the others and all of the icosahedron's
+    // at most 22.2): all 125 clean from 1.5 to 2.3 times along, 20 folded at 1.45 and below
+    // (and with the K-gon along the bridge's curve at 1, 1.5, 1.8 or 2.2 times), 10 at 2.35. The
+    // 30 degrees is fitted to these two solids, not derived: anything between 22.2 and 36
+    // degrees picks the same pairs.
+    constexpr double kFarPastHalfTurn = 30 * std::numbers::pi / 180, kAlongTube = 1.8;
+    if (longest_spoke(m, *bent, openings) - std::numbers::pi > kFarPastHalfTurn)
+      return place_on_bent_tube(m, f, *bent, openings, corner_point, kAlongTube, BentAxis::tube);
     return place_on_bent_tube(m, f, *bent, openings, corner_point);
+  }
   if (const auto tube = tube_of(m, openings); tube && std::abs(tube->twist) >= kNoTwist)
     return place_on_twisted_tube(m, f, *tube, openings, corner_point);
   auto points_of = [&](const std::vector<Corner>& cs) {
