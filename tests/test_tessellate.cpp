@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -236,6 +237,32 @@ TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
   EXPECT_EQ(reused.positions.data(), storage) << "smaller output reallocated";
   expect_fresh(small, small_surface, {4, false, true});
   expect_fresh(big, big_surface, {6, true, true});
+}
+
+// Kept quads (index_buffer = false): after every vertex of a torus moved (fixed offsets, no
+// randomness), tessellating into the kept output without rewriting its quads gives exactly the
+// fresh tessellation, welded and unwelded, since the quads depend on the connectivity and the
+// resolution alone. A kept output of another size is refused before anything in it changes.
+TEST(Tessellate, KeptQuadsAfterVertexMovesEqualAFreshTessellation) {
+  HalfedgeMesh mesh = make_primitive("torus", {8, 6});
+  for (const bool welded : {true, false}) {
+    const TessellationOptions full{5, welded, true}, keep{5, welded, true, false};
+    TessellatedMesh kept = tessellate(mesh, Surface(mesh, Method::mdc), full);
+    for (Vertex v : mesh.vertices())
+      mesh.position(v) += Vec3(0.01 * (v.idx % 3), -0.02 * (v.idx % 5), 0.015 * (v.idx % 7));
+    const Surface moved(mesh, Method::mdc);
+    tessellate(mesh, moved, keep, kept);
+    const TessellatedMesh fresh = tessellate(mesh, moved, full);
+    EXPECT_EQ(kept.positions, fresh.positions) << "welded " << welded;
+    EXPECT_EQ(kept.normals, fresh.normals) << "welded " << welded;
+    EXPECT_EQ(kept.uv, fresh.uv) << "welded " << welded;
+    EXPECT_EQ(kept.quads, fresh.quads) << "welded " << welded;
+    // Another resolution has another number of quads: refused, `kept` unchanged.
+    const TessellatedMesh before = kept;
+    EXPECT_THROW(tessellate(mesh, moved, {6, welded, true, false}, kept), std::invalid_argument);
+    EXPECT_EQ(kept.positions, before.positions);
+    EXPECT_EQ(kept.quads, before.quads);
+  }
 }
 
 // Where the welded output keeps the first patch's normal (averages_normals is false), the other

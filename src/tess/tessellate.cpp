@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "layout.hpp"
@@ -18,6 +19,13 @@ namespace stitch {
 void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                 const TessellationOptions& options, TessellatedMesh& out) {
   const TessellationLayout layout(mesh, surface.corners(), options.resolution, options.welded);
+  // Checked before anything in `out` changes.
+  const auto nq = static_cast<size_t>(layout.num_quads());
+  if (!options.index_buffer && out.quads.size() != nq)
+    throw std::invalid_argument(
+        fmt::format("tessellate: kept quads were asked for, but the output holds {} quads where "
+                    "this mesh at resolution {} has {}",
+                    out.quads.size(), options.resolution, nq));
   const auto nv = static_cast<size_t>(layout.num_vertices());
   detail::size_for_overwrite(out.positions, nv);
   detail::size_for_overwrite(out.normals, nv);
@@ -51,12 +59,14 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                       while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
                       }
                     });
-  detail::size_for_overwrite(out.quads, static_cast<size_t>(layout.num_quads()));
-  static_assert(sizeof(std::array<int, 4>) == 4 * sizeof(int));
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_quads(), 4096),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      layout.quads(r.begin(), r.end(), out.quads[r.begin()].data());
-                    });
+  if (options.index_buffer) {
+    detail::size_for_overwrite(out.quads, nq);
+    static_assert(sizeof(std::array<int, 4>) == 4 * sizeof(int));
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_quads(), 4096),
+                      [&](const tbb::blocked_range<std::int64_t>& r) {
+                        layout.quads(r.begin(), r.end(), out.quads[r.begin()].data());
+                      });
+  }
   // The input limits (limits.hpp) should make this impossible; whatever shows or writes these
   // samples (render, compare, the modeler) must not get a NaN.
   if (const std::int64_t bad = first_bad.load(); bad < layout.num_vertices())

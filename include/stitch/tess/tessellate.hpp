@@ -11,6 +11,12 @@ struct TessellationOptions {
   bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
   /// Fill TessellatedMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
   bool sample_attributes = true;
+  /// false, tessellating into a kept TessellatedMesh (the overload below): leave its quads as
+  /// they are. They depend on the mesh's connectivity, the resolution and `welded` alone, so a
+  /// caller that moved only positions (an animation, K-gon controls) since it last tessellated
+  /// into `out` keeps a valid index buffer and skips writing it (16 bytes per quad). Refused
+  /// when `out` holds a different number of quads.
+  bool index_buffer = true;
 };
 
 /// Welded: one watertight, consistently oriented mesh with the input's genus. A sample shared by
