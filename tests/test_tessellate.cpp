@@ -241,8 +241,9 @@ TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
 
 // Kept quads (index_buffer = false): after every vertex of a torus moved (fixed offsets, no
 // randomness), tessellating into the kept output without rewriting its quads gives exactly the
-// fresh tessellation, welded and unwelded, since the quads depend on the connectivity and the
-// resolution alone. A kept output of another size is refused before anything in it changes.
+// fresh tessellation, welded and unwelded, since the quads depend on the connectivity, the
+// resolution and the welding alone. A kept output of another size is refused before anything in
+// it changes.
 TEST(Tessellate, KeptQuadsAfterVertexMovesEqualAFreshTessellation) {
   HalfedgeMesh mesh = make_primitive("torus", {8, 6});
   for (const bool welded : {true, false}) {
@@ -260,6 +261,8 @@ TEST(Tessellate, KeptQuadsAfterVertexMovesEqualAFreshTessellation) {
     // Another resolution has another number of quads: refused, `kept` unchanged.
     const TessellatedMesh before = kept;
     EXPECT_THROW(tessellate(mesh, moved, {6, welded, true, false}, kept), std::invalid_argument);
+    // The other welding has as many quads but not as many vertices: refused too.
+    EXPECT_THROW(tessellate(mesh, moved, {5, !welded, true, false}, kept), std::invalid_argument);
     EXPECT_EQ(kept.positions, before.positions);
     EXPECT_EQ(kept.quads, before.quads);
   }

@@ -19,14 +19,16 @@ namespace stitch {
 void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                 const TessellationOptions& options, TessellatedMesh& out) {
   const TessellationLayout layout(mesh, surface.corners(), options.resolution, options.welded);
-  // Checked before anything in `out` changes.
+  // Checked before anything in `out` changes. The vertex count tells welded from unwelded
+  // output, which have the same number of quads.
   const auto nq = static_cast<size_t>(layout.num_quads());
-  if (!options.index_buffer && out.quads.size() != nq)
-    throw std::invalid_argument(
-        fmt::format("tessellate: kept quads were asked for, but the output holds {} quads where "
-                    "this mesh at resolution {} has {}",
-                    out.quads.size(), options.resolution, nq));
   const auto nv = static_cast<size_t>(layout.num_vertices());
+  if (!options.index_buffer && (out.quads.size() != nq || out.positions.size() != nv))
+    throw std::invalid_argument(fmt::format(
+        "tessellate: kept quads were asked for, but the output holds {} vertices and {} quads "
+        "where this mesh at resolution {} ({}) has {} and {}",
+        out.positions.size(), out.quads.size(), options.resolution,
+        options.welded ? "welded" : "unwelded", nv, nq));
   detail::size_for_overwrite(out.positions, nv);
   detail::size_for_overwrite(out.normals, nv);
   if (options.sample_attributes) {

@@ -15,7 +15,7 @@ struct TessellationOptions {
   /// they are. They depend on the mesh's connectivity, the resolution and `welded` alone, so a
   /// caller that moved only positions (an animation, K-gon controls) since it last tessellated
   /// into `out` keeps a valid index buffer and skips writing it (16 bytes per quad). Refused
-  /// when `out` holds a different number of quads.
+  /// when `out` holds a different number of vertices or quads.
   bool index_buffer = true;
 };
 
