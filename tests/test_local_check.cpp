@@ -57,15 +57,16 @@ std::set<int> indices(const std::vector<Corner>& corners) {
   return out;
 }
 
-// A tube through prism 9's caps twisted by four corner steps folds in eight pairs of triangles
-// at resolution 16 (clean at 24: docs/method.md, item 6). The cube's half twist, its
-// space-diagonal bridge "insert-edge 3@1 5@3", then its bent tunnel "insert-edge 1@1 6@3" and
-// then prism 7's three-step twist "insert-edge 1@1 11@2", which these tests used before, no
-// longer fold.
-constexpr const char* kFoldingEdit = "insert-edge 1@1 14@2";
+// A tube through prism 11's caps twisted by five corner steps folds in two pairs of triangles
+// at resolution 16 (clean at 24: docs/method.md, item 7). The cube's half twist, its
+// space-diagonal bridge "insert-edge 3@1 5@3", then its bent tunnel "insert-edge 1@1 6@3", prism
+// 7's three-step twist "insert-edge 1@1 11@2" and then prism 9's four-step twist "insert-edge 1@1
+// 14@2", which these tests used before, no longer fold.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 17@2";
+constexpr int kFoldingPrism = 11;
 
 TEST(LocalCheck, TheTwistedTubeFoldsWhereTheWholeCheckSaysSo) {
-  HalfedgeMesh mesh = make_prism(9);
+  HalfedgeMesh mesh = make_prism(kFoldingPrism);
   const std::vector<Corner> changed = edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
   const LocalCheckReport local = check_patches(mesh, surface, changed);
@@ -100,10 +101,10 @@ TEST(LocalCheck, TheStraightTubeIsClean) {
 TEST(LocalCheck, FindsAFoldOnlyWhereItsPatchesAreInFocus) {
   // The twisted tube again, but only patches far from its folds in focus: two corners of a side
   // face do not touch the folded patches' triangles.
-  HalfedgeMesh mesh = make_prism(9);
+  HalfedgeMesh mesh = make_prism(kFoldingPrism);
   edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
-  const std::vector<Corner> far = {parse_corner(mesh, "7@8"), parse_corner(mesh, "16@8")};
+  const std::vector<Corner> far = {parse_corner(mesh, "8@9"), parse_corner(mesh, "19@9")};
   const LocalCheckReport r = check_patches(mesh, surface, far);
   EXPECT_EQ(r.changed_patches, 2);
   EXPECT_GT(r.patches, 2);
@@ -214,18 +215,18 @@ TEST(LocalCheck, CornerNamesNumberAsTheFileDoes) {
 TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
   testing::TempFolder dir;
   write_mesh(dir.file("cube.obj"), make_cube());
-  write_mesh(dir.file("prism9.obj"), make_prism(9));
+  write_mesh(dir.file("prism.obj"), make_prism(kFoldingPrism));
   auto r = testing::stitch_cli(
-      dir, "edit prism9.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("stitch: warning: the surface folds at patches "), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("(corners 2@1, 13@1 of twisted.obj)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(corners 2@1, 16@1 of twisted.obj)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("see stitch check-surface"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("twisted.obj")));
 
   r = testing::stitch_cli(
-      dir, "edit prism9.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
+      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("folds"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("strict.obj")));
@@ -239,15 +240,15 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
       << r.out;
 
   // Without --check nothing is checked.
-  r = testing::stitch_cli(
-      dir, "edit prism9.obj --op \"" + std::string(kFoldingEdit) + "\" -o plain.obj");
+  r = testing::stitch_cli(dir,
+                          "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o plain.obj");
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(r.err.empty()) << r.err;
 
   // The patch numbers are those of the written file read back: the whole check of its surface
   // finds the folds on those patches.
   r = testing::stitch_cli(
-      dir, "edit prism9.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
   const size_t from = r.err.find("patches ") + 8, to = r.err.find(" (corners");
   ASSERT_LT(from, to) << r.err;
   std::set<int> numbers;

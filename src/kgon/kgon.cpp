@@ -227,6 +227,7 @@ void place_corner_points(const HalfedgeMesh& m, KgonSet& set, Face f, const TwoO
   if (m.is_hole(f)) return;
   if (openings) {
     detail::set_opening_corner_points(m, *openings, set.corner_point);
+    detail::slide_acute_sides(m, *openings, set.corner_point);
     return;
   }
   const auto& loop = set.face[f.idx].corners;

@@ -96,6 +96,14 @@ std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& m, Face f) {
   return best;
 }
 
+namespace {
+
+/// How far along the rim's polygon of corner points the bridge vertex's point is split towards
+/// the points on either side (set_opening_corner_points).
+constexpr double kSplit = 0.6;
+
+}  // namespace
+
 void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& openings,
                                std::vector<Vec3>& corner_point) {
   // An opening's corners run from its bridge vertex around the rim and back to it: n + 1 corners
@@ -111,7 +119,6 @@ void set_opening_corner_points(const HalfedgeMesh& m, const TwoOpenings& opening
   // clean and open along the axis (measured before place_on_twisted_tube stretched their K-gon); at
   // 0.5 the cube's half twists are clean but off the axis, at 0.7 three of prism 3's tubes are, and
   // at 0.2 or less the twisted tubes fold.
-  constexpr double kSplit = 0.6;
   for (const auto* corners : {&openings.first, &openings.second}) {
     const size_t n = corners->size() - 1;
     std::vector<Vec3> rim;
@@ -209,6 +216,10 @@ std::optional<Tube> tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
 
 /// A twist smaller than this is no twist: the bridge runs along the wall.
 constexpr double kNoTwist = 1e-6;
+
+/// The face K-gon's width across the helix on a twisted tube whose corner points
+/// slide_acute_sides moved, as a part of item 6's (place_on_twisted_tube).
+constexpr double kSlidWidth = 2.0 / 3;
 
 /// A regular K-gon over the face's loop in the plane (centre; e1, e2), e1 pointing from the
 /// first opening towards the second, turned so that the middle of the first opening's corners
@@ -337,6 +348,11 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
     const double t = std::clamp((overshoot - 40 * degree) / (5 * degree), 0.0, 1.0);
     across = std::max(0.8 + t, spread > 1 ? across : 0.0);
     spread = std::max(spread, 1.8);
+    // slide_acute_sides moves these rims' corner points on the acute sides away from the bridge,
+    // and the fan then reaches less far around: two thirds of that width (method.md, item 7;
+    // prism 10's half twists are clean and open at resolution 16 with 0.667 and 0.7 of it, and
+    // fold 2 pairs each with 0.6 and 0.633, 4 with 0.733 and 6 with the full width).
+    across *= kSlidWidth;
   }
   return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point, spread,
                    across);
@@ -732,6 +748,61 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   if (far_a->tangent.dot(-e2) <= 0) return std::nullopt;
 
   return regular_tube_kgon(m.face_loop(f), openings, centre, normal, e1, e2, corner_point);
+}
+
+void slide_acute_sides(const HalfedgeMesh& m, const TwoOpenings& openings,
+                       std::vector<Vec3>& corner_point) {
+  // Only where place_tube_kgon puts the face K-gon on a twisted cylinder, and only for rims of
+  // more than six corners (place_on_twisted_tube's item 6).
+  for (Corner c : openings.first)
+    if (on_both_rims(m, openings, m.origin(c))) return;
+  if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
+    return;
+  const auto tube = tube_of(m, openings);
+  if (!tube || std::abs(tube->twist) < kNoTwist) return;
+  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
+  if (rim_edges <= 2 * 6) return;
+  // The twist in corner steps (the mean step of the two rims), and the slide: half of it, in
+  // corner positions, rounded up.
+  const double corners_per_rim = static_cast<double>(rim_edges) / 2;
+  const long steps = std::lround(std::abs(tube->twist) * corners_per_rim / (2 * std::numbers::pi));
+  const double slide = static_cast<double>((steps + 1) / 2);
+  if (!(slide > 0)) return;
+  for (const auto* corners : {&openings.first, &openings.second}) {
+    const bool first = corners == &openings.first;
+    const size_t n = corners->size() - 1;
+    const double rim_size = static_cast<double>(n);
+    // The rim's polygon of Doo-Sabin points (the bridge vertex's once), walked by position: the
+    // point of corner i at i, the bridge vertex's split points at kSplit and n - kSplit.
+    const auto w = doo_sabin_shrink(rim_points(m, *corners));
+    const auto at = [&](double t) {
+      const double f = std::floor(t);
+      const size_t i = static_cast<size_t>(f) % n;
+      return Vec3(w[i] + (t - f) * (w[(i + 1) % n] - w[i]));
+    };
+    // The acute side: where the helix leans over the rim, the way the bridge turns at the first
+    // rim and back from it at the second. Whether the rim's corners run that way from the
+    // bridge: the angle of the next corner's point around the tube from the bridge vertex.
+    const double bridge = first ? 0 : tube->twist;
+    const double lean = (tube->twist > 0) == first ? 1 : -1;
+    const Vec3 d = corner_point[(*corners)[1].idx] - tube->base;
+    const double next =
+        std::remainder(std::atan2(d.dot(tube->y0), d.dot(tube->x0)) - bridge, 2 * std::numbers::pi);
+    const bool forward = next * lean > 0;
+    // From the bridge to the far point (half the rim), corner positions t move to
+    // t + k (1 - (t / half)^1.5): by almost k next to the bridge, tapering off to none at the
+    // far point, and in order while k stays below two thirds of half the rim. The slide, at most
+    // a quarter of the mean rim plus a half, is at most 0.6 of half of it for more than six
+    // corners; the cap only matters for rims of different sizes.
+    const double half = rim_size / 2;
+    const double k = std::min(slide, 0.65 * half);
+    for (size_t j = 0; j <= n; ++j) {
+      const double t = j == 0 ? kSplit : static_cast<double>(j);
+      if (t >= half) break;
+      const double u = t + k * (1 - std::pow(t / half, 1.5));
+      corner_point[(*corners)[forward ? j : n - j].idx] = at(forward ? u : rim_size - u);
+    }
+  }
 }
 
 }  // namespace stitch::detail

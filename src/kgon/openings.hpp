@@ -8,7 +8,8 @@
 // pinched shut there. The "openings" construction instead
 //  - takes each corner point from the Doo-Sabin rule over its own opening's rim (the bridge
 //    vertex's point split in two along the rim), so the rims keep the shape they had before
-//    the merge, and
+//    the merge (on a twisted tube whose rims have more than six corners, those on the side
+//    the bridge leans over slid away from it), and
 //  - puts the K-gon on the tube's wall opposite the bridge, halfway between the openings, in
 //    the wall's tangent plane, as a regular K-gon whose corners of each opening face that
 //    opening (on a twisted tube, turned along the bridge's helix and cut across to the tube's
@@ -33,6 +34,12 @@ std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
 /// point split in two along the rim for its two corners (stored by corner).
 void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& openings,
                                std::vector<Vec3>& corner_point);
+
+/// On a twisted cylinder whose rims have more than six corners, slides the corner points on each
+/// rim's acute side (where the bridge's helix leans over the rim) away from the bridge along the
+/// rim (docs/method.md, twisted tubes, item 7). Nothing for any other tube.
+void slide_acute_sides(const HalfedgeMesh& mesh, const TwoOpenings& openings,
+                       std::vector<Vec3>& corner_point);
 
 /// The face K-gon placed on the tube wall (corners in face-loop order starting at
 /// halfedge(f)), or nothing when the two openings give no usable tube direction.

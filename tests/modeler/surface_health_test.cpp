@@ -25,15 +25,16 @@ std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method meth
   return check_patches(mesh, Surface(mesh, method), mesh.patch_corners()).problem_corners;
 }
 
-// A tube through prism 9's caps twisted by four corner steps folds in eight pairs of triangles at
-// resolution 16 (clean at 24: docs/method.md, item 6). The cube's half twist "insert-edge 1@1
+// A tube through prism 11's caps twisted by five corner steps folds in two pairs of triangles at
+// resolution 16 (clean at 24: docs/method.md, item 7). The cube's half twist "insert-edge 1@1
 // 7@2", its space-diagonal bridge "insert-edge 3@1 5@3", then its bent tunnel "insert-edge 1@1
-// 6@3" and then prism 7's three-step twist "insert-edge 1@1 11@2", which these tests used before,
-// no longer fold.
-constexpr const char* kFoldingEdit = "insert-edge 1@1 14@2";
+// 6@3", prism 7's three-step twist "insert-edge 1@1 11@2" and then prism 9's four-step twist
+// "insert-edge 1@1 14@2", which these tests used before, no longer fold.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 17@2";
+constexpr int kFoldingPrism = 11;
 
 TEST(SurfaceHealth, TheTwistedTubeIsReportedAndUndoClearsIt) {
-  Session s(make_prism(9));
+  Session s(make_prism(kFoldingPrism));
   EXPECT_TRUE(s.surface_problems().empty());
   Printed printed;
   const ScriptResult r = run_script_line(s, kFoldingEdit, printed.hooks());
@@ -48,7 +49,7 @@ TEST(SurfaceHealth, TheTwistedTubeIsReportedAndUndoClearsIt) {
   ASSERT_EQ(printed.lines.size(), 2u);
   EXPECT_EQ(printed.lines[1].rfind("warning: surface folds at 2 patches (corners ", 0), 0u)
       << printed.lines[1];
-  EXPECT_NE(printed.lines[1].find("(corners 2@1, 13@1;"), std::string::npos) << printed.lines[1];
+  EXPECT_NE(printed.lines[1].find("(corners 2@1, 16@1;"), std::string::npos) << printed.lines[1];
 
   ASSERT_FALSE(run_script(s, {"undo"}, {}));
   EXPECT_TRUE(s.surface_problems().empty());
@@ -106,7 +107,7 @@ TEST(SurfaceHealth, CheckCommandLooksAtTheWholeSurface) {
 }
 
 TEST(SurfaceHealth, MovesRecheckOnlyTheProblemsFound) {
-  Session s(make_prism(9));
+  Session s(make_prism(kFoldingPrism));
   ASSERT_FALSE(run_script(s, {kFoldingEdit}, {}));
   const std::vector<Corner> before = s.surface_problems().corners;
   ASSERT_FALSE(before.empty());
