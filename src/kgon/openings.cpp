@@ -278,24 +278,35 @@ Kgon wall_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings, c
   return g;
 }
 
-/// How far around a twisted tube the face's fan has to reach: the largest angle about the axis
-/// from the face K-gon's centre (opposite the middle of the helix) to the middle of a rim's
-/// edge, measured on the face unrolled (between the helix and its copy a full turn on).
-double longest_spoke(const HalfedgeMesh& m, const Tube& tube, const TwoOpenings& openings) {
-  const double centre = std::numbers::pi + tube.twist / 2;
+/// How far around a tube the face's fan has to reach: the largest angle about the tube from the
+/// face K-gon's centre (opposite the middle of the bridge) to the middle of a rim's edge,
+/// measured on the face unrolled (between the bridge and its copy a full turn on). `angle_of`
+/// gives a point's angle around the tube from the first rim's bridge vertex; the second's is at
+/// `twist`.
+template <class AngleOf>
+double longest_spoke(const HalfedgeMesh& m, double twist, const TwoOpenings& openings,
+                     const AngleOf& angle_of) {
+  const double centre = std::numbers::pi + twist / 2;
   double longest = 0;
   for (const auto* corners : {&openings.first, &openings.second}) {
-    const double bridge = corners == &openings.first ? 0 : tube.twist;
+    const double bridge = corners == &openings.first ? 0 : twist;
     for (size_t i = 0; i + 1 < corners->size(); ++i) {
       const Vec3 mid =
           0.5 * (m.position(m.origin((*corners)[i])) + m.position(m.origin((*corners)[i + 1])));
-      const Vec3 d = mid - tube.base;
-      double around = std::atan2(d.dot(tube.y0), d.dot(tube.x0)) - bridge;
+      double around = angle_of(mid) - bridge;
       around -= 2 * std::numbers::pi * std::floor(around / (2 * std::numbers::pi));
       longest = std::max(longest, std::abs(bridge + around - centre));
     }
   }
   return longest;
+}
+
+/// longest_spoke on a twisted cylinder (angles about its axis).
+double longest_spoke(const HalfedgeMesh& m, const Tube& tube, const TwoOpenings& openings) {
+  return longest_spoke(m, tube.twist, openings, [&](const Vec3& p) {
+    const Vec3 d = p - tube.base;
+    return std::atan2(d.dot(tube.y0), d.dot(tube.x0));
+  });
 }
 
 /// The face K-gon of a twisted tube: wall_kgon on the wall opposite the middle of the bridge's
@@ -540,23 +551,10 @@ std::optional<BentTube> bent_tube_of(const HalfedgeMesh& m, const TwoOpenings& o
   return t;
 }
 
-/// How far around a bent tube the face's fan has to reach: longest_spoke with the bent tube's
-/// angles, from the face K-gon's centre (opposite the middle of the bridge) to the middle of a
-/// rim's edge, measured on the face unrolled.
+/// longest_spoke on a bent tube (angles about its arc).
 double longest_spoke(const HalfedgeMesh& m, const BentTube& tube, const TwoOpenings& openings) {
-  const double centre = std::numbers::pi + tube.twist / 2;
-  double longest = 0;
-  for (const auto* corners : {&openings.first, &openings.second}) {
-    const double bridge = corners == &openings.first ? 0 : tube.twist;
-    for (size_t i = 0; i + 1 < corners->size(); ++i) {
-      const Vec3 mid =
-          0.5 * (m.position(m.origin((*corners)[i])) + m.position(m.origin((*corners)[i + 1])));
-      double around = tube.coords(mid).angle - tube.angle_a - bridge;
-      around -= 2 * std::numbers::pi * std::floor(around / (2 * std::numbers::pi));
-      longest = std::max(longest, std::abs(bridge + around - centre));
-    }
-  }
-  return longest;
+  return longest_spoke(m, tube.twist, openings,
+                       [&](const Vec3& p) { return tube.coords(p).angle - tube.angle_a; });
 }
 
 /// Which way the face K-gon of a bent tube runs: along the curve the bridge stands for, carried
