@@ -181,17 +181,17 @@ namespace stitch {
 namespace {
 
 // --check warns about folds and self-intersections of what was written, and stays quiet on a
-// clean surface (issue 13, item 4). A tube through prism 11's caps twisted by five corner steps
-// folds in two pairs of triangles at resolution 16 (docs/method.md, item 7; prism 9's four-step
-// twist, used here before, is clean since item 7).
+// clean surface (issue 13, item 4). A tube through prism 14's caps twisted by half a turn
+// folds in eight pairs of triangles at resolution 16 (docs/method.md, item 8; prism 9's four-step
+// twist, used here before, is clean since item 7, and prism 11's five-step twist since item 8).
 TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
   testing::TempFolder folder;
   auto r = testing::stitch_cli(folder, "primitive cube -o straight-in.obj");
   ASSERT_EQ(r.status, 0) << r.err;
-  r = testing::stitch_cli(folder, "primitive prism 11 -o twisted-in.obj");
+  r = testing::stitch_cli(folder, "primitive prism 14 -o twisted-in.obj");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const std::string name : {"straight", "twisted"}) {
-    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 17@2";
+    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 22@2";
     r = testing::stitch_cli(folder,
                             "edit " + name + "-in.obj --op \"" + op + "\" -o " + name + ".obj");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -199,7 +199,7 @@ TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.find("not clean") != std::string::npos, name == "twisted") << r.err;
     if (name == "twisted") {
-      EXPECT_NE(r.err.find("2 folded pairs"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("8 folded pairs"), std::string::npos) << r.err;
     }
   }
 }

@@ -57,13 +57,14 @@ std::set<int> indices(const std::vector<Corner>& corners) {
   return out;
 }
 
-// A tube through prism 11's caps twisted by five corner steps folds in two pairs of triangles
-// at resolution 16 (clean at 24: docs/method.md, item 7). The cube's half twist, its
+// A tube through prism 14's caps twisted by half a turn folds in eight pairs of triangles at
+// resolution 16 (clean at 24: docs/method.md, item 8). The cube's half twist, its
 // space-diagonal bridge "insert-edge 3@1 5@3", then its bent tunnel "insert-edge 1@1 6@3", prism
-// 7's three-step twist "insert-edge 1@1 11@2" and then prism 9's four-step twist "insert-edge 1@1
-// 14@2", which these tests used before, no longer fold.
-constexpr const char* kFoldingEdit = "insert-edge 1@1 17@2";
-constexpr int kFoldingPrism = 11;
+// 7's three-step twist "insert-edge 1@1 11@2", prism 9's four-step twist "insert-edge 1@1 14@2"
+// and then prism 11's five-step twist "insert-edge 1@1 17@2", which these tests used before, no
+// longer fold.
+constexpr const char* kFoldingEdit = "insert-edge 1@1 22@2";
+constexpr int kFoldingPrism = 14;
 
 TEST(LocalCheck, TheTwistedTubeFoldsWhereTheWholeCheckSaysSo) {
   HalfedgeMesh mesh = make_prism(kFoldingPrism);
@@ -104,7 +105,7 @@ TEST(LocalCheck, FindsAFoldOnlyWhereItsPatchesAreInFocus) {
   HalfedgeMesh mesh = make_prism(kFoldingPrism);
   edit(mesh, kFoldingEdit);
   const Surface surface(mesh, Method::mdc);
-  const std::vector<Corner> far = {parse_corner(mesh, "8@9"), parse_corner(mesh, "19@9")};
+  const std::vector<Corner> far = {parse_corner(mesh, "10@12"), parse_corner(mesh, "25@12")};
   const LocalCheckReport r = check_patches(mesh, surface, far);
   EXPECT_EQ(r.changed_patches, 2);
   EXPECT_GT(r.patches, 2);
@@ -221,7 +222,9 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("stitch: warning: the surface folds at patches "), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("(corners 2@1, 16@1 of twisted.obj)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(corners 2@1, 3@1, 4@1, 5@1, 18@1, 19@1, 20@1, 21@1 of twisted.obj)"),
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("see stitch check-surface"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("twisted.obj")));
 

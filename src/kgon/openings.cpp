@@ -219,16 +219,26 @@ constexpr double kNoTwist = 1e-6;
 
 /// The face K-gon's width across the helix on a twisted tube whose corner points
 /// slide_acute_sides moved, as a part of item 6's (place_on_twisted_tube).
-constexpr double kSlidWidth = 2.0 / 3;
+constexpr double kSlidWidth = 0.5;
+
+/// How far that face K-gon is turned in its plane the way of the twist on rims of twelve corners
+/// and more (place_on_twisted_tube; none up to eight corners, linearly in between). Fitted on
+/// prisms 8 to 13 (method.md, item 8).
+constexpr double kTwistTurn = 12 * std::numbers::pi / 180;
+
+/// How many times section 2's size the face K-gon of a straight tube whose rims have more than
+/// six corners reaches along the tube (place_tube_kgon), as item 6 stretches a twisted one.
+constexpr double kStraightAlong = 1.8;
 
 /// A regular K-gon over the face's loop in the plane (centre; e1, e2), e1 pointing from the
 /// first opening towards the second, turned so that the middle of the first opening's corners
 /// faces that opening. Size: half the mean distance to the corner points, as section 2 gives a
 /// regular polygon (each Doo-Sabin shrink halves its first harmonic: corner points at 1/2 of the
-/// vertices' radius, K-gon points at 1/4).
+/// vertices' radius, K-gon points at 1/4). `turn` turns it further about `normal` (radians,
+/// counter-clockwise from e1 towards e2).
 Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings,
                        const Vec3& centre, const Vec3& normal, const Vec3& e1, const Vec3& e2,
-                       const std::vector<Vec3>& corner_point) {
+                       const std::vector<Vec3>& corner_point, double turn = 0) {
   const int k = static_cast<int>(loop.size());
   double s = 0, c = 0;
   for (int i = 0; i < k; ++i)
@@ -237,7 +247,7 @@ Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& ope
         s += std::sin(2 * std::numbers::pi * i / k);
         c += std::cos(2 * std::numbers::pi * i / k);
       }
-  const double phase = std::numbers::pi - std::atan2(s, c);
+  const double phase = std::numbers::pi - std::atan2(s, c) + turn;
   double radius = 0;
   for (Corner cn : loop) radius += (corner_point[cn.idx] - centre).norm();
   radius *= 0.5 / k;
@@ -260,14 +270,15 @@ Kgon regular_tube_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& ope
 /// sqrt(r^2 + d^2) - r off the wall at a distance d to the side, so K-gon points farther out pull
 /// the patches off the wall (the twisted tubes of a triangular prism, K-gon radius 1.4 r, folded).
 /// The K-gon is affinely regular and planar. `along_scale` and `across_scale` stretch it further
-/// for tubes whose fan has to reach far around (place_on_twisted_tube).
+/// for tubes whose fan has to reach far around, and `turn` turns the regular K-gon before that
+/// stretch (place_on_twisted_tube).
 Kgon wall_kgon(const std::vector<Halfedge>& loop, const TwoOpenings& openings, const Vec3& centre,
                const Vec3& normal, const Vec3& along, double radius,
                const std::vector<Vec3>& corner_point, double along_scale = 1,
-               double across_scale = 1) {
+               double across_scale = 1, double turn = 0) {
   const Vec3 e1 = (along - along.dot(normal) * normal).normalized();
   const Vec3 e2 = normal.cross(e1);
-  Kgon g = regular_tube_kgon(loop, openings, centre, normal, e1, e2, corner_point);
+  Kgon g = regular_tube_kgon(loop, openings, centre, normal, e1, e2, corner_point, turn);
   const double extent = (g.points[0] - centre).norm();
   const double across = std::min(extent, radius) * across_scale;
   if (along_scale != 1 || across != extent)
@@ -354,19 +365,31 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   // linearly in between. Prisms 3 to 6 keep the rule above: 1.8 times along and 1.8 r across
   // fold prism 3's one-step twists, prism 4's half twists and prism 5's two-step twists.
   const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
+  double turn = 0;
   if (rim_edges > 2 * 6) {
     constexpr double degree = std::numbers::pi / 180;
     const double t = std::clamp((overshoot - 40 * degree) / (5 * degree), 0.0, 1.0);
     across = std::max(0.8 + t, spread > 1 ? across : 0.0);
     spread = std::max(spread, 1.8);
     // slide_acute_sides moves these rims' corner points on the acute sides away from the bridge,
-    // and the fan then reaches less far around: two thirds of that width (method.md, item 7;
-    // prism 10's half twists are clean and open at resolution 16 with 0.667 and 0.7 of it, and
-    // fold 2 pairs each with 0.6 and 0.633, 4 with 0.733 and 6 with the full width).
+    // and the fan then reaches less far around: half that width (method.md, items 7 and 8;
+    // without the turn below, prism 10's half twists were clean and open at resolution 16 with
+    // 0.667 and 0.7 of it, and folded 2 pairs each with 0.6 and 0.633, 4 with 0.733, 6 with the
+    // full width). Rims of more than eight corners want the K-gon turned in its plane the way of
+    // the twist as well (method.md, item 8): without it the patches of the first one or two
+    // corners past the bridge on one side of each rim fold next to the face's centre (prism 11's
+    // and 12's five-step twists, 12's half twists, at resolution 16). The turn grows from none at
+    // eight corners to kTwistTurn at twelve (prism 8's half twists fold from 10 degrees on), and
+    // is held there beyond. Measured on every pair of prisms 7 to 12: clean and open with 12
+    // degrees at 0.5 of the width and with 14 degrees at 0.55 and 0.6; 14 degrees at 0.633 folds
+    // prism 12's five-step twists, 12 and 16 degrees at 0.6 its half twists. 12 degrees at 0.5
+    // also cleans prism 13 (14 degrees at 0.5 or 0.6 does not). Both fitted, not derived.
     across *= kSlidWidth;
+    const double rim_corners = static_cast<double>(rim_edges) / 2;
+    turn = kTwistTurn * std::clamp((rim_corners - 8) / 4, 0.0, 1.0) * (tube.twist > 0 ? 1 : -1);
   }
   return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point, spread,
-                   across);
+                   across, turn);
 }
 
 /// The helix a twisted tube's bridge stands for: from the first rim's bridge vertex (angle 0)
@@ -745,7 +768,17 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // does at the far point; otherwise the tube is too twisted for this placement.
   if (far_a->tangent.dot(-e2) <= 0) return std::nullopt;
 
-  return regular_tube_kgon(m.face_loop(f), openings, centre, normal, e1, e2, corner_point);
+  Kgon g = regular_tube_kgon(m.face_loop(f), openings, centre, normal, e1, e2, corner_point);
+  // Rims of more than six corners: the K-gon kStraightAlong times as long along the tube, as
+  // item 6 stretches a twisted tube's (method.md, item 8). At section 2's size, 6 of prism 12's
+  // 12 straight tubes folded 6 pairs of triangles each at resolution 16, next to the face's
+  // centre; prisms 7 to 12's straight tubes are all clean and open from 1.3 to 2.4 times
+  // (1.2: 6 of prism 12's fold; prisms 3 to 6, which keep section 2's size, fold at 1.6 and
+  // more). Fitted, not derived.
+  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
+  if (rim_edges > 2 * 6)
+    for (Vec3& p : g.points) p += (kStraightAlong - 1) * (p - centre).dot(e1) * e1;
+  return g;
 }
 
 void slide_acute_sides(const HalfedgeMesh& m, const TwoOpenings& openings,
