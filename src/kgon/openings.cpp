@@ -217,6 +217,12 @@ std::optional<Tube> tube_of(const HalfedgeMesh& m, const TwoOpenings& o) {
 /// A twist smaller than this is no twist: the bridge runs along the wall.
 constexpr double kNoTwist = 1e-6;
 
+/// The mean number of corners of the two openings' rims (each opening's corners visit its bridge
+/// vertex twice). Items 6 to 8 (method.md) apply to rims of more than six.
+double rim_corners(const TwoOpenings& o) {
+  return static_cast<double>(o.first.size() + o.second.size() - 2) / 2;
+}
+
 /// The face K-gon's width across the helix on a twisted tube whose corner points
 /// slide_acute_sides moved, as a part of item 6's (place_on_twisted_tube).
 constexpr double kSlidWidth = 0.5;
@@ -364,9 +370,9 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
   // three-step twists, 45 degrees, at 1.7 to 1.9 r; prism 7's, 51.4 degrees, at 1.7 to 2.0 r),
   // linearly in between. Prisms 3 to 6 keep the rule above: 1.8 times along and 1.8 r across
   // fold prism 3's one-step twists, prism 4's half twists and prism 5's two-step twists.
-  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
+  const double corners = rim_corners(openings);
   double turn = 0;
-  if (rim_edges > 2 * 6) {
+  if (corners > 6) {
     constexpr double degree = std::numbers::pi / 180;
     const double t = std::clamp((overshoot - 40 * degree) / (5 * degree), 0.0, 1.0);
     across = std::max(0.8 + t, spread > 1 ? across : 0.0);
@@ -385,8 +391,7 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
     // prism 12's five-step twists, 12 and 16 degrees at 0.6 its half twists. 12 degrees at 0.5
     // also cleans prism 13 (14 degrees at 0.5 or 0.6 does not). Both fitted, not derived.
     across *= kSlidWidth;
-    const double rim_corners = static_cast<double>(rim_edges) / 2;
-    turn = kTwistTurn * std::clamp((rim_corners - 8) / 4, 0.0, 1.0) * (tube.twist > 0 ? 1 : -1);
+    turn = kTwistTurn * std::clamp((corners - 8) / 4, 0.0, 1.0) * (tube.twist > 0 ? 1 : -1);
   }
   return wall_kgon(loop, openings, centre, tube.normal(angle), along, radius, corner_point, spread,
                    across, turn);
@@ -656,6 +661,14 @@ bool on_both_rims(const HalfedgeMesh& m, const TwoOpenings& o, Vertex v) {
   return visits(o.first) && visits(o.second);
 }
 
+/// Whether the two openings' rims share a vertex: the merged faces shared an edge, and the tube
+/// is pinched along it.
+bool pinched(const HalfedgeMesh& m, const TwoOpenings& o) {
+  for (Corner c : o.first)
+    if (on_both_rims(m, o, m.origin(c))) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<Corner> edge_kgon_corners(const HalfedgeMesh& m, Edge e) {
@@ -716,8 +729,7 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // Two faces that shared an edge: the tube is pinched along that edge. The placements below
   // fold the cube's quarter-turn bridges there; section 2's K-gon over the rims' own corner
   // points keeps them clean (docs/method.md).
-  for (Corner c : openings.first)
-    if (on_both_rims(m, openings, m.origin(c))) return std::nullopt;
+  if (pinched(m, openings)) return std::nullopt;
   if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist) {
     // A fan that reaches far past the half turn (longest_spoke on the bent tube) wants the face
     // K-gon along the tube, 1.8 times section 2's size along it (method.md, "Fans far past the
@@ -775,8 +787,7 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // centre; prisms 7 to 12's straight tubes are all clean and open from 1.3 to 2.4 times
   // (1.2: 6 of prism 12's fold; prisms 3 to 6, which keep section 2's size, fold at 1.6 and
   // more). Fitted, not derived.
-  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
-  if (rim_edges > 2 * 6)
+  if (rim_corners(openings) > 6)
     for (Vec3& p : g.points) p += (kStraightAlong - 1) * (p - centre).dot(e1) * e1;
   return g;
 }
@@ -785,17 +796,15 @@ void slide_acute_sides(const HalfedgeMesh& m, const TwoOpenings& openings,
                        std::vector<Vec3>& corner_point) {
   // Only where place_tube_kgon puts the face K-gon on a twisted cylinder, and only for rims of
   // more than six corners (place_on_twisted_tube's item 6).
-  for (Corner c : openings.first)
-    if (on_both_rims(m, openings, m.origin(c))) return;
+  if (pinched(m, openings)) return;
   if (const auto bent = bent_tube_of(m, openings); bent && std::abs(bent->twist) >= kNoTwist)
     return;
   const auto tube = tube_of(m, openings);
   if (!tube || std::abs(tube->twist) < kNoTwist) return;
-  const size_t rim_edges = openings.first.size() + openings.second.size() - 2;  // both rims
-  if (rim_edges <= 2 * 6) return;
+  const double corners_per_rim = rim_corners(openings);
+  if (corners_per_rim <= 6) return;
   // The twist in corner steps (the mean step of the two rims), and the slide: half of it, in
   // corner positions, rounded up.
-  const double corners_per_rim = static_cast<double>(rim_edges) / 2;
   const long steps = std::lround(std::abs(tube->twist) * corners_per_rim / (2 * std::numbers::pi));
   const double slide = static_cast<double>((steps + 1) / 2);
   if (!(slide > 0)) return;
