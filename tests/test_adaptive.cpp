@@ -79,14 +79,6 @@ void expect_consistent_manifold(const AdaptiveMesh& m, bool closed) {
   EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0);
 }
 
-TriangleSoup soup(const AdaptiveMesh& m) {
-  TriangleSoup s;
-  s.positions = m.positions;
-  s.triangles = m.triangles;
-  for (size_t t = 0; t < m.triangles.size(); ++t) s.source.push_back(static_cast<int>(t));
-  return s;
-}
-
 TEST(Adaptive, CubeHoleIsWatertightOnTheSurfaceAndCheaperThanResolution16) {
   const HalfedgeMesh mesh = read_mesh(test::example_path("cube_hole.obj"));
   for (const Method method : {Method::mdc, Method::asc, Method::cc}) {
@@ -111,7 +103,7 @@ TEST(Adaptive, CubeHoleIsWatertightOnTheSurfaceAndCheaperThanResolution16) {
     EXPECT_GE(m.min_rate, 1);
     EXPECT_LE(m.max_rate, 64);
     EXPECT_LT(m.min_rate, m.max_rate) << "the cube's flat and curved parts should differ";
-    const TriangleSoup s = soup(m);
+    const TriangleSoup s = triangulate(m);
     const SurfaceCheckReport report = check_surface(s);
     EXPECT_EQ(report.folds, 0) << report.describe(s);
     EXPECT_TRUE(report.clean()) << report.describe(s);

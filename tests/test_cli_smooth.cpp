@@ -202,6 +202,16 @@ TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
       EXPECT_NE(r.err.find("8 folded pairs"), std::string::npos) << r.err;
     }
   }
+  // The adaptive triangles are checked too: the same tube is clean at the default tolerance
+  // (its folds at resolution 16 are the grid's, method.md, "Beyond prism 13") and folds with
+  // the coarser triangles of 1e-2 (before, --check with --tolerance checked nothing).
+  r = testing::stitch_cli(folder, "smooth twisted.obj -o a.obj --tolerance 1e-3 --check");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("not clean"), std::string::npos) << r.err;
+  r = testing::stitch_cli(folder, "smooth twisted.obj -o a.obj --tolerance 1e-2 --check");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("not clean at tolerance 0.01"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("folded pairs"), std::string::npos) << r.err;
 }
 
 }  // namespace

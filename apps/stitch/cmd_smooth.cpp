@@ -48,6 +48,18 @@ std::int64_t available_memory() {
   return 0;
 }
 
+/// --check: the triangles as written, checked whole (as stitch check-surface would check the
+/// file); a warning, not a failure: the file is what was asked for. `at` names the tessellation.
+void warn_if_not_clean(StageReporter& stage, const std::string& out, const TriangleSoup& tris,
+                       const std::string& at) {
+  stage.begin("checking the surface");
+  const SurfaceCheckReport r = check_surface(tris);
+  stage.end();
+  if (!r.clean())
+    fmt::print(stderr, "stitch: warning: {}: the surface is not clean at {}:\n{}\n", out, at,
+               r.describe(tris));
+}
+
 /// Refuses up front, with the estimate and the limit, a run that would not fit in memory.
 void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh) {
   const std::int64_t limit =
@@ -144,6 +156,9 @@ void run_smooth(const SmoothArgs& a) {
     file.single_precision = a.single_precision;
     write_adaptive_mesh(a.out, adaptive, file);
     stage.end();
+    if (a.check)
+      warn_if_not_clean(stage, a.out, triangulate(adaptive),
+                        fmt::format("tolerance {}", a.exact.tolerance));
     fmt::print(
         "wrote {} ({} vertices, {} triangles, method {}, tolerance {}: {} to {} segments per "
         "patch side)\n",
@@ -172,15 +187,10 @@ void run_smooth(const SmoothArgs& a) {
   }
   stage.end();
   if (a.check) {
-    // The same tessellation as written, checked whole (as stitch check-surface would check the
-    // file); a warning, not a failure: the file is what was asked for.
-    stage.begin("checking the surface");
-    const TriangleSoup tris = triangulate(tessellate(mesh, surface, {a.resolution, true, false}));
-    const SurfaceCheckReport r = check_surface(tris);
-    stage.end();
-    if (!r.clean())
-      fmt::print(stderr, "stitch: warning: {}: the surface is not clean at resolution {}:\n{}\n",
-                 a.out, a.resolution, r.describe(tris));
+    // The same tessellation as written (the streamed writer does not keep it).
+    warn_if_not_clean(stage, a.out,
+                      triangulate(tessellate(mesh, surface, {a.resolution, true, false})),
+                      fmt::format("resolution {}", a.resolution));
   }
   fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {}{})\n", a.out,
              written.vertices, written.quads, static_cast<int>(mesh.patch_corners().size()),
@@ -223,10 +233,11 @@ void add_smooth_command(CLI::App& app) {
                   "refuse up front a run estimated to need more memory than this many GB "
                   "(default: the memory available)")
       ->check(CLI::Range(0.0, 1e6));
-  cmd->add_flag("--check", args->check,
-                "after writing, check the surface at the written resolution for folded, "
-                "self-intersecting and degenerate triangles (as stitch check-surface does) and "
-                "warn on stderr; the exit status stays 0");
+  cmd->add_flag(
+      "--check", args->check,
+      "after writing, check the surface at the written resolution or tolerance for folded, "
+      "self-intersecting and degenerate triangles (as stitch check-surface does) and "
+      "warn on stderr; the exit status stays 0");
   add_kgon_options(cmd, args->kgon, &args->in);
   add_exact_output_options(cmd, args->exact);
   add_progress_option(cmd, args->progress);

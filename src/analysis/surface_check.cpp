@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -101,6 +102,15 @@ TriangleSoup triangulate(const TessellatedMesh& surface) {
     add_triangle(soup, v[0], v[1], v[2], q);
     add_triangle(soup, v[0], v[2], v[3], q);
   }
+  return soup;
+}
+
+TriangleSoup triangulate(const AdaptiveMesh& surface) {
+  TriangleSoup soup;
+  soup.positions = surface.positions;
+  soup.triangles = surface.triangles;
+  soup.source.resize(surface.triangles.size());
+  std::iota(soup.source.begin(), soup.source.end(), 0);
   return soup;
 }
 

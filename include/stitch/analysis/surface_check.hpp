@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stitch/mesh/build.hpp"
+#include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
 
 namespace stitch {
@@ -22,6 +23,8 @@ struct TriangleSoup {
 
 /// Each quad split along its 0-2 diagonal (two triangles with source = the quad's index).
 TriangleSoup triangulate(const TessellatedMesh& surface);
+/// Its triangles as they are (source = the triangle's index).
+TriangleSoup triangulate(const AdaptiveMesh& surface);
 /// Each polygon fanned from its first corner; vertices at exactly equal positions are merged
 /// first, so a file written without shared vertices still has its adjacency.
 TriangleSoup triangulate(const PolygonSoup& soup);
