@@ -1,0 +1,122 @@
+// The sweep of the tube tests (test_twisted_tubes.cpp, test_uneven_tubes.cpp): an edge inserted
+// between every corner of one face and every corner of another, each smooth surface checked at
+// resolution 16 (issue 13; docs/method.md, "K-gons of faces that run around two openings").
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "stitch/analysis/continuity.hpp"
+#include "stitch/analysis/surface_check.hpp"
+#include "stitch/eval/surface.hpp"
+#include "stitch/mesh/build.hpp"
+#include "stitch/mesh/polygon.hpp"
+#include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
+
+namespace stitch::test {
+
+struct PairResult {
+  int steps = 0;  ///< corner steps between the two bridge ends around the tube (opposite faces)
+  bool clean = false, open = false;
+  int folds = 0, self_intersections = 0;  ///< check_surface's pairs of triangles
+  std::string op, problems;
+};
+
+inline Vec3 face_centre(const HalfedgeMesh& m, Face f) {
+  return centroid(face_points(m, f));
+}
+
+/// Corner steps around the axis between vertices va and vb of two opposite n-gons (0 when vb is
+/// straight above va, up to n / 2 for a half twist).
+inline int twist_steps(const HalfedgeMesh& m, Vertex va, Vertex vb, const Vec3& centre_a,
+                       const Vec3& centre_b, int n) {
+  const Vec3 axis = (centre_b - centre_a).normalized();
+  auto flat = [&](const Vec3& p, const Vec3& c) {
+    const Vec3 d = p - c;
+    return Vec3(d - d.dot(axis) * axis);
+  };
+  const Vec3 ra = flat(m.position(va), centre_a), rb = flat(m.position(vb), centre_b);
+  const double angle = std::atan2(ra.cross(rb).norm(), ra.dot(rb));
+  return static_cast<int>(std::lround(angle / (2 * std::numbers::pi / n)));
+}
+
+/// Inserts an edge between every corner of face a and every corner of face b of `solid` (1-based
+/// face numbers; pairs at one vertex are skipped) and checks the smooth surface at resolution 16.
+/// `open` says whether the segment between the two faces' centres, extended 3 times beyond them,
+/// misses the surface (meaningful for opposite faces). C1 along every edge is checked too, on
+/// every pair or on the clean ones. The twist steps are measured on `steps_on` when given (a mesh
+/// with the same connectivity, e.g. the regular prism a variant's vertices were moved from), else
+/// on `solid`.
+enum class C1Check { none, every_pair, clean_pairs };
+inline std::vector<PairResult> sweep(const HalfedgeMesh& solid, int a, int b,
+                                     C1Check c1 = C1Check::none,
+                                     const HalfedgeMesh* steps_on = nullptr) {
+  std::vector<PairResult> out;
+  const Face fa(a - 1), fb(b - 1);
+  const Vec3 ca = face_centre(solid, fa), cb = face_centre(solid, fb);
+  const HalfedgeMesh& reference = steps_on ? *steps_on : solid;
+  for (Halfedge ha : solid.face_loop(fa))
+    for (Halfedge hb : solid.face_loop(fb)) {
+      const Vertex va = solid.origin(ha), vb = solid.origin(hb);
+      if (va == vb) continue;
+      PairResult r;
+      r.steps = twist_steps(reference, va, vb, face_centre(reference, fa),
+                            face_centre(reference, fb), solid.degree(fa));
+      r.op = "insert-edge " + std::to_string(va.idx + 1) + "@" + std::to_string(a) + " " +
+             std::to_string(vb.idx + 1) + "@" + std::to_string(b);
+      HalfedgeMesh mesh = solid;
+      apply_operation(mesh, r.op);
+      const Surface surface(mesh, Method::mdc);
+      const TriangleSoup tris = triangulate(tessellate(mesh, surface, {16, true}));
+      const SurfaceCheckReport check = check_surface(tris);
+      r.clean = check.clean();
+      r.folds = check.folds;
+      r.self_intersections = check.self_intersections;
+      if (!r.clean) r.problems = check.describe(tris);
+      r.open = segment_hits(tris, ca + 3 * (ca - cb), cb + 3 * (cb - ca)).empty();
+      // The construction keeps C1 along every edge (see test_surface.cpp for the tolerance).
+      if (c1 == C1Check::every_pair || (c1 == C1Check::clean_pairs && r.clean)) {
+        EXPECT_LT(analyze_continuity(mesh, surface).touching_ev.max_deg, 1e-7) << r.op;
+      }
+      out.push_back(std::move(r));
+    }
+  return out;
+}
+
+struct Counts {
+  int total = 0, clean = 0, open = 0;
+  bool operator==(const Counts&) const = default;
+};
+
+inline std::ostream& operator<<(std::ostream& os, const Counts& c) {
+  return os << c.total << " pairs, " << c.clean << " clean, " << c.open << " open";
+}
+
+/// Counts by twist (corner steps), and all together under key -1.
+inline std::map<int, Counts> count(const std::vector<PairResult>& results) {
+  std::map<int, Counts> out;
+  for (const PairResult& r : results)
+    for (int key : {r.steps, -1}) {
+      ++out[key].total;
+      out[key].clean += r.clean ? 1 : 0;
+      out[key].open += r.open ? 1 : 0;
+    }
+  return out;
+}
+
+inline void expect_clean_and_open(const std::vector<PairResult>& results, int max_steps) {
+  for (const PairResult& r : results)
+    if (r.steps <= max_steps) {
+      EXPECT_TRUE(r.clean) << r.op << " (twist of " << r.steps << " steps)\n" << r.problems;
+      EXPECT_TRUE(r.open) << r.op << " (twist of " << r.steps << " steps): the axis is blocked";
+    }
+}
+
+}  // namespace stitch::test
