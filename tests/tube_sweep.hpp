@@ -17,6 +17,7 @@
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/polygon.hpp"
+#include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/operation.hpp"
 
@@ -54,15 +55,24 @@ inline int twist_steps(const HalfedgeMesh& m, Vertex va, Vertex vb, const Vec3& 
 /// every pair or on the clean ones. The twist steps are measured on `steps_on` when given (a mesh
 /// with the same connectivity, e.g. the regular prism a variant's vertices were moved from), else
 /// on `solid`.
+/// `tessellation`: the welded grid at resolution 16, or the adaptive triangles at the default
+/// tolerance (1e-3). `scope`: every pair, or the first corner of face a against every corner of
+/// face b (on a regular prism, each twist once).
 enum class C1Check { none, every_pair, clean_pairs };
-inline std::vector<PairResult> sweep(const HalfedgeMesh& solid, int a, int b,
-                                     C1Check c1 = C1Check::none,
-                                     const HalfedgeMesh* steps_on = nullptr) {
+enum class SweepTessellation { resolution_16, adaptive };
+enum class SweepScope { every_pair, first_corner_of_a };
+inline std::vector<PairResult> sweep(
+    const HalfedgeMesh& solid, int a, int b, C1Check c1 = C1Check::none,
+    const HalfedgeMesh* steps_on = nullptr,
+    SweepTessellation tessellation = SweepTessellation::resolution_16,
+    SweepScope scope = SweepScope::every_pair) {
   std::vector<PairResult> out;
   const Face fa(a - 1), fb(b - 1);
   const Vec3 ca = face_centre(solid, fa), cb = face_centre(solid, fb);
   const HalfedgeMesh& reference = steps_on ? *steps_on : solid;
-  for (Halfedge ha : solid.face_loop(fa))
+  std::vector<Halfedge> corners_of_a = solid.face_loop(fa);
+  if (scope == SweepScope::first_corner_of_a) corners_of_a.resize(1);
+  for (Halfedge ha : corners_of_a) {
     for (Halfedge hb : solid.face_loop(fb)) {
       const Vertex va = solid.origin(ha), vb = solid.origin(hb);
       if (va == vb) continue;
@@ -74,7 +84,9 @@ inline std::vector<PairResult> sweep(const HalfedgeMesh& solid, int a, int b,
       HalfedgeMesh mesh = solid;
       apply_operation(mesh, r.op);
       const Surface surface(mesh, Method::mdc);
-      const TriangleSoup tris = triangulate(tessellate(mesh, surface, {16, true}));
+      const TriangleSoup tris = tessellation == SweepTessellation::adaptive
+                                    ? triangulate(tessellate_adaptive(mesh, surface))
+                                    : triangulate(tessellate(mesh, surface, {16, true}));
       const SurfaceCheckReport check = check_surface(tris);
       r.clean = check.clean();
       r.folds = check.folds;
@@ -87,6 +99,7 @@ inline std::vector<PairResult> sweep(const HalfedgeMesh& solid, int a, int b,
       }
       out.push_back(std::move(r));
     }
+  }
   return out;
 }
 
