@@ -48,19 +48,45 @@ inline int twist_steps(const HalfedgeMesh& m, Vertex va, Vertex vb, const Vec3& 
   return static_cast<int>(std::lround(angle / (2 * std::numbers::pi / n)));
 }
 
-/// Inserts an edge between every corner of face a and every corner of face b of `solid` (1-based
-/// face numbers; pairs at one vertex are skipped) and checks the smooth surface at resolution 16.
-/// `open` says whether the segment between the two faces' centres, extended 3 times beyond them,
-/// misses the surface (meaningful for opposite faces). C1 along every edge is checked too, on
-/// every pair or on the clean ones. The twist steps are measured on `steps_on` when given (a mesh
-/// with the same connectivity, e.g. the regular prism a variant's vertices were moved from), else
-/// on `solid`.
-/// `tessellation`: the welded grid at resolution 16, or the adaptive triangles at the default
-/// tolerance (1e-3). `scope`: every pair, or the first corner of face a against every corner of
-/// face b (on a regular prism, each twist once).
 enum class C1Check { none, every_pair, clean_pairs };
 enum class SweepTessellation { resolution_16, adaptive };
 enum class SweepScope { every_pair, first_corner_of_a };
+
+/// `op` (an insert-edge between faces a and b of `solid`, whose centres are ca and cb) applied to
+/// a copy of `solid`, smoothed with `kgon` and checked: clean, and `open` when the segment between
+/// the two faces' centres, extended 3 times beyond them, misses the surface (meaningful for
+/// opposite faces). C1 along every edge is checked too, always or when clean. `tessellation`:
+/// the welded grid at resolution 16, or the adaptive triangles at the default tolerance (1e-3).
+inline PairResult check_tube(const HalfedgeMesh& solid, const std::string& op, const Vec3& ca,
+                             const Vec3& cb, C1Check c1 = C1Check::none,
+                             SweepTessellation tessellation = SweepTessellation::resolution_16,
+                             const KgonOptions& kgon = {}) {
+  PairResult r;
+  r.op = op;
+  HalfedgeMesh mesh = solid;
+  apply_operation(mesh, r.op);
+  const Surface surface(mesh, Method::mdc, kgon);
+  const TriangleSoup tris = tessellation == SweepTessellation::adaptive
+                                ? triangulate(tessellate_adaptive(mesh, surface))
+                                : triangulate(tessellate(mesh, surface, {16, true}));
+  const SurfaceCheckReport check = check_surface(tris);
+  r.clean = check.clean();
+  r.folds = check.folds;
+  r.self_intersections = check.self_intersections;
+  if (!r.clean) r.problems = check.describe(tris);
+  r.open = segment_hits(tris, ca + 3 * (ca - cb), cb + 3 * (cb - ca)).empty();
+  // The construction keeps C1 along every edge (see test_surface.cpp for the tolerance).
+  if (c1 == C1Check::every_pair || (c1 == C1Check::clean_pairs && r.clean)) {
+    EXPECT_LT(analyze_continuity(mesh, surface).touching_ev.max_deg, 1e-7) << r.op;
+  }
+  return r;
+}
+
+/// check_tube for an edge inserted between every corner of face a and every corner of face b of
+/// `solid` (1-based face numbers; pairs at one vertex are skipped), or between the first corner
+/// of face a and every corner of face b (`scope`; on a regular prism, each twist once). The
+/// twist steps are measured on `steps_on` when given (a mesh with the same connectivity, e.g.
+/// the regular prism a variant's vertices were moved from), else on `solid`.
 inline std::vector<PairResult> sweep(
     const HalfedgeMesh& solid, int a, int b, C1Check c1 = C1Check::none,
     const HalfedgeMesh* steps_on = nullptr,
@@ -76,27 +102,11 @@ inline std::vector<PairResult> sweep(
     for (Halfedge hb : solid.face_loop(fb)) {
       const Vertex va = solid.origin(ha), vb = solid.origin(hb);
       if (va == vb) continue;
-      PairResult r;
+      const std::string op = "insert-edge " + std::to_string(va.idx + 1) + "@" + std::to_string(a) +
+                             " " + std::to_string(vb.idx + 1) + "@" + std::to_string(b);
+      PairResult r = check_tube(solid, op, ca, cb, c1, tessellation);
       r.steps = twist_steps(reference, va, vb, face_centre(reference, fa),
                             face_centre(reference, fb), solid.degree(fa));
-      r.op = "insert-edge " + std::to_string(va.idx + 1) + "@" + std::to_string(a) + " " +
-             std::to_string(vb.idx + 1) + "@" + std::to_string(b);
-      HalfedgeMesh mesh = solid;
-      apply_operation(mesh, r.op);
-      const Surface surface(mesh, Method::mdc);
-      const TriangleSoup tris = tessellation == SweepTessellation::adaptive
-                                    ? triangulate(tessellate_adaptive(mesh, surface))
-                                    : triangulate(tessellate(mesh, surface, {16, true}));
-      const SurfaceCheckReport check = check_surface(tris);
-      r.clean = check.clean();
-      r.folds = check.folds;
-      r.self_intersections = check.self_intersections;
-      if (!r.clean) r.problems = check.describe(tris);
-      r.open = segment_hits(tris, ca + 3 * (ca - cb), cb + 3 * (cb - ca)).empty();
-      // The construction keeps C1 along every edge (see test_surface.cpp for the tolerance).
-      if (c1 == C1Check::every_pair || (c1 == C1Check::clean_pairs && r.clean)) {
-        EXPECT_LT(analyze_continuity(mesh, surface).touching_ev.max_deg, 1e-7) << r.op;
-      }
       out.push_back(std::move(r));
     }
   }
