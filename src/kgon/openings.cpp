@@ -758,7 +758,8 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
       return place_on_bent_tube(m, f, *bent, openings, corner_point, kAlongTube, BentAxis::tube);
     return place_on_bent_tube(m, f, *bent, openings, corner_point);
   }
-  if (const auto tube = tube_of(m, openings); tube && std::abs(tube->twist) >= kNoTwist)
+  const auto tube = tube_of(m, openings);
+  if (tube && std::abs(tube->twist) >= kNoTwist)
     return place_on_twisted_tube(m, f, *tube, openings, corner_point);
   auto points_of = [&](const std::vector<Corner>& cs) {
     std::vector<Vec3> pts;
@@ -803,7 +804,7 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // and crossed themselves (240 to 468 folded pairs at resolution 16); cut, they are clean. On
   // the regular prisms the cut takes the width from 1.2 to 1.35 r (0.60 to 0.61) to r and
   // changes no count of test_twisted_tubes.cpp.
-  if (const auto tube = tube_of(m, openings)) {
+  if (tube) {
     double radius = 0;
     for (Corner c : loop)
       radius += tube->radius_of(corner_point[c.idx]) / static_cast<double>(loop.size());
