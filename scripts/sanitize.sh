@@ -23,11 +23,13 @@ cmake --build build-asan -j"$jobs" --target stitch-tests stitch-cli
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The test binary in shards, one per core (GoogleTest's own sharding): the tests it runs are
-# exactly stitch-tests', whatever else the build registers with ctest.
+# exactly stitch-tests', whatever else the build registers with ctest, but for UnevenTubes: its
+# sweeps (about a minute in Release, ten under ASan) run the tube placement TwistedTubes already
+# runs here, on other vertex positions; the normal build runs them.
 pids=()
 for ((i = 0; i < jobs; ++i)); do
   GTEST_TOTAL_SHARDS=$jobs GTEST_SHARD_INDEX=$i build-asan/bin/stitch-tests --gtest_brief=1 \
-    >"build-asan/sanitize-shard-$i.log" 2>&1 &
+    --gtest_filter='-UnevenTubes.*' >"build-asan/sanitize-shard-$i.log" 2>&1 &
   pids+=($!)
 done
 status=0
