@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "stitch/mesh/polygon.hpp"
@@ -185,6 +186,13 @@ struct Tube {
     const Vec3 d = p - base;
     return (d - d.dot(axis) * axis).norm();
   }
+  /// The mean radius_of these corners' points.
+  [[nodiscard]] double mean_radius(const std::vector<Corner>& corners,
+                                   const std::vector<Vec3>& corner_point) const {
+    double sum = 0;
+    for (Corner c : corners) sum += radius_of(corner_point[c.idx]);
+    return sum / static_cast<double>(corners.size());
+  }
   [[nodiscard]] double height_of(const Vec3& p) const { return (p - base).dot(axis) / length; }
   /// The surface's normal on the wall: into the tube around a hole, out of it on a handle.
   [[nodiscard]] Vec3 normal(double angle) const { return hole ? -radial(angle) : radial(angle); }
@@ -346,14 +354,12 @@ std::optional<Kgon> place_on_twisted_tube(const HalfedgeMesh& m, Face f, const T
                                           const TwoOpenings& openings,
                                           const std::vector<Vec3>& corner_point) {
   const auto loop = m.face_loop(f);
-  const int k = static_cast<int>(loop.size());
-  double radius_sum = 0, height_a = 0, height_b = 0;
-  for (Corner c : loop) radius_sum += tube.radius_of(corner_point[c.idx]);
+  double height_a = 0, height_b = 0;
   for (Corner c : openings.first) height_a += tube.height_of(corner_point[c.idx]);
   for (Corner c : openings.second) height_b += tube.height_of(corner_point[c.idx]);
   height_a /= static_cast<double>(openings.first.size());
   height_b /= static_cast<double>(openings.second.size());
-  const double radius = radius_sum / k;
+  const double radius = tube.mean_radius(loop, corner_point);
   const double angle = tube.twist / 2 + std::numbers::pi;
   const Vec3 centre = tube.wall(angle, (height_a + height_b) / 2, radius);
   // The helix from the first bridge vertex to the second, at this radius, runs this way at
@@ -795,23 +801,14 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // does at the far point; otherwise the tube is too twisted for this placement.
   if (far_a->tangent.dot(-e2) <= 0) return std::nullopt;
 
-  const auto loop = m.face_loop(f);
-  Kgon g = regular_tube_kgon(loop, openings, centre, normal, e1, e2, corner_point);
-  // Its extent across the tube cut to the tube's radius, as item 4 cuts a twisted tube's
-  // (wall_kgon; method.md, "Uneven rims"): section 2's size grows with the tube's length, and
-  // on a tube three times as long as a regular prism's (height 6, unit radius) the K-gon reached
-  // 1.54 against a radius of 0.50 to each side, and the straight tubes of prisms 8 and 12 folded
-  // and crossed themselves (240 to 468 folded pairs at resolution 16); cut, they are clean. On
-  // the regular prisms the cut takes the width from 1.2 to 1.35 r (0.60 to 0.61) to r and
-  // changes no count of test_twisted_tubes.cpp.
-  if (tube) {
-    double radius = 0;
-    for (Corner c : loop)
-      radius += tube->radius_of(corner_point[c.idx]) / static_cast<double>(loop.size());
-    const double extent = (g.points[0] - centre).norm();
-    if (extent > radius)
-      for (Vec3& p : g.points) p -= (1 - radius / extent) * (p - centre).dot(e2) * e2;
-  }
+  // wall_kgon with the axis as the direction along the tube: section 2's regular K-gon, its
+  // extent across the tube cut to the tube's radius as item 4 cuts a twisted tube's (method.md,
+  // "Uneven rims"): section 2's size grows with the tube's length, and on a tube three times as
+  // long as a regular prism's (height 6, unit radius) the K-gon reached 1.54 against a radius of
+  // 0.50 to each side, and the straight tubes of prisms 8 and 12 folded and crossed themselves
+  // (240 to 468 folded pairs at resolution 16); cut, they are clean. On the regular prisms the
+  // cut takes the width from 1.2 to 1.35 r (0.60 to 0.61) to r and changes no count of
+  // test_twisted_tubes.cpp.
   // Rims of more than six corners: the K-gon kStraightAlong times as long along the tube, as
   // item 6 stretches a twisted tube's (method.md, item 8). At section 2's size, 6 of prism 12's
   // 12 straight tubes folded 6 pairs of triangles each at resolution 16, next to the face's
@@ -821,9 +818,11 @@ std::optional<Kgon> place_tube_kgon(const HalfedgeMesh& m, Face f, const TwoOpen
   // corner or the other by rounding; with its chord across the corner all 12 are clean at
   // section 2's size, but the elliptic prism 10's straight tubes (test_uneven_tubes.cpp) fold 2
   // pairs each without the stretch (method.md, "Uneven rims").
-  if (rim_corners(openings) > 6)
-    for (Vec3& p : g.points) p += (kStraightAlong - 1) * (p - centre).dot(e1) * e1;
-  return g;
+  const auto loop = m.face_loop(f);
+  const double radius = tube ? tube->mean_radius(loop, corner_point)
+                             : std::numeric_limits<double>::infinity();  // no cut
+  return wall_kgon(loop, openings, centre, normal, axis, radius, corner_point,
+                   rim_corners(openings) > 6 ? kStraightAlong : 1);
 }
 
 void slide_acute_sides(const HalfedgeMesh& m, const TwoOpenings& openings,
