@@ -155,12 +155,6 @@ void shape_kgon(Kgon& g, const std::vector<Vec3>& corner_point, const std::vecto
 // once and then every place (place_kgons alone when only positions changed); update_kgons runs
 // both per listed element. Either way each element goes through the same code.
 
-/// The face's openings, when the openings construction builds its K-gon.
-std::optional<TwoOpenings> openings_of(const HalfedgeMesh& m, const KgonOptions& options, Face f) {
-  if (options.construction != KgonConstruction::openings || m.is_hole(f)) return std::nullopt;
-  return detail::find_two_openings(m, f);
-}
-
 void prepare_face(const HalfedgeMesh& m, KgonSet& set, Face f) {
   if (m.is_hole(f)) {
     set.face[f.idx] = Kgon{};
@@ -329,6 +323,11 @@ Face bridged_face(const HalfedgeMesh& m, Edge e) {
 
 }  // namespace
 
+std::optional<TwoOpenings> two_openings(const HalfedgeMesh& m, Face f, const KgonOptions& options) {
+  if (options.construction != KgonConstruction::openings || m.is_hole(f)) return std::nullopt;
+  return detail::find_two_openings(m, f);
+}
+
 bool KgonTopology::fits(const HalfedgeMesh& mesh, const KgonOptions& options) const {
   return construction == options.construction && boundary == options.boundary &&
          sharp_from == options.sharp_from &&
@@ -371,7 +370,7 @@ KgonTopology prepare_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   // edge's four corners), so each runs over its elements in parallel with the same result.
   tbb::parallel_for(size_t{0}, t.faces.size(), [&](size_t i) {
     prepare_face(m, set, t.faces[i]);
-    t.openings[t.faces[i].idx] = openings_of(m, options, t.faces[i]);
+    t.openings[t.faces[i].idx] = two_openings(m, t.faces[i], options);
   });
   tbb::parallel_for(size_t{0}, t.vertices.size(), [&](size_t i) {
     const VertexTopology v = prepare_vertex(m, options, set, t.vertices[i]);
@@ -442,7 +441,7 @@ void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
   std::vector<std::optional<TwoOpenings>> openings(faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
     prepare_face(m, set, faces[i]);
-    openings[i] = openings_of(m, options, faces[i]);
+    openings[i] = two_openings(m, faces[i], options);
     cover(weights, static_cast<int>(set.face[faces[i].idx].corners.size()));
   }
   auto at = [](const std::optional<TwoOpenings>& o) { return o ? &*o : nullptr; };
@@ -458,8 +457,8 @@ void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
   for (Edge e : edges) {
     const bool sharp = prepare_edge(m, options, set, e);
     const Face bridged = bridged_face(m, e);
-    const auto bridge_openings =
-        bridged.valid() && !sharp ? openings_of(m, options, bridged) : std::optional<TwoOpenings>();
+    const auto bridge_openings = bridged.valid() && !sharp ? two_openings(m, bridged, options)
+                                                           : std::optional<TwoOpenings>();
     place_edge(m, options, set, e, sharp, at(bridge_openings), weights, normal_of);
   }
 }

@@ -28,6 +28,11 @@ struct TwoOpenings {
   std::vector<Corner> first, second;
 };
 
+/// The two openings of f when the options' construction is `openings` and f's loop runs around
+/// two openings (src/kgon/openings.hpp); nothing otherwise.
+std::optional<TwoOpenings> two_openings(const HalfedgeMesh& mesh, Face f,
+                                        const KgonOptions& options);
+
 /// Everything of a mesh's K-gons that does not depend on the vertex positions.
 struct KgonTopology {
   /// The options' fields it was prepared for (the controls are applied with the points).

@@ -1,0 +1,69 @@
+// Choosing the K-gon controls of a tube that folds (docs/method.md, "Tubes that still fold").
+//
+// The openings construction places the K-gons of a face with two openings by rules fitted on
+// regular prisms and a few solids. Off those (uneven rims, long or tapered tubes, prism 16's half
+// twist) the surface over some of these faces folds, while a setting of the paper's own controls
+// on that face's K-gon (scale and rotation in its plane) and on its bridge's edge K-gon (scale)
+// makes it clean. unfold_tubes looks for such a setting where the fitted placement folds, judged
+// by the local check (local_check.hpp) on the patches those two K-gons reach, and records it as
+// per-element controls: the surface stays the one the method builds from its K-gons, C1 along
+// every edge and G1 at the face's extraordinary point (the K-gons stay planar), and a tube that
+// is clean already is left exactly as it was.
+#pragma once
+
+#include <vector>
+
+#include "stitch/analysis/local_check.hpp"
+#include "stitch/eval/bezier_surface.hpp"
+#include "stitch/kgon/kgon.hpp"
+
+namespace stitch {
+
+struct UnfoldTubesOptions {
+  /// The check that decides whether a setting is clean (resolution 16, as the tube tests).
+  LocalCheckOptions check;
+  /// The rule the patches are evaluated with (mdc and asc share the nets but not the surface).
+  BezierRule rule = BezierRule::mdc;
+};
+
+/// What the search found for one face with two openings whose surface folded.
+struct TubeUnfolding {
+  Face face;
+  Edge bridge;
+  LocalCheckReport fitted;     ///< the check with the fitted placement
+  LocalCheckReport chosen;     ///< the check with the chosen setting (the fitted one if none)
+  KgonControl face_control;    ///< the setting chosen: scale and rotation of the face K-gon
+  KgonControl bridge_control;  ///< and scale of the bridge's edge K-gon
+  int settings_tried = 0;      ///< settings checked, the fitted one included
+  [[nodiscard]] bool unfolded() const { return chosen.clean(); }
+};
+
+/// The settings tried, nearest to the fitted placement (no control) first, as (face scale, face
+/// rotation in degrees, bridge scale). Face scale 0.4 to 1.5, rotation -30 to 30 degrees in steps
+/// of 10, bridge scale 0.5 to 1.5: the ranges where the six folding tubes measured in
+/// docs/method.md found their clean settings.
+struct TubeSetting {
+  double face_scale, face_rotate_deg, bridge_scale;
+};
+const std::vector<TubeSetting>& tube_settings();
+
+/// For every face of `faces` with two openings (the openings construction) whose patches or
+/// their neighbours fold or cross, and on which the user set no control (neither on the face nor
+/// on its bridge): tries tube_settings() in order and keeps the first that the local check finds
+/// clean, adding it to options.face and options.edge. `surface` is the Bézier surface built for
+/// `mesh` with `options`; it is left built with the options as they are on return (only the
+/// K-gons and nets of the faces searched are touched, so the cost follows the tubes, not the
+/// mesh). Returns one entry per folding face, unfolded or not, in the order of `faces`.
+std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                        BezierSurface& surface, const std::vector<Face>& faces,
+                                        const UnfoldTubesOptions& unfold = {});
+
+/// The same over every face of the mesh, building the surface itself; nothing is built when no
+/// face has two openings.
+std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                        const UnfoldTubesOptions& unfold = {});
+
+/// The faces of the mesh whose K-gons the openings construction builds (two openings).
+std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options);
+
+}  // namespace stitch

@@ -1,0 +1,137 @@
+#include "stitch/analysis/unfold_tubes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "eval/patch_sampler.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
+#include "stitch/net/control_net.hpp"
+
+namespace stitch {
+
+namespace {
+
+/// How far a setting is from the fitted placement: scales count by their ratio, so that 0.8 and
+/// 1.25 are as far, and 30 degrees of rotation as far as a factor of 1.5.
+double distance(const TubeSetting& s) {
+  const double step = std::log(1.5);
+  return std::abs(std::log(s.face_scale)) / step + std::abs(s.face_rotate_deg) / 30.0 +
+         std::abs(std::log(s.bridge_scale)) / step;
+}
+
+std::vector<TubeSetting> make_settings() {
+  std::vector<TubeSetting> out;
+  for (double face_scale : {1.0, 0.8, 1.2, 0.6, 1.5, 0.4})
+    for (double rotate : {0.0, -10.0, 10.0, -20.0, 20.0, -30.0, 30.0})
+      for (double bridge_scale : {1.0, 0.5, 1.5}) out.push_back({face_scale, rotate, bridge_scale});
+  // Nearest first; ties keep the order above (smaller changes listed first).
+  std::stable_sort(out.begin(), out.end(), [](const TubeSetting& a, const TubeSetting& b) {
+    return distance(a) < distance(b);
+  });
+  return out;
+}
+
+/// The two K-gons a setting changes, with the controls the options give them.
+struct TubeControls {
+  Face face;
+  Edge bridge;
+  void set(KgonOptions& options, const TubeSetting& s) const {
+    // On top of the global control, which the face K-gon (K > 4) has otherwise and which a
+    // per-element control would replace.
+    KgonControl c = options.global;
+    c.scale *= s.face_scale;
+    c.rotate_deg += s.face_rotate_deg;
+    options.face[face.idx] = c;
+    options.edge[bridge.idx] = KgonControl{.scale = s.bridge_scale};
+  }
+  void clear(KgonOptions& options) const {
+    options.face.erase(face.idx);
+    options.edge.erase(bridge.idx);
+  }
+};
+
+Method method_of(BezierRule rule) {
+  return rule == BezierRule::mdc ? Method::mdc : Method::asc;
+}
+
+}  // namespace
+
+const std::vector<TubeSetting>& tube_settings() {
+  static const std::vector<TubeSetting> settings = make_settings();
+  return settings;
+}
+
+std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options) {
+  std::vector<Face> out;
+  if (options.construction != KgonConstruction::openings) return out;
+  for (Face f : mesh.faces())
+    if (two_openings(mesh, f, options)) out.push_back(f);
+  return out;
+}
+
+std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                        BezierSurface& surface, const std::vector<Face>& faces,
+                                        const UnfoldTubesOptions& unfold) {
+  std::vector<TubeUnfolding> out;
+  for (Face f : faces) {
+    if (f.idx >= mesh.face_capacity() || mesh.is_deleted(f)) continue;
+    const auto openings = two_openings(mesh, f, options);
+    if (!openings) continue;
+    const TubeControls tube{f, HalfedgeMesh::edge(openings->first.back())};
+    // The user's own controls on either K-gon are theirs to keep.
+    if (options.face.contains(f.idx) || options.edge.contains(tube.bridge.idx)) continue;
+
+    KgonElements reach;
+    reach.faces = {f};
+    reach.edges = {tube.bridge};
+    const std::vector<Corner> changed = nets_reading(mesh, reach);
+    auto rebuild = [&] {
+      update_kgons(mesh, options, surface.kgons, {f}, {}, {tube.bridge});
+      for (Corner c : changed) surface.nets[c.idx] = build_control_net(mesh, surface.kgons, c);
+    };
+    auto check = [&] {
+      PatchSampler sampler(method_of(unfold.rule), surface.nets, unfold.check.resolution);
+      return check_patches(
+          mesh, changed,
+          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; },
+          unfold.check);
+    };
+
+    TubeUnfolding result;
+    result.face = f;
+    result.bridge = tube.bridge;
+    result.fitted = check();
+    result.chosen = result.fitted;
+    result.settings_tried = 1;
+    if (result.fitted.clean()) continue;
+    for (const TubeSetting& s : tube_settings()) {
+      if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.bridge_scale == 1) continue;
+      tube.set(options, s);
+      rebuild();
+      ++result.settings_tried;
+      LocalCheckReport report = check();
+      if (report.clean()) {
+        result.chosen = std::move(report);
+        result.face_control = options.face[f.idx];
+        result.bridge_control = options.edge[tube.bridge.idx];
+        break;
+      }
+    }
+    if (!result.unfolded()) {
+      tube.clear(options);
+      rebuild();
+    }
+    out.push_back(std::move(result));
+  }
+  return out;
+}
+
+std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                        const UnfoldTubesOptions& unfold) {
+  const std::vector<Face> faces = faces_with_two_openings(mesh, options);
+  if (faces.empty()) return {};
+  BezierSurface surface = build_bezier_surface(mesh, options);
+  return unfold_tubes(mesh, options, surface, faces, unfold);
+}
+
+}  // namespace stitch
