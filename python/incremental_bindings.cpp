@@ -60,7 +60,9 @@ void bind_incremental_surface(py::module_& m) {
       m, "IncrementalSurface",
       "A smooth surface kept up to date as the mesh's vertices move, its connectivity fixed (a "
       "deformation, an animation): update_positions recomputes the K-gons, control nets and "
-      "the samples of the patches whose nets changed, and keeps the layout.")
+      "the samples of the patches whose nets changed, and keeps the layout. Tubes keep their "
+      "fitted K-gons: the search stitch.Surface runs where they fold (unfold_tubes) is not run "
+      "here, so a surface that folds shows it.")
       .def(py::init(&make_incremental), py::arg("mesh"), py::arg("method") = "mdc",
            py::arg("resolution") = 8, py::kw_only(), py::arg("kgon_scale") = 1.0,
            py::arg("kgon_rotate") = 0.0, py::arg("regularize") = false,

@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "stitch/analysis/continuity.hpp"
+#include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/tess/export.hpp"
@@ -24,17 +25,44 @@ namespace {
 struct SurfaceHandle {
   std::shared_ptr<const HalfedgeMesh> mesh;
   std::shared_ptr<const Surface> surface;
+  /// What unfold_tubes found (nothing when it was off or no tube folded).
+  std::vector<TubeUnfolding> unfolded;
 };
 
 SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, double kgon_scale,
-                           double kgon_rotate, bool regularize, const std::string& construction) {
+                           double kgon_rotate, bool regularize, const std::string& construction,
+                           bool unfold) {
   const Method m = parse_method(method);
-  const KgonOptions options = kgon_options(kgon_scale, kgon_rotate, regularize, construction);
+  KgonOptions options = kgon_options(kgon_scale, kgon_rotate, regularize, construction);
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
   std::shared_ptr<const HalfedgeMesh> snapshot = mesh.mesh;
   py::gil_scoped_release release;
+  std::vector<TubeUnfolding> unfolded;
+  if (unfold && m != Method::cc) {
+    UnfoldTubesOptions o;
+    o.rule = m == Method::asc ? BezierRule::asc : BezierRule::mdc;
+    unfolded = unfold_tubes(*snapshot, options, o);
+  }
   auto surface = std::make_shared<const Surface>(*snapshot, m, options);
-  return {std::move(snapshot), std::move(surface)};
+  return {std::move(snapshot), std::move(surface), std::move(unfolded)};
+}
+
+py::list unfolded_tubes(const SurfaceHandle& s) {
+  py::list out;
+  for (const TubeUnfolding& t : s.unfolded) {
+    py::dict d;
+    d["face"] = t.face.idx;
+    d["bridge"] = t.bridge.idx;
+    d["fitted_folds"] = t.fitted.folds;
+    d["fitted_self_intersections"] = t.fitted.self_intersections;
+    d["unfolded"] = t.unfolded();
+    d["face_scale"] = t.face_control.scale;
+    d["face_rotate"] = t.face_control.rotate_deg;
+    d["bridge_scale"] = t.bridge_control.scale;
+    d["settings_tried"] = t.settings_tried;
+    out.append(std::move(d));
+  }
+  return out;
 }
 
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
@@ -233,12 +261,21 @@ void bind_surface(py::module_& m) {
   py::class_<SurfaceHandle>(m, "Surface", "The smooth surface of a mesh: one patch per corner.")
       .def(py::init(&make_surface), py::arg("mesh"), py::arg("method") = "mdc", py::kw_only(),
            py::arg("kgon_scale") = 1.0, py::arg("kgon_rotate") = 0.0, py::arg("regularize") = false,
-           py::arg("kgon_construction") = "openings",
+           py::arg("kgon_construction") = "openings", py::arg("unfold_tubes") = true,
            "method: 'mdc' (modified de Casteljau, the paper's), 'asc' (AS&C baseline) or 'cc' "
            "(Catmull-Clark through OpenSubdiv). The K-gon controls apply to every K-gon with "
            "K != 4, as stitch's --kgon-scale, --kgon-rotate (degrees), --regularize and "
-           "--kgon-construction. The surface keeps the mesh as it was (later edits do not "
-           "change it).")
+           "--kgon-construction. unfold_tubes: where the surface over a face made by inserting "
+           "an edge between two faces folds, choose that face's and its bridge's K-gon "
+           "controls by a search that checks the surface, as stitch does unless "
+           "--no-unfold-tubes (see unfolded_tubes). The surface keeps the mesh as it was "
+           "(later edits do not change it).")
+      .def_property_readonly("unfolded_tubes", &unfolded_tubes,
+                             "One dict per tube whose fitted K-gons folded: face and bridge "
+                             "(0-based face and edge indices), fitted_folds and "
+                             "fitted_self_intersections (pairs of triangles at resolution 16), "
+                             "unfolded (a clean setting was found), face_scale, face_rotate "
+                             "(degrees) and bridge_scale (the controls used), settings_tried")
       .def_property_readonly("method",
                              [](const SurfaceHandle& s) { return to_string(s.surface->method()); })
       .def_property_readonly("mesh", [](const SurfaceHandle& s) { return MeshHandle{s.mesh}; })

@@ -195,20 +195,37 @@ TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
     r = testing::stitch_cli(folder,
                             "edit " + name + "-in.obj --op \"" + op + "\" -o " + name + ".obj");
     ASSERT_EQ(r.status, 0) << r.err;
-    r = testing::stitch_cli(folder, "smooth " + name + ".obj -o s.ply --resolution 16 --check");
+    // --no-unfold-tubes: the fitted K-gons, which fold on prism 14's half twist.
+    r = testing::stitch_cli(
+        folder, "smooth " + name + ".obj -o s.ply --resolution 16 --check --no-unfold-tubes");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.find("not clean") != std::string::npos, name == "twisted") << r.err;
     if (name == "twisted") {
       EXPECT_NE(r.err.find("8 folded pairs"), std::string::npos) << r.err;
     }
   }
+  // By default the twisted tube's K-gon controls are chosen where the fitted ones fold
+  // (unfold_tubes), and the surface is clean; the note says what was chosen.
+  r = testing::stitch_cli(folder, "smooth twisted.obj -o s.ply --resolution 16 --check");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("not clean"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stitch: note: twisted.obj: the tube of face 1 (bridge 1 22) folds with its "
+                       "fitted K-gons"),
+            std::string::npos)
+      << r.err;
+  // --quiet leaves the note out.
+  r = testing::stitch_cli(folder, "smooth twisted.obj -o s.ply --resolution 16 --check --quiet");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
   // The adaptive triangles are checked too: the same tube is clean at the default tolerance
   // (its folds at resolution 16 are the grid's, method.md, "Beyond prism 13") and folds with
   // the coarser triangles of 1e-2 (before, --check with --tolerance checked nothing).
-  r = testing::stitch_cli(folder, "smooth twisted.obj -o a.obj --tolerance 1e-3 --check");
+  r = testing::stitch_cli(folder,
+                          "smooth twisted.obj -o a.obj --tolerance 1e-3 --check --no-unfold-tubes");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("not clean"), std::string::npos) << r.err;
-  r = testing::stitch_cli(folder, "smooth twisted.obj -o a.obj --tolerance 1e-2 --check");
+  r = testing::stitch_cli(folder,
+                          "smooth twisted.obj -o a.obj --tolerance 1e-2 --check --no-unfold-tubes");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("not clean at tolerance 0.01"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("folded pairs"), std::string::npos) << r.err;

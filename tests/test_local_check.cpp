@@ -217,8 +217,23 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
   testing::TempFolder dir;
   write_mesh(dir.file("cube.obj"), make_cube());
   write_mesh(dir.file("prism.obj"), make_prism(kFoldingPrism));
+  // The tube's fitted K-gons fold; by default --check checks the surface stitch smooth makes,
+  // whose K-gon controls are chosen where they fold (unfold_tubes): it says so and is clean.
   auto r = testing::stitch_cli(
-      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o unfolded.obj --check");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stitch: note: unfolded.obj: the tube of face 1 (bridge 1 22) folds with "
+                       "its fitted K-gons (8 folded and 0 crossing pairs of triangles at "
+                       "resolution 16); chosen instead: face K-gon scale 1 rotate -20"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("check: no folds or self-intersections near the edits"), std::string::npos)
+      << r.out;
+
+  // The fitted K-gons, as --no-unfold-tubes keeps them.
+  r = testing::stitch_cli(dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) +
+                                   "\" -o twisted.obj --check --no-unfold-tubes");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("stitch: warning: the surface folds at patches "), std::string::npos)
       << r.err;
@@ -228,8 +243,8 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
   EXPECT_NE(r.err.find("see stitch check-surface"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("twisted.obj")));
 
-  r = testing::stitch_cli(
-      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o strict.obj --strict -q");
+  r = testing::stitch_cli(dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) +
+                                   "\" -o strict.obj --strict -q --no-unfold-tubes");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("folds"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.file("strict.obj")));
@@ -250,8 +265,8 @@ TEST(LocalCheckCli, EditCheckWarnsAboutTheTwistedTubeAndNotTheStraightTube) {
 
   // The patch numbers are those of the written file read back: the whole check of its surface
   // finds the folds on those patches.
-  r = testing::stitch_cli(
-      dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) + "\" -o twisted.obj --check");
+  r = testing::stitch_cli(dir, "edit prism.obj --op \"" + std::string(kFoldingEdit) +
+                                   "\" -o twisted.obj --check --no-unfold-tubes");
   const size_t from = r.err.find("patches ") + 8, to = r.err.find(" (corners");
   ASSERT_LT(from, to) << r.err;
   std::set<int> numbers;

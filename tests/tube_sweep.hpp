@@ -14,6 +14,7 @@
 
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/analysis/surface_check.hpp"
+#include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/polygon.hpp"
@@ -51,6 +52,9 @@ inline int twist_steps(const HalfedgeMesh& m, Vertex va, Vertex vb, const Vec3& 
 enum class C1Check { none, every_pair, clean_pairs };
 enum class SweepTessellation { resolution_16, adaptive };
 enum class SweepScope { every_pair, first_corner_of_a };
+/// The tube's K-gons as the openings construction fits them, or with the controls unfold_tubes
+/// chooses where those fold (what stitch smooth and the modeler build by default).
+enum class TubeKgons { fitted, unfolded };
 
 /// `op` (an insert-edge between faces a and b of `solid`, whose centres are ca and cb) applied to
 /// a copy of `solid`, smoothed with `kgon` and checked: clean, and `open` when the segment between
@@ -60,12 +64,15 @@ enum class SweepScope { every_pair, first_corner_of_a };
 inline PairResult check_tube(const HalfedgeMesh& solid, const std::string& op, const Vec3& ca,
                              const Vec3& cb, C1Check c1 = C1Check::none,
                              SweepTessellation tessellation = SweepTessellation::resolution_16,
-                             const KgonOptions& kgon = {}) {
+                             const KgonOptions& kgon = {},
+                             TubeKgons tube_kgons = TubeKgons::fitted) {
   PairResult r;
   r.op = op;
   HalfedgeMesh mesh = solid;
   apply_operation(mesh, r.op);
-  const Surface surface(mesh, Method::mdc, kgon);
+  KgonOptions options = kgon;
+  if (tube_kgons == TubeKgons::unfolded) unfold_tubes(mesh, options);
+  const Surface surface(mesh, Method::mdc, options);
   const TriangleSoup tris = tessellation == SweepTessellation::adaptive
                                 ? triangulate(tessellate_adaptive(mesh, surface))
                                 : triangulate(tessellate(mesh, surface, {16, true}));
@@ -91,7 +98,7 @@ inline std::vector<PairResult> sweep(
     const HalfedgeMesh& solid, int a, int b, C1Check c1 = C1Check::none,
     const HalfedgeMesh* steps_on = nullptr,
     SweepTessellation tessellation = SweepTessellation::resolution_16,
-    SweepScope scope = SweepScope::every_pair) {
+    SweepScope scope = SweepScope::every_pair, TubeKgons tube_kgons = TubeKgons::fitted) {
   std::vector<PairResult> out;
   const Face fa(a - 1), fb(b - 1);
   const Vec3 ca = face_centre(solid, fa), cb = face_centre(solid, fb);
@@ -104,7 +111,7 @@ inline std::vector<PairResult> sweep(
       if (va == vb) continue;
       const std::string op = "insert-edge " + std::to_string(va.idx + 1) + "@" + std::to_string(a) +
                              " " + std::to_string(vb.idx + 1) + "@" + std::to_string(b);
-      PairResult r = check_tube(solid, op, ca, cb, c1, tessellation);
+      PairResult r = check_tube(solid, op, ca, cb, c1, tessellation, {}, tube_kgons);
       r.steps = twist_steps(reference, va, vb, face_centre(reference, fa),
                             face_centre(reference, fb), solid.degree(fa));
       out.push_back(std::move(r));

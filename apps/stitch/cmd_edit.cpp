@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "commands.hpp"
+#include "options.hpp"
 #include "stitch/analysis/local_check.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
@@ -26,6 +27,7 @@ struct EditArgs {
   std::string in, out;
   bool quiet = false;
   bool check = false, strict = false;
+  bool unfold_tubes = true;
   int check_resolution = LocalCheckOptions{}.resolution;
 };
 
@@ -52,7 +54,11 @@ bool check_edited_surface(const EditArgs& a, const HalfedgeMesh& mesh, const Tou
   const std::vector<Corner> changed =
       touched.whole ? mesh.patch_corners()
                     : patches_touched(mesh, touched.vertices, touched.edges, touched.faces);
-  const Surface surface(mesh, Method::mdc);
+  // The surface `stitch smooth` makes of the output: tubes that fold get their K-gon controls
+  // chosen as it chooses them.
+  KgonOptions kgons;
+  if (a.unfold_tubes) report_unfolded_tubes(unfold_tubes(mesh, kgons), mesh, a.out, a.quiet);
+  const Surface surface(mesh, Method::mdc, kgons);
   LocalCheckOptions options;
   options.resolution = a.check_resolution;
   const LocalCheckReport r = check_patches(mesh, surface, changed, options);
@@ -209,6 +215,9 @@ void add_edit_command(CLI::App& app) {
                   "segments per patch side for --check")
       ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
+  cmd->add_flag("!--no-unfold-tubes", args->unfold_tubes,
+                "--check the fitted K-gons of every tube, as stitch smooth --no-unfold-tubes "
+                "builds them, instead of the controls stitch smooth chooses where they fold");
   cmd->callback([args, cmd] {
     args->check = args->check || args->strict;
     run_edit(*args, *cmd);

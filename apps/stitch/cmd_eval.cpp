@@ -90,7 +90,8 @@ void run_eval(const EvalArgs& a) {
         fmt::format("--format must be csv or json, not '{}'", limits::quoted(a.format)));
   const HalfedgeMesh mesh = load_input(a.in);
   const std::vector<Query> queries = read_queries(a.at, mesh);
-  const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
+  const Method method = parse_method(a.method);
+  const Surface surface(mesh, method, surface_kgon_options(a.kgon, mesh, method, a.in.path));
   // Full precision: {} and nlohmann both print the shortest text that reads back exactly.
   if (a.format == "csv") {
     fmt::print(

@@ -55,9 +55,12 @@ void run_info(const InfoArgs& a) {
   const size_t patches = mesh.patch_corners().size();
 
   std::optional<PatchSet> set;
-  if (a.patches)
-    set = bezier_patches(mesh, Surface(mesh, parse_method(a.method), to_kgon_options(a.kgon)),
-                         a.patch_set);
+  if (a.patches) {
+    const Method method = parse_method(a.method);
+    set = bezier_patches(
+        mesh, Surface(mesh, method, surface_kgon_options(a.kgon, mesh, method, a.in.path)),
+        a.patch_set);
+  }
 
   if (a.json) {
     nlohmann::json j;

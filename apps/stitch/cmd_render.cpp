@@ -81,12 +81,14 @@ void run_render(const RenderArgs& a) {
         fmt::format("--mode checker needs texture coordinates: {} has none", a.in.path));
   }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
-  const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
+  const Method method = parse_method(a.method);
+  const KgonOptions kgons = surface_kgon_options(a.kgon, mesh, method, a.in.path, a.progress.quiet);
+  const Surface surface(mesh, method, kgons);
   SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
   stage.end();
   if (checker) {
     stage.begin("evaluating the texture coordinates");
-    const UvSurface uvs(mesh, report.corner_uvs, uv_mode, to_kgon_options(a.kgon));
+    const UvSurface uvs(mesh, report.corner_uvs, uv_mode, kgons);
     add_texcoords(scene, mesh, report.corner_uvs, uvs);
     stage.end();
     for (const std::string& w : uvs.warnings())

@@ -83,7 +83,8 @@ void warn(const std::string& path, const std::string& what) {
 
 /// The UVs to write, or null with a warning saying why the input's are not written.
 std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& mesh,
-                                      const BuildReport& report, StageReporter& stage) {
+                                      const KgonOptions& kgons, const BuildReport& report,
+                                      StageReporter& stage) {
   if (a.uv == "none") return nullptr;
   if (report.corner_uvs.empty()) {
     if (!a.uv.empty())
@@ -107,8 +108,7 @@ std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& m
   }
   stage.begin("building the UV surface");
   auto uvs = std::make_unique<UvSurface>(mesh, report.corner_uvs,
-                                         parse_uv_mode(a.uv.empty() ? "smooth" : a.uv),
-                                         to_kgon_options(a.kgon));
+                                         parse_uv_mode(a.uv.empty() ? "smooth" : a.uv), kgons);
   stage.end();
   for (const std::string& w : uvs->warnings()) warn(a.in.path, w);
   return uvs;
@@ -138,9 +138,11 @@ void run_smooth(const SmoothArgs& a) {
   check_memory(a, mesh);
   stage.begin(fmt::format("building the {} surface ({} patches)", a.method,
                           static_cast<int>(mesh.patch_corners().size())));
-  const Surface surface(mesh, parse_method(a.method), to_kgon_options(a.kgon));
+  const Method method = parse_method(a.method);
+  const KgonOptions kgons = surface_kgon_options(a.kgon, mesh, method, a.in.path, a.progress.quiet);
+  const Surface surface(mesh, method, kgons);
   stage.end();
-  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, report, stage);
+  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, kgons, report, stage);
   if (const std::string exact = write_exact_outputs(a.out, mesh, surface, a.exact, stage);
       !exact.empty()) {
     fmt::print("wrote {} ({}, method {})\n", a.out, exact, a.method);

@@ -111,6 +111,10 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                   "section 2 of the method as it stands for every face")
       ->check(CLI::IsMember({"openings", "doo-sabin"}))
       ->capture_default_str();
+  cmd->add_flag("!--no-unfold-tubes", k.unfold_tubes,
+                "keep the fitted K-gons of every tube made by inserting an edge between two "
+                "faces; by default, where that surface folds, the face's and the bridge's K-gon "
+                "controls are chosen by a search that checks the surface (docs/method.md)");
   cmd->add_option("--boundary", k.boundary,
                   "edge-and-corner: boundary vertices with one face are corners the surface "
                   "passes through (OpenSubdiv's default); edge-only: they lie on the smooth "
@@ -141,6 +145,39 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
   o.boundary = k.boundary == "edge-only" ? BoundaryInterpolation::edge_only
                                          : BoundaryInterpolation::edge_and_corner;
   return o;
+}
+
+KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
+                                 const std::string& where, bool quiet) {
+  KgonOptions o = to_kgon_options(k);
+  if (!k.unfold_tubes || method == Method::cc) return o;
+  UnfoldTubesOptions unfold;
+  unfold.rule = method == Method::asc ? BezierRule::asc : BezierRule::mdc;
+  report_unfolded_tubes(unfold_tubes(mesh, o, unfold), mesh, where, quiet);
+  return o;
+}
+
+void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
+                           const std::string& where, bool quiet) {
+  for (const TubeUnfolding& t : tubes) {
+    const Halfedge h = HalfedgeMesh::halfedge(t.bridge, 0);
+    const std::string tube = fmt::format(
+        "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and {} "
+        "crossing pairs of triangles at resolution {})",
+        t.face.idx + 1, mesh.origin(h).idx + 1, mesh.origin(HalfedgeMesh::twin(h)).idx + 1,
+        t.fitted.folds, t.fitted.self_intersections, LocalCheckOptions{}.resolution);
+    if (!t.unfolded())
+      fmt::print(stderr,
+                 "stitch: warning: {}: {}, and none of the {} K-gon settings tried is clean; "
+                 "see docs/method.md, \"Tubes that still fold\"\n",
+                 where, tube, t.settings_tried - 1);
+    else if (!quiet)
+      fmt::print(stderr,
+                 "stitch: note: {}: {}; chosen instead: face K-gon scale {:g} rotate {:g}, "
+                 "bridge K-gon scale {:g} (clean; --no-unfold-tubes keeps the fitted ones)\n",
+                 where, tube, t.face_control.scale, t.face_control.rotate_deg,
+                 t.bridge_control.scale);
+  }
 }
 
 void add_method_option(CLI::App* cmd, std::string& method, bool allow_all, InputOptions* in) {

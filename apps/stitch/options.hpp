@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/kgon/kgon.hpp"
 #include "stitch/mesh/build.hpp"
@@ -45,6 +46,7 @@ struct KgonCliOptions {
   std::string boundary = "edge-and-corner";
   double sharp_from = KgonOptions{}.sharp_from;
   std::string controls_path;  ///< --kgon-controls
+  bool unfold_tubes = true;   ///< --no-unfold-tubes turns it off
   /// Set by load_input: the per-element controls of a project or a --kgon-controls file, and a
   /// project's global control, which --kgon-scale, --kgon-rotate and --regularize override one
   /// by one when given.
@@ -53,10 +55,20 @@ struct KgonCliOptions {
   const CLI::Option *scale_option = nullptr, *rotate_option = nullptr, *regularize_option = nullptr;
 };
 /// Adds --kgon-scale, --kgon-rotate, --regularize, --kgon-controls, --kgon-construction,
-/// --boundary and --sharp-from.
+/// --no-unfold-tubes, --boundary and --sharp-from.
 /// With `in`, a .stitch input's K-gon controls reach `k` through load_input.
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in = nullptr);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
+/// The K-gon options a surface of `mesh` is built with: to_kgon_options and, unless
+/// --no-unfold-tubes was given or the method is cc (which has no K-gons), controls for the tubes
+/// whose fitted placement folds (unfold_tubes.hpp). Each such tube is reported on stderr against
+/// `where` (the input): what was chosen as a note (not under `quiet`), a tube that still folds
+/// as a warning.
+KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
+                                 const std::string& where, bool quiet = false);
+/// Reports unfold_tubes' results for `mesh` on stderr, as surface_kgon_options does.
+void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
+                           const std::string& where, bool quiet);
 
 /// A CLI11 check for a finite number from lo to hi (CLI::Range and CLI::PositiveNumber let NaN
 /// through, and a number too large to use would turn the output into NaN).

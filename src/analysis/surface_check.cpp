@@ -234,6 +234,8 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
       }
   }
 
+  if (options.crossings_only_when_unfolded && report.folds > 0) return report;
+
   // Candidate pairs from a uniform grid of about one triangle per cell.
   double mean_size = 0;
   for (int i = 0; i < nt; ++i) {

@@ -89,18 +89,20 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       update_kgons(mesh, options, surface.kgons, {f}, {}, {tube.bridge});
       for (Corner c : changed) surface.nets[c.idx] = build_control_net(mesh, surface.kgons, c);
     };
-    auto check = [&] {
-      PatchSampler sampler(method_of(unfold.rule), surface.nets, unfold.check.resolution);
+    auto check = [&](const LocalCheckOptions& options) {
+      PatchSampler sampler(method_of(unfold.rule), surface.nets, options.resolution);
       return check_patches(
           mesh, changed,
-          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; },
-          unfold.check);
+          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
     };
+    // The settings tried only need to be told clean or not.
+    LocalCheckOptions quick = unfold.check;
+    quick.surface.crossings_only_when_unfolded = true;
 
     TubeUnfolding result;
     result.face = f;
     result.bridge = tube.bridge;
-    result.fitted = check();
+    result.fitted = check(unfold.check);
     result.chosen = result.fitted;
     result.settings_tried = 1;
     if (result.fitted.clean()) continue;
@@ -109,7 +111,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       tube.set(options, s);
       rebuild();
       ++result.settings_tried;
-      LocalCheckReport report = check();
+      LocalCheckReport report = check(quick);
       if (report.clean()) {
         result.chosen = std::move(report);
         result.face_control = options.face[f.idx];

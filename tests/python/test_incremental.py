@@ -20,7 +20,10 @@ def meshes():
 
 def expect_same_as_fresh(live, method):
     """The live blocks equal an unwelded tessellation of a fresh Surface of the same mesh."""
-    fresh = stitch.Surface(live.mesh, method).tessellate(live.resolution, welded=False)
+    # The incremental surface keeps the fitted K-gons of tubes (it does not run the search that
+    # stitch.Surface runs where they fold), and moving the holed cube's vertices folds its tube.
+    fresh = stitch.Surface(live.mesh, method, unfold_tubes=False).tessellate(live.resolution,
+                                                                            welded=False)
     t = live.tessellation
     blocks = t.patches >= 0  # every patch's block; holes' half-edges have empty ones
     assert blocks.sum() == len(fresh.vertices)

@@ -198,3 +198,22 @@ def test_heavy_calls_release_the_gil():
     # Holding the GIL, the call would leave the counter where it was (a handful of increments
     # at the switches around it); released, the counter runs throughout.
     assert during > 1000
+
+
+def test_a_tube_that_folds_is_unfolded():
+    # Prism 16's half twist folds with the fitted K-gons (docs/method.md, "Tubes that still
+    # fold"); the search finds controls for its face and bridge, as stitch smooth does.
+    mesh = stitch.primitive("prism", 16)
+    mesh.edit("insert-edge 1@1 25@2")
+    surface = stitch.Surface(mesh)
+    [tube] = surface.unfolded_tubes
+    assert tube["face"] == 0 and tube["bridge"] == 48
+    assert tube["fitted_folds"] > 0 and tube["unfolded"]
+    assert (tube["face_scale"], tube["face_rotate"], tube["bridge_scale"]) != (1.0, 0.0, 1.0)
+    fitted = stitch.Surface(mesh, unfold_tubes=False)
+    assert fitted.unfolded_tubes == []
+    assert np.abs(surface.tessellate(2).vertices - fitted.tessellate(2).vertices).max() > 1e-3
+    # A tube that is clean already is left alone.
+    holed = stitch.primitive("cube")
+    holed.edit("insert-edge 1@1 5@2")
+    assert stitch.Surface(holed).unfolded_tubes == []

@@ -39,6 +39,10 @@ struct SurfaceCheckOptions {
   double degenerate_relative_area = 1e-14;
   /// At most this many of each kind are listed (all are counted).
   int max_listed = 20;
+  /// Crossings are not looked for when a fold was found (self_intersections stays 0): for a
+  /// caller that only needs to know whether the surface is clean (unfold_tubes' search), since
+  /// the crossing test is most of the time of a check.
+  bool crossings_only_when_unfolded = false;
 };
 
 struct SurfaceCheckReport {
