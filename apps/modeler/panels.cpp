@@ -177,6 +177,9 @@ void kgon_section(App& app, Widgets& ui) {
     scale = 1, rotate = 0, offset[0] = offset[1] = offset[2] = 0, regular = false;
     changed = true;
   }
+  bool unfold = s.unfold_folding_tubes;
+  if (ui.checkbox("unfold folding tubes", &unfold))
+    run_line(app, fmt::format("unfold-tubes {}", unfold ? "on" : "off"));
   if (!changed) return;
   const KgonControl n{scale, rotate, Vec3(offset[0], offset[1], offset[2]), regular};
   try {

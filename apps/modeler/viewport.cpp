@@ -94,8 +94,10 @@ void upload_overlays(const App& app, const View3D& view, const IncrementalSurfac
   view.renderer->set_markers(markers);
 }
 
-/// Uploads what changed: the recomputed patches' vertex blocks, or everything.
-void sync_view(const Session& s, View3D& view, const IncrementalSurface& surface, bool full) {
+/// Uploads what changed: the vertex blocks `blocks` (recomputed patches, slots laid out again), or
+/// everything.
+void sync_view(const Session& s, View3D& view, const IncrementalSurface& surface,
+               std::vector<int> blocks, bool full) {
   if (s.display.input_polygons) {
     if (full || view.geometry_dirty || !view.input_uploaded)
       view.renderer->set_surface(input_faces(s.document.mesh()));
@@ -106,8 +108,6 @@ void sync_view(const Session& s, View3D& view, const IncrementalSurface& surface
     view.input_uploaded = false;
   } else {
     // The blocks (indexed by corner) of recomputed patches and of slots laid out again.
-    std::vector<int> blocks = surface.relaid();
-    for (Corner c : surface.recomputed()) blocks.push_back(c.idx);
     view.renderer->update_surface_blocks(surface.tessellation(), std::move(blocks));
   }
   view.geometry_dirty = false;
@@ -145,7 +145,8 @@ void after_change(App& app, bool full) {
   Session& s = app.session;
   SceneViews& v = app.views;
   const Change missed = s.take_changes();
-  sync_view(s, v.main, s.surface, full);
+  // The session's list: an edit that unfolded a tube updated its surface twice.
+  sync_view(s, v.main, s.surface, s.changed_blocks(), full);
   if (s.display.split) {
     SurfaceUpdateStats stats;
     if (!v.split_current || v.split_surface.method() != *s.display.split ||
@@ -159,7 +160,9 @@ void after_change(App& app, bool full) {
       stats = v.split_surface.update(s.document.mesh(), s.document.kgon_options(), missed);
     }
     if (!v.split.renderer) v.split.renderer = std::make_unique<Renderer>();
-    sync_view(s, v.split, v.split_surface, stats.full);
+    std::vector<int> blocks = v.split_surface.relaid();
+    for (Corner c : v.split_surface.recomputed()) blocks.push_back(c.idx);
+    sync_view(s, v.split, v.split_surface, std::move(blocks), stats.full);
   } else {
     v.split_current = false;
   }

@@ -205,8 +205,7 @@ KgonControl Document::kgon_control(const KgonTarget& target) const {
   return it == map.end() ? KgonControl{} : it->second;
 }
 
-Change Document::set_kgon_control(const KgonTarget& target, const KgonControl& control,
-                                  bool merge) {
+void Document::check_control(const KgonTarget& target, const KgonControl& control) const {
   const HalfedgeMesh& m = state_.mesh;
   if (!target.global()) {
     const int i = target.element;
@@ -219,6 +218,38 @@ Change Document::set_kgon_control(const KgonTarget& target, const KgonControl& c
   if (!control.offset.allFinite() || !std::isfinite(control.scale) ||
       !std::isfinite(control.rotate_deg))
     throw UsageError("kgon: the control values must be finite");
+}
+
+Change Document::set_kgon_controls_in_last_edit(
+    const std::vector<std::pair<KgonTarget, KgonControl>>& controls) {
+  TopologyEdit* last = nullptr;
+  if (!done_.empty() && undone_.empty()) last = std::get_if<TopologyEdit>(&done_.back().edit);
+  if (!last) throw UsageError("K-gon controls: the last step is not a topology edit just made");
+  for (const auto& [target, control] : controls) {
+    if (target.global())
+      throw UsageError("K-gon controls: the global control is not part of a topology edit");
+    check_control(target, control);
+  }
+  Change c;
+  c.kind = Change::Kind::kgons;
+  for (const auto& [target, control] : controls) {
+    // Kept as given, a default control too: an element's own control stands instead of the
+    // global one (which reaches every K-gon but the 4-gons).
+    controls_of(state_.kgons, target.kind)[target.element] = control;
+    const Change one = kgon_change(target);
+    c.faces.insert(c.faces.end(), one.faces.begin(), one.faces.end());
+    c.vertices.insert(c.vertices.end(), one.vertices.begin(), one.vertices.end());
+    c.edges.insert(c.edges.end(), one.edges.begin(), one.edges.end());
+  }
+  last->kgons_after = state_.kgons;
+  // A new revision, as a merged drag gets: the document differs from anything saved meanwhile.
+  done_.back().revision_after = revision_ = next_revision_++;
+  return c;
+}
+
+Change Document::set_kgon_control(const KgonTarget& target, const KgonControl& control,
+                                  bool merge) {
+  check_control(target, control);
   KgonOptions after = state_.kgons;
   if (target.global()) {
     after.global = control;

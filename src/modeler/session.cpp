@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 
+#include "sort_unique.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
@@ -116,6 +118,15 @@ Change Session::take_changes() {
 }
 
 const SurfaceUpdateStats& Session::apply(const Change& change) {
+  unfoldings_.clear();
+  unfold_ms_ = 0.0;
+  update_surface(change);
+  check_after(change, surface.recomputed());
+  return last_update;
+}
+
+void Session::update_surface(const Change& change) {
+  earlier_blocks_.clear();
   remember(change);
   if (change.kind == Change::Kind::topology) selection.reset();
   try {
@@ -123,15 +134,70 @@ const SurfaceUpdateStats& Session::apply(const Change& change) {
   } catch (const Error& e) {
     fall_back_from_cc(e.what());
   }
+}
+
+void Session::check_after(const Change& change, const std::vector<Corner>& recomputed) {
   // Checked where the edit changed the surface, so its cost follows the edit; a full update
   // would make that the whole mesh, which `check` does on request.
   if (last_update.full)
     problems_ = {};
   else if (change.kind == Change::Kind::topology)
-    check_surface_near(surface.recomputed());
+    check_surface_near(recomputed);
   else if (!problems_.empty())
     check_surface_near({});
+}
+
+const SurfaceUpdateStats& Session::apply_edit(const Change& change) {
+  unfoldings_.clear();
+  unfold_ms_ = 0.0;
+  update_surface(change);
+  std::vector<Face> tubes;
+  if (unfold_folding_tubes && change.kind == Change::Kind::topology && !last_update.full &&
+      surface.method() != Method::cc)
+    tubes = tube_faces(document.mesh(), document.kgon_options(), change.faces);
+  if (tubes.empty()) {
+    check_after(change, surface.recomputed());
+    return last_update;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  KgonOptions kgons = document.kgon_options();
+  unfoldings_ = unfold_live_tubes(document.mesh(), kgons, surface, tubes);
+  unfold_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  last_update.milliseconds += unfold_ms_;
+  std::vector<std::pair<KgonTarget, KgonControl>> controls;
+  for (const TubeUnfolding& u : unfoldings_) {
+    if (!u.unfolded()) continue;
+    controls.emplace_back(KgonTarget{KgonKind::face, u.face.idx}, u.face_control);
+    controls.emplace_back(KgonTarget{KgonKind::edge, u.bridge.idx}, u.bridge_control);
+  }
+  if (controls.empty()) {
+    check_after(change, surface.recomputed());
+    return last_update;
+  }
+  // The edit's surface, then the controls' K-gons on it: the renderer and the health check need
+  // what both updates changed.
+  const SurfaceUpdateStats first = last_update;
+  std::vector<Corner> recomputed = surface.recomputed();
+  std::vector<int> blocks = changed_blocks();
+  update_surface(document.set_kgon_controls_in_last_edit(controls));
+  recomputed.insert(recomputed.end(), surface.recomputed().begin(), surface.recomputed().end());
+  detail::sort_unique(recomputed);
+  earlier_blocks_ = std::move(blocks);
+  last_update.full = first.full || last_update.full;
+  last_update.layout_changed = first.layout_changed || last_update.layout_changed;
+  last_update.candidate_patches += first.candidate_patches;
+  last_update.recomputed_patches = static_cast<int>(recomputed.size());
+  last_update.milliseconds += first.milliseconds;
+  check_after(change, recomputed);
   return last_update;
+}
+
+std::vector<int> Session::changed_blocks() const {
+  std::vector<int> blocks = earlier_blocks_;
+  blocks.insert(blocks.end(), surface.relaid().begin(), surface.relaid().end());
+  for (Corner c : surface.recomputed()) blocks.push_back(c.idx);
+  return blocks;
 }
 
 void Session::check_surface_near(const std::vector<Corner>& corners) {
@@ -143,6 +209,9 @@ void Session::check_surface_near(const std::vector<Corner>& corners) {
 void Session::rebuild() {
   remember(whole_change());
   problems_ = {};
+  unfoldings_.clear();
+  unfold_ms_ = 0.0;
+  earlier_blocks_.clear();
   try {
     last_update = surface.rebuild(document.mesh(), document.kgon_options(), display.method,
                                   display.resolution);
@@ -228,10 +297,13 @@ std::string append_file(Session& session, const std::string& path, const Vec3& o
   }
   const HalfedgeMesh& m = session.document.mesh();
   const int v0 = m.vertex_capacity(), f0 = m.face_capacity();
-  session.apply(session.document.append(mesh, kgons, offset, "append " + path));
+  session.apply_edit(session.document.append(mesh, kgons, offset, "append " + path));
   const int v1 = m.vertex_capacity(), f1 = m.face_capacity();
-  return fmt::format("appended {}: vertices {} to {}, faces {} to {}", path, v0 + 1, v1, f0 + 1,
-                     f1);
+  std::string message =
+      fmt::format("appended {}: vertices {} to {}, faces {} to {}", path, v0 + 1, v1, f0 + 1, f1);
+  if (const auto& u = session.tube_unfoldings(); !u.empty())
+    message += "; " + describe_unfoldings(u);
+  return message;
 }
 
 /// Writes the smooth surface as the session shows it (method, resolution, K-gon controls): a
@@ -282,12 +354,17 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
   if (find_operation(cmd)) {
     OperationReport report;
     const Change c = s.document.apply_operation(raw, &report);
-    s.apply(c);
+    s.apply_edit(c);
     std::string_view text = strip_comment(raw);
     text = text.substr(0, text.find_last_not_of(" \t\r") + 1);
     text = text.substr(std::min(text.size(), text.find_first_not_of(" \t")));
     result.message = report.summary(text);
     if (hooks.print) hooks.print(result.message);
+    if (const auto& u = s.tube_unfoldings(); !u.empty()) {
+      const std::string unfolded = describe_unfoldings(u);
+      result.message += "; " + unfolded;
+      if (hooks.print) hooks.print(unfolded);
+    }
     if (const SurfaceProblems& p = s.surface_problems(); !p.empty()) {
       result.message += "; " + p.summary();
       if (hooks.print) hooks.print("warning: " + describe_problems(s.document.mesh(), p));
@@ -523,6 +600,10 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     else
       result.message = "check: " + describe_problems(mesh, p);
     if (hooks.print) hooks.print(result.message);
+  } else if (cmd == "unfold-tubes") {
+    expect(w, 1, 1, "unfold-tubes on|off");
+    s.unfold_folding_tubes = on_off(w[1]);
+    result.message = fmt::format("unfolding of folding tubes {}", w[1]);
   } else if (cmd == "quit" || cmd == "exit") {
     expect(w, 0, 0, "quit");
     result.quit = true;
@@ -530,7 +611,9 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     throw UsageError(fmt::format(
         "unknown command '{}' (operations: {}; modeler: primitive, move-vertex, "
         "translate-vertex, select, kgon, undo, redo, method, resolution, mode, overlay, split, "
-        "view, frame, orbit, zoom, screenshot, save, export, open, append, info, check, quit)",
+        "view, frame, orbit, zoom, screenshot, save, export, open, append, info, check, "
+        "unfold-tubes, "
+        "quit)",
         cmd, operation_names()));
   }
   if (!s.warning.empty()) {

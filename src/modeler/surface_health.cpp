@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "sort_unique.hpp"
+#include "stitch/kgon/kgon_topology.hpp"
 
 namespace stitch::modeler {
 
@@ -64,6 +65,61 @@ SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSu
   out.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::vector<Face> tube_faces(const HalfedgeMesh& mesh, const KgonOptions& options,
+                             const std::vector<Face>& faces) {
+  std::vector<Face> out;
+  if (options.construction != KgonConstruction::openings) return out;
+  for (Face f : faces)
+    if (f.idx < mesh.face_capacity() && !mesh.is_deleted(f) && two_openings(mesh, f, options))
+      out.push_back(f);
+  detail::sort_unique(out);
+  return out;
+}
+
+std::vector<TubeUnfolding> unfold_live_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                             const IncrementalSurface& surface,
+                                             const std::vector<Face>& tubes) {
+  if (tubes.empty() || surface.method() == Method::cc) return {};
+  // A copy rather than build_bezier_surface: copying costs a pass over memory, building the
+  // K-gons and nets of the whole mesh again far more. unfold_tubes reads and rebuilds only the
+  // tubes' K-gons and the nets around them.
+  BezierSurface copy{surface.kgons(), surface.nets(), {}};
+  UnfoldTubesOptions unfold;
+  unfold.check.resolution = kHealthResolution;
+  unfold.rule = surface.method() == Method::asc ? BezierRule::asc : BezierRule::mdc;
+  return unfold_tubes(mesh, options, copy, tubes, unfold);
+}
+
+namespace {
+
+std::string pairs_of_triangles(const LocalCheckReport& r) {
+  if (r.folds > 0 && r.self_intersections > 0)
+    return fmt::format("{} folded and {} crossing pairs of triangles", r.folds,
+                       r.self_intersections);
+  if (r.folds > 0) return fmt::format("{} folded pairs of triangles", r.folds);
+  return fmt::format("{} crossing pairs of triangles", r.self_intersections);
+}
+
+}  // namespace
+
+std::string describe_unfoldings(const std::vector<TubeUnfolding>& unfoldings) {
+  std::vector<std::string> parts;
+  for (const TubeUnfolding& u : unfoldings) {
+    if (u.unfolded())
+      parts.push_back(fmt::format(
+          "tube of face {} folded ({}); K-gon controls chosen: face scale {:g}, rotate {:g}, "
+          "bridge scale {:g}: clean",
+          u.face.idx + 1, pairs_of_triangles(u.fitted), u.face_control.scale,
+          u.face_control.rotate_deg, u.bridge_control.scale));
+    else
+      parts.push_back(
+          fmt::format("tube of face {} folds ({}); none of the {} K-gon settings "
+                      "tried is clean",
+                      u.face.idx + 1, pairs_of_triangles(u.fitted), u.settings_tried));
+  }
+  return fmt::format("{}", fmt::join(parts, "; "));
 }
 
 void add_problem_outlines(const IncrementalSurface& surface, const std::vector<Corner>& corners,

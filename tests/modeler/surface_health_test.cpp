@@ -33,10 +33,16 @@ std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method meth
 // tests used before, no longer fold.
 constexpr const char* kFoldingEdit = "insert-edge 1@1 22@2";
 constexpr int kFoldingPrism = 14;
+// The session unfolds such tubes after the edit (prism 14's is clean with its face K-gon rotated
+// by -20 degrees: tube_unfolding_test.cpp), so the tests of how folds are reported and checked
+// turn that off; the cube's refined twist below finds no clean setting, and the icosahedron's
+// bridge is not placed as a tube, but they need not depend on that.
+constexpr const char* kKeepFolds = "unfold-tubes off";
 
 TEST(SurfaceHealth, TheTwistedTubeIsReportedAndUndoClearsIt) {
   Session s(make_prism(kFoldingPrism));
   EXPECT_TRUE(s.surface_problems().empty());
+  run_script_line(s, kKeepFolds, {});
   Printed printed;
   const ScriptResult r = run_script_line(s, kFoldingEdit, printed.hooks());
   const SurfaceProblems& p = s.surface_problems();
@@ -82,7 +88,7 @@ TEST(SurfaceHealth, DisplayResolutionAndMethodChangesKeepTheAnswer) {
   // face K-gon is stretched along the helix, and prism 6's half twist, used before that, since it
   // is stretched at all.)
   Session s(make_primitive("icosahedron", {}));
-  ASSERT_FALSE(run_script(s, {"resolution 16", "insert-edge 6@1 2@3"}, {}));
+  ASSERT_FALSE(run_script(s, {kKeepFolds, "resolution 16", "insert-edge 6@1 2@3"}, {}));
   const std::vector<Corner> found = s.surface_problems().corners;
   EXPECT_EQ(found.size(), 4u);
   EXPECT_EQ(found, whole_surface_problems(s.document.mesh(), Method::mdc));
@@ -112,7 +118,7 @@ TEST(SurfaceHealth, CheckCommandLooksAtTheWholeSurface) {
 
 TEST(SurfaceHealth, MovesRecheckOnlyTheProblemsFound) {
   Session s(make_prism(kFoldingPrism));
-  ASSERT_FALSE(run_script(s, {kFoldingEdit}, {}));
+  ASSERT_FALSE(run_script(s, {kKeepFolds, kFoldingEdit}, {}));
   const std::vector<Corner> before = s.surface_problems().corners;
   ASSERT_FALSE(before.empty());
   // A small move of a vertex away from the new edge: the folds stay, and only the patches
@@ -134,7 +140,7 @@ TEST(SurfaceHealth, WorkFollowsTheEditNotTheMesh) {
     HalfedgeMesh mesh = make_cube();
     for (int i = 0; i < steps; ++i) mesh = catmull_clark_step(mesh);
     Session s(std::move(mesh));
-    ASSERT_FALSE(run_script(s, {op}, {}));
+    ASSERT_FALSE(run_script(s, {kKeepFolds, op}, {}));
     found.push_back(s.surface_problems());
     EXPECT_FALSE(found.back().empty());
   }

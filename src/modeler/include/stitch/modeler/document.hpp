@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -70,6 +71,13 @@ class Document {
   /// Sets the control of one element's K-gon (or the global one). Throws stitch::Error for an
   /// element that does not exist.
   Change set_kgon_control(const KgonTarget& target, const KgonControl& control, bool merge = false);
+  /// Sets per-element controls as part of the last step, a topology edit just made
+  /// (apply_operation or append), so that one undo takes back the edit and the controls together:
+  /// the controls the session chooses for the tubes an edit made (Session::apply_edit). Throws
+  /// stitch::Error, with the document unchanged, when the last step is not such an edit or was
+  /// undone, for a global target, or for an element that does not exist.
+  Change set_kgon_controls_in_last_edit(
+      const std::vector<std::pair<KgonTarget, KgonControl>>& controls);
   /// The control in effect for the target (the element's own, else the default).
   [[nodiscard]] KgonControl kgon_control(const KgonTarget& target) const;
 
@@ -111,6 +119,9 @@ class Document {
     long revision_before = 0, revision_after = 0;  ///< for modified()
   };
 
+  /// Throws stitch::Error when the target's element does not exist or the control's values are
+  /// not finite.
+  void check_control(const KgonTarget& target, const KgonControl& control) const;
   Change apply(const Command& command, bool forward);
   void record(Command command);
 

@@ -18,6 +18,10 @@
 //   screenshot PATH    save [PATH]    open PATH    info    quit
 //   check                            the whole surface for folds and self-intersections (an
 //                                    edit checks the patches it changed: surface_problems)
+//   unfold-tubes on|off              whether an edit that makes a tube (a face with two
+//                                    openings, e.g. insert-edge between two faces) whose surface
+//                                    folds chooses K-gon controls for it (unfold_tubes.hpp), in
+//                                    the same undo step; on by default
 //   append PATH [--offset X,Y,Z]     adds a mesh or project as one more component (one undo
 //                                    step), moved by the offset
 //   export PATH                      the smooth surface as shown (method, resolution, K-gon
@@ -60,8 +64,25 @@ struct Session {
 
   /// A session on `mesh`, framed in the iso view, surface built.
   explicit Session(HalfedgeMesh mesh = {});
+  /// Whether a new topology edit unfolds the tubes it made (apply_edit; `unfold-tubes on|off`).
+  bool unfold_folding_tubes = true;
+
   /// Brings the surface up to date after a document change; returns (and keeps) the stats.
   const SurfaceUpdateStats& apply(const Change& change);
+  /// The same after a topology edit just made (an operation or an append, not an undo or redo,
+  /// which bring back what the step holds): with unfold_folding_tubes, where the faces it touched
+  /// include tubes whose surface folds, chooses K-gon controls for them (unfold_live_tubes) and
+  /// adds them to the edit's undo step, so the surface shown and checked is the unfolded one.
+  /// The stats cover both updates of the surface then.
+  const SurfaceUpdateStats& apply_edit(const Change& change);
+  /// What the last apply_edit found for the folding tubes it made (empty after any other update).
+  [[nodiscard]] const std::vector<TubeUnfolding>& tube_unfoldings() const { return unfoldings_; }
+  /// The wall time of the last apply_edit's search for tube controls (0 when it had no tube).
+  [[nodiscard]] double unfold_milliseconds() const { return unfold_ms_; }
+  /// The tessellation blocks (slots, as the surface numbers them) the last update changed, for a
+  /// renderer to upload again: the surface's relaid() and recomputed() ones, and after an edit
+  /// whose tubes were unfolded, which updates the surface twice, those of the first update too.
+  [[nodiscard]] std::vector<int> changed_blocks() const;
   /// The document changes since the last call, for a second surface that follows the document
   /// (the split view): combined() of them, or whole after a rebuild. Kind none if there were
   /// none.
@@ -83,7 +104,14 @@ struct Session {
 
  private:
   void fall_back_from_cc(const std::string& why);
+  /// apply() up to the health check.
+  void update_surface(const Change& change);
+  /// The health check after `change` (apply), on the patches `recomputed`.
+  void check_after(const Change& change, const std::vector<Corner>& recomputed);
   SurfaceProblems problems_;
+  std::vector<TubeUnfolding> unfoldings_;
+  double unfold_ms_ = 0.0;
+  std::vector<int> earlier_blocks_;  ///< the first update's changed blocks (changed_blocks)
   /// Changes not yet taken; after many, one whole change stands for them all.
   std::vector<Change> untaken_;
   void remember(Change change);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stitch/analysis/local_check.hpp"
+#include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/render/overlays.hpp"
 #include "stitch/tess/incremental_surface.hpp"
 
@@ -39,6 +40,27 @@ inline constexpr int kHealthResolution = LocalCheckOptions{}.resolution;
 /// which has no nets of its own.
 SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSurface& surface,
                                    const std::vector<Corner>& changed);
+
+/// The faces among `faces` (those an edit touched) with two openings, the tubes whose K-gons the
+/// openings construction places (insert-edge between two faces makes one): the faces
+/// unfold_tubes looks at, found at a cost that follows the edit (faces_with_two_openings is a
+/// pass over the mesh).
+std::vector<Face> tube_faces(const HalfedgeMesh& mesh, const KgonOptions& options,
+                             const std::vector<Face>& faces);
+
+/// unfold_tubes (include/stitch/analysis/unfold_tubes.hpp) on `tubes` of the live surface, which
+/// must be up to date with `mesh` and `options`, judged with the surface's method (mdc or asc;
+/// nothing for cc, which has no nets of its own). The search runs on a copy of the surface's
+/// K-gons and nets, so nothing is built or evaluated for the rest of the mesh; the chosen
+/// controls go to `options`, and the live surface is left as it was (the caller applies them).
+std::vector<TubeUnfolding> unfold_live_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                             const IncrementalSurface& surface,
+                                             const std::vector<Face>& tubes);
+
+/// What unfold_live_tubes found, for the status bar: "tube of face 3 folded (18 folded pairs of
+/// triangles); K-gon controls chosen: face scale 1.2, rotate -30, bridge scale 1: clean", or that
+/// it still folds; several joined by "; ", empty for none.
+std::string describe_unfoldings(const std::vector<TubeUnfolding>& unfoldings);
 
 /// Colour of the outlines of problem patches.
 inline const Colour problem_colour{0.90f, 0.05f, 0.05f};
