@@ -160,23 +160,12 @@ KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& me
 void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
                            const std::string& where, bool quiet) {
   for (const TubeUnfolding& t : tubes) {
-    const Halfedge h = HalfedgeMesh::halfedge(t.bridge, 0);
-    const std::string tube = fmt::format(
-        "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and {} "
-        "crossing pairs of triangles at resolution {})",
-        t.face.idx + 1, mesh.origin(h).idx + 1, mesh.origin(HalfedgeMesh::twin(h)).idx + 1,
-        t.fitted.folds, t.fitted.self_intersections, LocalCheckOptions{}.resolution);
     if (!t.unfolded())
-      fmt::print(stderr,
-                 "stitch: warning: {}: {}, and none of the {} K-gon settings tried is clean; "
-                 "see docs/method.md, \"Tubes that still fold\"\n",
-                 where, tube, t.settings_tried - 1);
+      fmt::print(stderr, "stitch: warning: {}: {}; see docs/method.md, \"Tubes that still fold\"\n",
+                 where, describe(mesh, t));
     else if (!quiet)
-      fmt::print(stderr,
-                 "stitch: note: {}: {}; chosen instead: face K-gon scale {:g} rotate {:g}, "
-                 "bridge K-gon scale {:g} (clean; --no-unfold-tubes keeps the fitted ones)\n",
-                 where, tube, t.face_control.scale, t.face_control.rotate_deg,
-                 t.bridge_control.scale);
+      fmt::print(stderr, "stitch: note: {}: {}; --no-unfold-tubes keeps the fitted ones\n", where,
+                 describe(mesh, t));
   }
 }
 

@@ -1,5 +1,7 @@
 #include "stitch/analysis/unfold_tubes.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,6 +63,21 @@ const std::vector<TubeSetting>& tube_settings() {
   return settings;
 }
 
+std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
+  const Halfedge h = HalfedgeMesh::halfedge(tube.bridge, 0);
+  const std::string folds = fmt::format(
+      "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and {} crossing "
+      "pairs of triangles at resolution {})",
+      tube.face.idx + 1, mesh.origin(h).idx + 1, mesh.origin(HalfedgeMesh::twin(h)).idx + 1,
+      tube.fitted.folds, tube.fitted.self_intersections, tube.resolution);
+  if (!tube.unfolded())
+    return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
+                       tube.settings_tried - 1);
+  return fmt::format(
+      "{}; chosen instead: face K-gon scale {:g} rotate {:g}, bridge K-gon scale {:g} (clean)",
+      folds, tube.face_control.scale, tube.face_control.rotate_deg, tube.bridge_control.scale);
+}
+
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options) {
   std::vector<Face> out;
   if (options.construction != KgonConstruction::openings) return out;
@@ -105,6 +122,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     result.fitted = check(unfold.check);
     result.chosen = result.fitted;
     result.settings_tried = 1;
+    result.resolution = unfold.check.resolution;
     if (result.fitted.clean()) continue;
     for (const TubeSetting& s : tube_settings()) {
       if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.bridge_scale == 1) continue;

@@ -302,7 +302,7 @@ std::string append_file(Session& session, const std::string& path, const Vec3& o
   std::string message =
       fmt::format("appended {}: vertices {} to {}, faces {} to {}", path, v0 + 1, v1, f0 + 1, f1);
   if (const auto& u = session.tube_unfoldings(); !u.empty())
-    message += "; " + describe_unfoldings(u);
+    message += "; " + describe_unfoldings(m, u);
   return message;
 }
 
@@ -361,7 +361,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     result.message = report.summary(text);
     if (hooks.print) hooks.print(result.message);
     if (const auto& u = s.tube_unfoldings(); !u.empty()) {
-      const std::string unfolded = describe_unfoldings(u);
+      const std::string unfolded = describe_unfoldings(s.document.mesh(), u);
       result.message += "; " + unfolded;
       if (hooks.print) hooks.print(unfolded);
     }

@@ -92,33 +92,10 @@ std::vector<TubeUnfolding> unfold_live_tubes(const HalfedgeMesh& mesh, KgonOptio
   return unfold_tubes(mesh, options, copy, tubes, unfold);
 }
 
-namespace {
-
-std::string pairs_of_triangles(const LocalCheckReport& r) {
-  if (r.folds > 0 && r.self_intersections > 0)
-    return fmt::format("{} folded and {} crossing pairs of triangles", r.folds,
-                       r.self_intersections);
-  if (r.folds > 0) return fmt::format("{} folded pairs of triangles", r.folds);
-  return fmt::format("{} crossing pairs of triangles", r.self_intersections);
-}
-
-}  // namespace
-
-std::string describe_unfoldings(const std::vector<TubeUnfolding>& unfoldings) {
+std::string describe_unfoldings(const HalfedgeMesh& mesh,
+                                const std::vector<TubeUnfolding>& unfoldings) {
   std::vector<std::string> parts;
-  for (const TubeUnfolding& u : unfoldings) {
-    if (u.unfolded())
-      parts.push_back(fmt::format(
-          "tube of face {} folded ({}); K-gon controls chosen: face scale {:g}, rotate {:g}, "
-          "bridge scale {:g}: clean",
-          u.face.idx + 1, pairs_of_triangles(u.fitted), u.face_control.scale,
-          u.face_control.rotate_deg, u.bridge_control.scale));
-    else
-      parts.push_back(
-          fmt::format("tube of face {} folds ({}); none of the {} K-gon settings "
-                      "tried is clean",
-                      u.face.idx + 1, pairs_of_triangles(u.fitted), u.settings_tried));
-  }
+  for (const TubeUnfolding& u : unfoldings) parts.push_back(describe(mesh, u));
   return fmt::format("{}", fmt::join(parts, "; "));
 }
 

@@ -64,16 +64,18 @@ TEST(TubeUnfolding, TheTwistedTubeIsUnfoldedInTheEditsUndoStep) {
   EXPECT_EQ(k.edge.at(u.bridge.idx), u.bridge_control);
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 0}), u.face_control);
 
-  // "tube of face 1 folded (18 folded pairs of triangles); K-gon controls chosen: face scale 1.2,
-  // rotate -30, bridge scale 1: clean" when written; the setting is the library's to choose.
-  const std::string said = describe_unfoldings(s.tube_unfoldings());
-  EXPECT_EQ(said.rfind(fmt::format("tube of face 1 folded ({} folded pairs of triangles); K-gon "
-                                   "controls chosen: face scale ",
+  // "the tube of face 1 (bridge 1 25) folds with its fitted K-gons (18 folded and 0 crossing
+  // pairs of triangles at resolution 16); chosen instead: face K-gon scale 1.2 rotate -30,
+  // bridge K-gon scale 1 (clean)" when written; the setting is the library's to choose.
+  const std::string said = describe_unfoldings(s.document.mesh(), s.tube_unfoldings());
+  EXPECT_EQ(said.rfind(fmt::format("the tube of face 1 (bridge 1 25) folds with its fitted K-gons "
+                                   "({} folded and 0 crossing pairs of triangles at resolution "
+                                   "16); chosen instead: face K-gon scale ",
                                    u.fitted.folds),
                        0),
             0u)
       << said;
-  EXPECT_TRUE(said.ends_with(": clean")) << said;
+  EXPECT_TRUE(said.ends_with(" (clean)")) << said;
   EXPECT_NE(r.message.find("; " + said), std::string::npos) << r.message;
   ASSERT_EQ(printed.lines.size(), 2u);  // the edit, then the unfolding (no warning)
   EXPECT_EQ(printed.lines[1], said);
@@ -129,7 +131,7 @@ TEST(TubeUnfolding, AnAppendedTubeIsUnfoldedUnlessItHasControls) {
       run_script_line(s, "append " + dir.file("tube.obj") + " --offset -5,0,0", {});
   ASSERT_EQ(s.tube_unfoldings().size(), 1u);
   EXPECT_TRUE(s.tube_unfoldings()[0].unfolded());
-  EXPECT_NE(r.message.find("; tube of face "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("; the tube of face "), std::string::npos) << r.message;
   EXPECT_TRUE(s.surface_problems().empty());
   EXPECT_EQ(s.document.kgon_options().face.size(), 2u);
   ASSERT_FALSE(run_script(s, {"undo"}, {}));

@@ -57,10 +57,10 @@ std::vector<TubeUnfolding> unfold_live_tubes(const HalfedgeMesh& mesh, KgonOptio
                                              const IncrementalSurface& surface,
                                              const std::vector<Face>& tubes);
 
-/// What unfold_live_tubes found, for the status bar: "tube of face 3 folded (18 folded pairs of
-/// triangles); K-gon controls chosen: face scale 1.2, rotate -30, bridge scale 1: clean", or that
-/// it still folds; several joined by "; ", empty for none.
-std::string describe_unfoldings(const std::vector<TubeUnfolding>& unfoldings);
+/// What unfold_live_tubes found, for the status bar: describe (unfold_tubes.hpp) of each, joined
+/// by "; ", empty for none.
+std::string describe_unfoldings(const HalfedgeMesh& mesh,
+                                const std::vector<TubeUnfolding>& unfoldings);
 
 /// Colour of the outlines of problem patches.
 inline const Colour problem_colour{0.90f, 0.05f, 0.05f};
