@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "eval/patch_sampler.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
@@ -51,6 +52,31 @@ struct TubeControls {
     options.edge.erase(bridge.idx);
   }
 };
+
+Vec3 rim_centre(const HalfedgeMesh& mesh, const std::vector<Corner>& rim) {
+  Vec3 sum = Vec3::Zero();
+  for (Corner c : rim) sum += mesh.position(mesh.origin(c));
+  return sum / static_cast<double>(rim.size());
+}
+
+/// Whether the segment from a to b misses the patches of `corners`, each sampled on the grid of
+/// resolution n and cut into two triangles per cell.
+bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const Vec3& b,
+               const PatchGridSampler& sample) {
+  TriangleSoup soup;
+  for (Corner c : corners) {
+    const int first = static_cast<int>(soup.positions.size());
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) soup.positions.push_back(sample(c, i, j));
+    auto at = [&](int i, int j) { return first + i * (n + 1) + j; };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        soup.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        soup.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  }
+  return segment_hits(soup, a, b).empty();
+}
 
 Method method_of(BezierRule rule) {
   return rule == BezierRule::mdc ? Method::mdc : Method::asc;
@@ -112,6 +138,14 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
           mesh, changed,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
     };
+    const Vec3 centre_a = rim_centre(mesh, openings->first),
+               centre_b = rim_centre(mesh, openings->second);
+    auto open = [&] {
+      PatchSampler sampler(method_of(unfold.rule), surface.nets, unfold.check.resolution);
+      return axis_open(
+          changed, unfold.check.resolution, centre_a, centre_b,
+          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; });
+    };
     // The settings tried only need to be told clean or not.
     LocalCheckOptions quick = unfold.check;
     quick.surface.crossings_only_when_unfolded = true;
@@ -124,23 +158,41 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     result.settings_tried = 1;
     result.resolution = unfold.check.resolution;
     if (result.fitted.clean()) continue;
+    // A clean setting that closes the tube (the line between the rims' centres meets its wall)
+    // is kept only when no clean setting leaves it open.
+    std::optional<TubeSetting> closed;
+    LocalCheckReport closed_report;
+    std::optional<TubeSetting> chosen;
     for (const TubeSetting& s : tube_settings()) {
       if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.bridge_scale == 1) continue;
       tube.set(options, s);
       rebuild();
       ++result.settings_tried;
       LocalCheckReport report = check(quick);
-      if (report.clean()) {
+      if (!report.clean()) continue;
+      if (open()) {
+        chosen = s;
         result.chosen = std::move(report);
-        result.face_control = options.face[f.idx];
-        result.bridge_control = options.edge[tube.bridge.idx];
         break;
       }
+      if (!closed) {
+        closed = s;
+        closed_report = std::move(report);
+      }
     }
-    if (!result.unfolded()) {
+    if (!chosen && closed) {
+      chosen = closed;
+      result.chosen = std::move(closed_report);
+      result.axis_open = false;
+    }
+    if (chosen) {
+      tube.set(options, *chosen);
+      result.face_control = options.face[f.idx];
+      result.bridge_control = options.edge[tube.bridge.idx];
+    } else {
       tube.clear(options);
-      rebuild();
     }
+    rebuild();
     out.push_back(std::move(result));
   }
   return out;
