@@ -159,7 +159,9 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     result.resolution = unfold.check.resolution;
     if (result.fitted.clean()) continue;
     // A clean setting that closes the tube (the line between the rims' centres meets its wall)
-    // is kept only when no clean setting leaves it open.
+    // is kept only when no clean setting leaves it open, and only when the fitted K-gons close
+    // it too: a hole pinched shut is not what the user made, a fold at least shows.
+    const bool fitted_open = open();
     std::optional<TubeSetting> closed;
     LocalCheckReport closed_report;
     std::optional<TubeSetting> chosen;
@@ -175,7 +177,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
         result.chosen = std::move(report);
         break;
       }
-      if (!closed) {
+      if (!closed && !fitted_open) {
         closed = s;
         closed_report = std::move(report);
       }

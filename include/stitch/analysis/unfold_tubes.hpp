@@ -39,7 +39,8 @@ struct TubeUnfolding {
   int resolution = 0;          ///< of the checks
   /// Whether the segment between the two rims' centres misses the tube's patches with the chosen
   /// setting. A clean setting that closes the tube is chosen only when no clean one leaves it
-  /// open (the segment is not a bent tube's axis, so it may meet the wall of a clean one).
+  /// open and the fitted K-gons close it too (the segment is not a bent tube's axis, so it may
+  /// meet the wall of a clean one).
   bool axis_open = true;
   [[nodiscard]] bool unfolded() const { return chosen.clean(); }
 };
@@ -57,10 +58,11 @@ const std::vector<TubeSetting>& tube_settings();
 /// their neighbours fold or cross, and on which the user set no control (neither on the face nor
 /// on its bridge): tries tube_settings() in order and keeps the first that the local check finds
 /// clean and that leaves the segment between the rims' centres open (the first clean one if
-/// none does), adding it to options.face and options.edge. `surface` is the Bézier surface built
-/// for `mesh` with `options`; it is left built with the options as they are on return (only the
-/// K-gons and nets of the faces searched are touched, so the cost follows the tubes, not the
-/// mesh). Returns one entry per folding face, unfolded or not, in the order of `faces`.
+/// none does and the fitted K-gons do not either), adding it to options.face and options.edge.
+/// `surface` is the Bézier surface built for `mesh` with `options`; it is left built with the
+/// options as they are on return (only the K-gons and nets of the faces searched are touched, so
+/// the cost follows the tubes, not the mesh). Returns one entry per folding face, unfolded or not,
+/// in the order of `faces`.
 std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
                                         BezierSurface& surface, const std::vector<Face>& faces,
                                         const UnfoldTubesOptions& unfold = {});
