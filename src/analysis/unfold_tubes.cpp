@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "eval/patch_sampler.hpp"
+#include "mesh/sort_unique.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/net/control_net.hpp"
 
@@ -53,14 +54,20 @@ struct TubeControls {
   }
 };
 
+/// The centroid of a rim's vertices, each once (the bridge vertex begins and ends the rim's
+/// corners).
 Vec3 rim_centre(const HalfedgeMesh& mesh, const std::vector<Corner>& rim) {
+  std::vector<Vertex> vertices;
+  for (Corner c : rim) vertices.push_back(mesh.origin(c));
+  detail::sort_unique(vertices);
   Vec3 sum = Vec3::Zero();
-  for (Corner c : rim) sum += mesh.position(mesh.origin(c));
-  return sum / static_cast<double>(rim.size());
+  for (Vertex v : vertices) sum += mesh.position(v);
+  return sum / static_cast<double>(vertices.size());
 }
 
 /// Whether the segment from a to b misses the patches of `corners`, each sampled on the grid of
-/// resolution n and cut into two triangles per cell.
+/// resolution n. Each cell is cut along both diagonals: a wall that comes this close to the line
+/// blocks it in some tessellation of the same samples.
 bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const Vec3& b,
                const PatchGridSampler& sample) {
   TriangleSoup soup;
@@ -73,6 +80,8 @@ bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const V
       for (int j = 0; j < n; ++j) {
         soup.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
         soup.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        soup.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+        soup.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
       }
   }
   return segment_hits(soup, a, b).empty();
@@ -138,12 +147,16 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
           mesh, changed,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
     };
+    // The line through the rims' centres, 3 times their distance beyond each (as the tube tests
+    // look along it): the wall can bulge across it outside the rims' planes too.
     const Vec3 centre_a = rim_centre(mesh, openings->first),
                centre_b = rim_centre(mesh, openings->second);
+    const Vec3 axis_a = centre_a + 3 * (centre_a - centre_b),
+               axis_b = centre_b + 3 * (centre_b - centre_a);
     auto open = [&] {
       PatchSampler sampler(method_of(unfold.rule), surface.nets, unfold.check.resolution);
       return axis_open(
-          changed, unfold.check.resolution, centre_a, centre_b,
+          changed, unfold.check.resolution, axis_a, axis_b,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; });
     };
     // The settings tried only need to be told clean or not.

@@ -37,10 +37,10 @@ struct TubeUnfolding {
   KgonControl bridge_control;  ///< and scale of the bridge's edge K-gon
   int settings_tried = 0;      ///< settings checked, the fitted one included
   int resolution = 0;          ///< of the checks
-  /// Whether the segment between the two rims' centres misses the tube's patches with the chosen
-  /// setting. A clean setting that closes the tube is chosen only when no clean one leaves it
-  /// open and the fitted K-gons close it too (the segment is not a bent tube's axis, so it may
-  /// meet the wall of a clean one).
+  /// Whether the line through the two rims' centres (3 times their distance beyond each) misses
+  /// the tube's patches with the chosen setting. A clean setting that closes the tube is chosen
+  /// only when no clean one leaves it open and the fitted K-gons close it too (the line is not a
+  /// bent tube's axis, so it may meet the wall of a clean one).
   bool axis_open = true;
   [[nodiscard]] bool unfolded() const { return chosen.clean(); }
 };
@@ -57,7 +57,7 @@ const std::vector<TubeSetting>& tube_settings();
 /// For every face of `faces` with two openings (the openings construction) whose patches or
 /// their neighbours fold or cross, and on which the user set no control (neither on the face nor
 /// on its bridge): tries tube_settings() in order and keeps the first that the local check finds
-/// clean and that leaves the segment between the rims' centres open (the first clean one if
+/// clean and that leaves the line through the rims' centres open (the first clean one if
 /// none does and the fitted K-gons do not either), adding it to options.face and options.edge.
 /// `surface` is the Bézier surface built for `mesh` with `options`; it is left built with the
 /// options as they are on return (only the K-gons and nets of the faces searched are touched, so
