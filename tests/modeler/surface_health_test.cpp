@@ -4,21 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include "printed_lines.hpp"
 #include "stitch/modeler/session.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
 
 namespace stitch::modeler {
 namespace {
-
-struct Printed {
-  std::vector<std::string> lines;
-  ScriptHooks hooks() {
-    ScriptHooks h;
-    h.print = [this](const std::string& t) { lines.push_back(t); };
-    return h;
-  }
-};
 
 /// The problem patches of the whole surface, from the library's check of every patch.
 std::vector<Corner> whole_surface_problems(const HalfedgeMesh& mesh, Method method) {

@@ -6,21 +6,13 @@
 #include <algorithm>
 
 #include "incremental_check.hpp"
+#include "printed_lines.hpp"
 #include "stitch/modeler/session.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
 
 namespace stitch::modeler {
 namespace {
-
-struct Printed {
-  std::vector<std::string> lines;
-  ScriptHooks hooks() {
-    ScriptHooks h;
-    h.print = [this](const std::string& t) { lines.push_back(t); };
-    return h;
-  }
-};
 
 // Prism 16's half twist: the fitted placement of the merged face's K-gons folds.
 constexpr const char* kTwist = "insert-edge 1@1 25@2";
