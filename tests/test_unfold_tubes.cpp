@@ -107,6 +107,22 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
   }
 }
 
+TEST(UnfoldTubes, EveryTwistOfPrismsFourteenToSeventeenIsCleanAndOpen) {
+  // Issue 13's prisms beyond the fitted ones: with the fitted K-gons prism 14's half twist and
+  // prism 15's six- and seven-step twists fold at resolution 16 and prism 16's half twist blocks
+  // the axis (TwistedTubes.ManySidedPrisms); with the chosen controls every twist of vertex 1 (on
+  // a regular prism, every corner pair up to symmetry) is clean and open there. Prism 18's eight-
+  // and nine-step twists still fold (docs/method.md, "Tubes that still fold").
+  for (int n = 14; n <= 17; ++n) {
+    SCOPED_TRACE("prism " + std::to_string(n));
+    const auto results = test::sweep(
+        make_prism(n), 1, 2, test::C1Check::none, nullptr, test::SweepTessellation::resolution_16,
+        test::SweepScope::first_corner_of_a, test::TubeKgons::unfolded);
+    EXPECT_EQ(static_cast<int>(results.size()), n);
+    test::expect_clean_and_open(results, n);
+  }
+}
+
 TEST(UnfoldTubes, CleanTubesAndOtherFacesAreLeftAsTheyAre) {
   // A straight hole through the cube and a quarter twist of prism 5 are clean with the fitted
   // K-gons: nothing is chosen, the options and the surface stay as they were.
