@@ -1,0 +1,44 @@
+// stitch::unfold_tubes on one tube whose fitted K-gons fold: the search of the K-gon controls
+// (docs/method.md, "Tubes that still fold"), the Bézier surface built once outside the loop and
+// the options reset each iteration, so each one searches from the fitted placement again.
+//   unfold_tubes/0   prism 16's half twist (insert-edge 1@1 25@2): found after 26 settings
+//   unfold_tubes/1   prism 4 six high, straight (insert-edge 1@1 5@2): none clean, all 126 tried
+// The counter `settings` is the number of settings checked per search.
+#include <benchmark/benchmark.h>
+
+#include "stitch/analysis/unfold_tubes.hpp"
+#include "stitch/topology/operation.hpp"
+#include "stitch/topology/primitives.hpp"
+
+namespace {
+
+using namespace stitch;
+
+HalfedgeMesh folding_tube(int kind) {
+  HalfedgeMesh m = make_prism(kind == 0 ? 16 : 4);
+  if (kind == 1)
+    for (Vertex v : m.vertices()) m.position(v).z() *= 3;
+  apply_operation(m, kind == 0 ? "insert-edge 1@1 25@2" : "insert-edge 1@1 5@2");
+  return m;
+}
+
+void unfold_tubes(benchmark::State& state) {
+  const HalfedgeMesh mesh = folding_tube(static_cast<int>(state.range(0)));
+  BezierSurface surface = build_bezier_surface(mesh);
+  const std::vector<Face> tubes = faces_with_two_openings(mesh, {});
+  int settings = 0;
+  for (auto _ : state) {
+    KgonOptions options;
+    const auto found = stitch::unfold_tubes(mesh, options, surface, tubes);
+    settings = found.empty() ? 0 : found[0].settings_tried;
+    benchmark::DoNotOptimize(found.data());
+    // Back to the fitted K-gons for the next search, not timed.
+    state.PauseTiming();
+    surface = build_bezier_surface(mesh);
+    state.ResumeTiming();
+  }
+  state.counters["settings"] = settings;
+}
+BENCHMARK(unfold_tubes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
