@@ -60,6 +60,7 @@ py::list unfolded_tubes(const SurfaceHandle& s) {
     d["face_rotate"] = t.face_control.rotate_deg;
     d["bridge_scale"] = t.bridge_control.scale;
     d["settings_tried"] = t.settings_tried;
+    d["axis_open"] = t.axis_open;
     out.append(std::move(d));
   }
   return out;
@@ -275,7 +276,9 @@ void bind_surface(py::module_& m) {
                              "(0-based face and edge indices), fitted_folds and "
                              "fitted_self_intersections (pairs of triangles at resolution 16), "
                              "unfolded (a clean setting was found), face_scale, face_rotate "
-                             "(degrees) and bridge_scale (the controls used), settings_tried")
+                             "(degrees) and bridge_scale (the controls used), settings_tried, "
+                             "axis_open (the line through the openings' centres misses the "
+                             "tube)")
       .def_property_readonly("method",
                              [](const SurfaceHandle& s) { return to_string(s.surface->method()); })
       .def_property_readonly("mesh", [](const SurfaceHandle& s) { return MeshHandle{s.mesh}; })

@@ -109,8 +109,11 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
     return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
                        tube.settings_tried - 1);
   return fmt::format(
-      "{}; chosen instead: face K-gon scale {:g} rotate {:g}, bridge K-gon scale {:g} (clean)",
-      folds, tube.face_control.scale, tube.face_control.rotate_deg, tube.bridge_control.scale);
+      "{}; chosen instead: face K-gon scale {:g} rotate {:g}, bridge K-gon scale {:g} (clean{})",
+      folds, tube.face_control.scale, tube.face_control.rotate_deg, tube.bridge_control.scale,
+      tube.axis_open ? ""
+                     : "; the line through the openings' centres meets the tube, as it does "
+                       "with the fitted K-gons");
 }
 
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options) {
@@ -206,6 +209,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       result.bridge_control = options.edge[tube.bridge.idx];
     } else {
       tube.clear(options);
+      result.axis_open = fitted_open;
     }
     rebuild();
     out.push_back(std::move(result));
