@@ -612,8 +612,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
         "unknown command '{}' (operations: {}; modeler: primitive, move-vertex, "
         "translate-vertex, select, kgon, undo, redo, method, resolution, mode, overlay, split, "
         "view, frame, orbit, zoom, screenshot, save, export, open, append, info, check, "
-        "unfold-tubes, "
-        "quit)",
+        "unfold-tubes, quit)",
         cmd, operation_names()));
   }
   if (!s.warning.empty()) {
