@@ -38,9 +38,9 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, do
   std::shared_ptr<const HalfedgeMesh> snapshot = mesh.mesh;
   py::gil_scoped_release release;
   std::vector<TubeUnfolding> unfolded;
-  if (unfold && m != Method::cc) {
+  if (unfold) {
     UnfoldTubesOptions o;
-    o.rule = m == Method::asc ? BezierRule::asc : BezierRule::mdc;
+    o.method = m;
     unfolded = unfold_tubes(*snapshot, options, o);
   }
   auto surface = std::make_shared<const Surface>(*snapshot, m, options);

@@ -160,9 +160,7 @@ void after_change(App& app, bool full) {
       stats = v.split_surface.update(s.document.mesh(), s.document.kgon_options(), missed);
     }
     if (!v.split.renderer) v.split.renderer = std::make_unique<Renderer>();
-    std::vector<int> blocks = v.split_surface.relaid();
-    for (Corner c : v.split_surface.recomputed()) blocks.push_back(c.idx);
-    sync_view(s, v.split, v.split_surface, std::move(blocks), stats.full);
+    sync_view(s, v.split, v.split_surface, changed_blocks(v.split_surface), stats.full);
   } else {
     v.split_current = false;
   }

@@ -150,9 +150,9 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
 KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
                                  const std::string& where, bool quiet) {
   KgonOptions o = to_kgon_options(k);
-  if (!k.unfold_tubes || method == Method::cc) return o;
+  if (!k.unfold_tubes) return o;
   UnfoldTubesOptions unfold;
-  unfold.rule = method == Method::asc ? BezierRule::asc : BezierRule::mdc;
+  unfold.method = method;
   report_unfolded_tubes(unfold_tubes(mesh, o, unfold), mesh, where, quiet);
   return o;
 }

@@ -87,10 +87,6 @@ bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const V
   return segment_hits(soup, a, b).empty();
 }
 
-Method method_of(BezierRule rule) {
-  return rule == BezierRule::mdc ? Method::mdc : Method::asc;
-}
-
 }  // namespace
 
 const std::vector<TubeSetting>& tube_settings() {
@@ -124,10 +120,21 @@ std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOp
   return out;
 }
 
+std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                          const std::vector<Face>& faces) {
+  std::vector<Face> out;
+  for (Face f : faces)
+    if (f.idx < mesh.face_capacity() && !mesh.is_deleted(f) && two_openings(mesh, f, options))
+      out.push_back(f);
+  detail::sort_unique(out);
+  return out;
+}
+
 std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
                                         BezierSurface& surface, const std::vector<Face>& faces,
                                         const UnfoldTubesOptions& unfold) {
   std::vector<TubeUnfolding> out;
+  if (unfold.method == Method::cc) return out;
   for (Face f : faces) {
     if (f.idx >= mesh.face_capacity() || mesh.is_deleted(f)) continue;
     const auto openings = two_openings(mesh, f, options);
@@ -145,7 +152,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       for (Corner c : changed) surface.nets[c.idx] = build_control_net(mesh, surface.kgons, c);
     };
     auto check = [&](const LocalCheckOptions& options) {
-      PatchSampler sampler(method_of(unfold.rule), surface.nets, options.resolution);
+      PatchSampler sampler(unfold.method, surface.nets, options.resolution);
       return check_patches(
           mesh, changed,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
@@ -157,7 +164,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     const Vec3 axis_a = centre_a + 3 * (centre_a - centre_b),
                axis_b = centre_b + 3 * (centre_b - centre_a);
     auto open = [&] {
-      PatchSampler sampler(method_of(unfold.rule), surface.nets, unfold.check.resolution);
+      PatchSampler sampler(unfold.method, surface.nets, unfold.check.resolution);
       return axis_open(
           changed, unfold.check.resolution, axis_a, axis_b,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; });
@@ -220,7 +227,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
 std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
                                         const UnfoldTubesOptions& unfold) {
   const std::vector<Face> faces = faces_with_two_openings(mesh, options);
-  if (faces.empty()) return {};
+  if (faces.empty() || unfold.method == Method::cc) return {};
   BezierSurface surface = build_bezier_surface(mesh, options);
   return unfold_tubes(mesh, options, surface, faces, unfold);
 }

@@ -154,7 +154,7 @@ const SurfaceUpdateStats& Session::apply_edit(const Change& change) {
   std::vector<Face> tubes;
   if (unfold_folding_tubes && change.kind == Change::Kind::topology && !last_update.full &&
       surface.method() != Method::cc)
-    tubes = tube_faces(document.mesh(), document.kgon_options(), change.faces);
+    tubes = faces_with_two_openings(document.mesh(), document.kgon_options(), change.faces);
   if (tubes.empty()) {
     check_after(change, surface.recomputed());
     return last_update;
@@ -193,10 +193,16 @@ const SurfaceUpdateStats& Session::apply_edit(const Change& change) {
   return last_update;
 }
 
+std::vector<int> changed_blocks(const IncrementalSurface& surface) {
+  std::vector<int> blocks = surface.relaid();
+  for (Corner c : surface.recomputed()) blocks.push_back(c.idx);
+  return blocks;
+}
+
 std::vector<int> Session::changed_blocks() const {
   std::vector<int> blocks = earlier_blocks_;
-  blocks.insert(blocks.end(), surface.relaid().begin(), surface.relaid().end());
-  for (Corner c : surface.recomputed()) blocks.push_back(c.idx);
+  const std::vector<int> last = stitch::modeler::changed_blocks(surface);
+  blocks.insert(blocks.end(), last.begin(), last.end());
   return blocks;
 }
 

@@ -7,7 +7,6 @@
 #include <chrono>
 
 #include "sort_unique.hpp"
-#include "stitch/kgon/kgon_topology.hpp"
 
 namespace stitch::modeler {
 
@@ -67,28 +66,17 @@ SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSu
   return out;
 }
 
-std::vector<Face> tube_faces(const HalfedgeMesh& mesh, const KgonOptions& options,
-                             const std::vector<Face>& faces) {
-  std::vector<Face> out;
-  if (options.construction != KgonConstruction::openings) return out;
-  for (Face f : faces)
-    if (f.idx < mesh.face_capacity() && !mesh.is_deleted(f) && two_openings(mesh, f, options))
-      out.push_back(f);
-  detail::sort_unique(out);
-  return out;
-}
-
 std::vector<TubeUnfolding> unfold_live_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
                                              const IncrementalSurface& surface,
                                              const std::vector<Face>& tubes) {
-  if (tubes.empty() || surface.method() == Method::cc) return {};
+  if (tubes.empty() || surface.method() == Method::cc) return {};  // no copy for nothing
   // A copy rather than build_bezier_surface: copying costs a pass over memory, building the
   // K-gons and nets of the whole mesh again far more. unfold_tubes reads and rebuilds only the
   // tubes' K-gons and the nets around them.
   BezierSurface copy{surface.kgons(), surface.nets(), {}};
   UnfoldTubesOptions unfold;
   unfold.check.resolution = kHealthResolution;
-  unfold.rule = surface.method() == Method::asc ? BezierRule::asc : BezierRule::mdc;
+  unfold.method = surface.method();
   return unfold_tubes(mesh, options, copy, tubes, unfold);
 }
 

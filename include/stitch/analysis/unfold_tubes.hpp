@@ -23,8 +23,9 @@ namespace stitch {
 struct UnfoldTubesOptions {
   /// The check that decides whether a setting is clean (resolution 16, as the tube tests).
   LocalCheckOptions check;
-  /// The rule the patches are evaluated with (mdc and asc share the nets but not the surface).
-  BezierRule rule = BezierRule::mdc;
+  /// The method whose surface is judged (mdc and asc share the nets but not the surface); with
+  /// cc nothing is searched, since its surface does not come from the K-gons.
+  Method method = Method::mdc;
 };
 
 /// What the search found for one face with two openings whose surface folded.
@@ -80,5 +81,9 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube);
 
 /// The faces of the mesh whose K-gons the openings construction builds (two openings).
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options);
+/// The same among `faces` (e.g. those an edit touched; deleted ones skipped), sorted, without
+/// repeats: a cost that follows the list, not the mesh.
+std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                          const std::vector<Face>& faces);
 
 }  // namespace stitch

@@ -46,6 +46,10 @@
 
 namespace stitch::modeler {
 
+/// The tessellation blocks (slots) the surface's last update changed, for a renderer to upload
+/// again: its relaid() slots and its recomputed() patches.
+std::vector<int> changed_blocks(const IncrementalSurface& surface);
+
 struct Session {
   Document document;
   std::string path;  ///< the document's file; empty when untitled

@@ -41,13 +41,6 @@ inline constexpr int kHealthResolution = LocalCheckOptions{}.resolution;
 SurfaceProblems check_live_surface(const HalfedgeMesh& mesh, const IncrementalSurface& surface,
                                    const std::vector<Corner>& changed);
 
-/// The faces among `faces` (those an edit touched) with two openings, the tubes whose K-gons the
-/// openings construction places (insert-edge between two faces makes one): the faces
-/// unfold_tubes looks at, found at a cost that follows the edit (faces_with_two_openings is a
-/// pass over the mesh).
-std::vector<Face> tube_faces(const HalfedgeMesh& mesh, const KgonOptions& options,
-                             const std::vector<Face>& faces);
-
 /// unfold_tubes (include/stitch/analysis/unfold_tubes.hpp) on `tubes` of the live surface, which
 /// must be up to date with `mesh` and `options`, judged with the surface's method (mdc or asc;
 /// nothing for cc, which has no nets of its own). The search runs on a copy of the surface's
