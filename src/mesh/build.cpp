@@ -201,7 +201,7 @@ class PairingSearch {
       if (t >= 0) {
         c = next_[t];
       } else {  // through the hole: on along the unpaired edge that arrives at v
-        if (boundary_in_[v] < 0) return false;
+        if (boundary_in_[v] < 0) break;
         c = next_[boundary_in_[v]];
       }
       ++steps;
@@ -231,7 +231,11 @@ class PairingSearch {
           continue;
         }
       }
-      if (++work_ > kSearchBudget) return false;
+      // A choice costs its group's size (next_permutation and set_twins), not one step: with a
+      // group of thousands of faces on one vertex pair, counting one would let the budget run
+      // for minutes.
+      work_ += grp.count;
+      if (work_ > kSearchBudget) return false;
       set_twins(g);
       --pending_[grp.a];
       --pending_[grp.b];
