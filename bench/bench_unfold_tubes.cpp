@@ -2,7 +2,7 @@
 // (docs/method.md, "Tubes that still fold"), the Bézier surface built once outside the loop and
 // the options reset each iteration, so each one searches from the fitted placement again.
 //   unfold_tubes/0   prism 16's half twist (insert-edge 1@1 25@2): found after 26 settings
-//   unfold_tubes/1   prism 4 six high, straight (insert-edge 1@1 5@2): none clean, all 126 tried
+//   unfold_tubes/1   prism 4 six high, one step (insert-edge 1@1 6@2): none clean, all 252 tried
 // The counter `settings` is the number of settings checked per search.
 #include <benchmark/benchmark.h>
 
@@ -18,7 +18,7 @@ HalfedgeMesh folding_tube(int kind) {
   HalfedgeMesh m = make_prism(kind == 0 ? 16 : 4);
   if (kind == 1)
     for (Vertex v : m.vertices()) m.position(v).z() *= 3;
-  apply_operation(m, kind == 0 ? "insert-edge 1@1 25@2" : "insert-edge 1@1 5@2");
+  apply_operation(m, kind == 0 ? "insert-edge 1@1 25@2" : "insert-edge 1@1 6@2");
   return m;
 }
 

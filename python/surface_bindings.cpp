@@ -58,6 +58,7 @@ py::list unfolded_tubes(const SurfaceHandle& s) {
     d["unfolded"] = t.unfolded();
     d["face_scale"] = t.face_control.scale;
     d["face_rotate"] = t.face_control.rotate_deg;
+    d["face_stretch"] = t.face_control.stretch;
     d["bridge_scale"] = t.bridge_control.scale;
     d["settings_tried"] = t.settings_tried;
     d["axis_open"] = t.axis_open;

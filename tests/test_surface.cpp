@@ -99,6 +99,33 @@ TEST(Kgons, ControlsScaleRotateAndRegularize) {
   for (int i = 0; i < 3; ++i) EXPECT_LT((r.vertex[0].points[i] - a.points[i]).norm(), 1e-14);
 }
 
+TEST(Kgons, StretchScalesAlongOneDirectionOfThePlane) {
+  // The cube's vertex 0 K-gon is a triangle in a plane with normal along a space diagonal. A
+  // stretch of 2 along a direction with a component along the normal acts on the direction's
+  // projection d into the plane: each point's offset from the centroid keeps its part across d
+  // and doubles its part along d. Along the normal itself nothing changes. Tolerances: a few
+  // units of round-off on coordinates of size 1.
+  const HalfedgeMesh mesh = test::cube_mesh();
+  const Kgon plain = build_kgons(mesh).vertex[0];
+  const Vec3 n = plain.normal;
+  const Vec3 direction(1, 0, 0);
+  const Vec3 d = (direction - direction.dot(n) * n).normalized();
+  KgonOptions opt;
+  opt.vertex[0] = KgonControl{.stretch = 2, .stretch_along = direction};
+  const Kgon stretched = build_kgons(mesh, opt).vertex[0];
+  ASSERT_EQ(stretched.size(), 3);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 before = plain.points[i] - plain.centroid;
+    const Vec3 after = stretched.points[i] - stretched.centroid;
+    EXPECT_NEAR(after.dot(d), 2 * before.dot(d), 1e-14);
+    EXPECT_NEAR((after - after.dot(d) * d).norm(), (before - before.dot(d) * d).norm(), 1e-14);
+    EXPECT_NEAR(after.dot(n), 0, 1e-14);  // still in the plane
+  }
+  opt.vertex[0] = KgonControl{.stretch = 2, .stretch_along = n};
+  const Kgon along_normal = build_kgons(mesh, opt).vertex[0];
+  for (int i = 0; i < 3; ++i) EXPECT_LT((along_normal.points[i] - plain.points[i]).norm(), 1e-14);
+}
+
 TEST(ControlNets, BoundaryPointsAreMidpointsAndNeighboursShareCurves) {
   const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_pyramid.obj"));
   const BezierSurface s = build_bezier_surface(mesh);

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "stitch/analysis/unfold_tubes.hpp"
+#include "stitch/eval/surface.hpp"
+#include "stitch/net/control_net.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "tube_sweep.hpp"
 
@@ -48,13 +50,14 @@ void expect_built_with(const HalfedgeMesh& mesh, const BezierSurface& surface,
 
 TEST(UnfoldTubes, SettingsRunNearestFirst) {
   const std::vector<TubeSetting>& settings = tube_settings();
-  ASSERT_EQ(settings.size(), 6u * 7u * 3u);
+  ASSERT_EQ(settings.size(), 6u * 7u * 2u * 3u);
   EXPECT_EQ(settings[0].face_scale, 1.0);
   EXPECT_EQ(settings[0].face_rotate_deg, 0.0);
+  EXPECT_EQ(settings[0].face_stretch, 1.0);
   EXPECT_EQ(settings[0].bridge_scale, 1.0);
   auto distance = [](const TubeSetting& s) {
     return std::abs(std::log(s.face_scale)) + std::abs(s.face_rotate_deg) / 30 * std::log(1.5) +
-           std::abs(std::log(s.bridge_scale));
+           std::abs(std::log(s.face_stretch)) + std::abs(std::log(s.bridge_scale));
   };
   for (size_t i = 1; i < settings.size(); ++i)
     EXPECT_LE(distance(settings[i - 1]), distance(settings[i]) + 1e-12) << "setting " << i;
@@ -77,7 +80,9 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
       {"frustum 10, three steps", prism(10, 2, 0.5), "insert-edge 1@1 14@2"},
       {"prism 8, height 0.5, three steps", prism(8, 0.5), "insert-edge 1@1 12@2"},
       {"prism 14, half twist", prism(14), "insert-edge 1@1 22@2"},
-      {"prism 16, half twist", prism(16), "insert-edge 1@1 25@2"}};
+      {"prism 16, half twist", prism(16), "insert-edge 1@1 25@2"},
+      {"prism 4, height 6, straight", prism(4, 6), "insert-edge 1@1 5@2"},
+      {"prism 18, eight steps", prism(18), "insert-edge 1@1 27@2"}};
   for (const Tube& t : tubes) {
     SCOPED_TRACE(t.name);
     const Vec3 ca = test::face_centre(t.solid, Face(0)), cb = test::face_centre(t.solid, Face(1));
@@ -107,19 +112,50 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
   }
 }
 
-TEST(UnfoldTubes, EveryTwistOfPrismsFourteenToSeventeenIsCleanAndOpen) {
+TEST(UnfoldTubes, EveryTwistOfPrismsFourteenToEighteenIsCleanAndOpen) {
   // Issue 13's prisms beyond the fitted ones: with the fitted K-gons prism 14's half twist and
-  // prism 15's six- and seven-step twists fold at resolution 16 and prism 16's half twist blocks
-  // the axis (TwistedTubes.ManySidedPrisms); with the chosen controls every twist of vertex 1 (on
-  // a regular prism, every corner pair up to symmetry) is clean and open there. Prism 18's eight-
-  // and nine-step twists still fold (docs/method.md, "Tubes that still fold").
-  for (int n = 14; n <= 17; ++n) {
+  // prism 15's six- and seven-step twists fold at resolution 16, prism 16's half twist blocks
+  // the axis (TwistedTubes.ManySidedPrisms) and prism 18's eight- and nine-step twists fold; with
+  // the chosen controls every twist of vertex 1 (on a regular prism, every corner pair up to
+  // symmetry) is clean and open there. Prism 18's needs the stretch along the tube. Prism 20's
+  // half twist still folds (docs/method.md, "Tubes that still fold").
+  for (int n = 14; n <= 18; ++n) {
     SCOPED_TRACE("prism " + std::to_string(n));
     const auto results = test::sweep(
         make_prism(n), 1, 2, test::C1Check::none, nullptr, test::SweepTessellation::resolution_16,
         test::SweepScope::first_corner_of_a, test::TubeKgons::unfolded);
     EXPECT_EQ(static_cast<int>(results.size()), n);
     test::expect_clean_and_open(results, n);
+  }
+}
+
+TEST(UnfoldTubes, ALongTubeIsStretchedAlongItsAxis) {
+  // Prism 4 six high, straight, folds at the rims' corners away from the bridge whatever the
+  // face K-gon's scale, rotation or the bridge's scale (docs/method.md); the face K-gon stretched
+  // by 1.5 along the tube (the z axis) is clean.
+  const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 5@2");
+  KgonOptions options;
+  const std::vector<TubeUnfolding> found = unfold_tubes(mesh, options);
+  ASSERT_EQ(found.size(), 1u);
+  ASSERT_TRUE(found[0].unfolded());
+  EXPECT_TRUE(found[0].axis_open);
+  const KgonControl& c = found[0].face_control;
+  EXPECT_EQ(c.stretch, 1.5);
+  // From one rim's centre to the other's: exactly along z, 6 long, on this prism.
+  EXPECT_NEAR(std::abs(c.stretch_along.z()), 6, 1e-12);
+  EXPECT_NEAR(c.stretch_along.head<2>().norm(), 0, 1e-12);
+  // Without the stretch no setting is clean.
+  for (const TubeSetting& s : tube_settings()) {
+    if (s.face_stretch != 1) continue;
+    KgonOptions plain;
+    plain.face[0] = KgonControl{.scale = s.face_scale, .rotate_deg = s.face_rotate_deg};
+    plain.edge[found[0].bridge.idx] = KgonControl{.scale = s.bridge_scale};
+    const LocalCheckReport report = check_patches(
+        mesh, Surface(mesh, Method::mdc, plain),
+        nets_reading(mesh,
+                     KgonElements{.faces = {Face(0)}, .vertices = {}, .edges = {found[0].bridge}}));
+    EXPECT_FALSE(report.clean()) << s.face_scale << " " << s.face_rotate_deg << " "
+                                 << s.bridge_scale;
   }
 }
 
@@ -172,16 +208,17 @@ TEST(UnfoldTubes, TheUsersControlsAreKept) {
   for (const TubeSetting& s : tube_settings())
     if (std::abs(s.face_scale * 0.95 - found[0].face_control.scale) < 1e-15 &&
         s.face_rotate_deg == found[0].face_control.rotate_deg &&
+        s.face_stretch == found[0].face_control.stretch &&
         s.bridge_scale == found[0].bridge_control.scale)
       chosen = &s;
   EXPECT_NE(chosen, nullptr) << "scale " << found[0].face_control.scale;
 }
 
 TEST(UnfoldTubes, ATubeNoSettingUnfoldsIsLeftFitted) {
-  // Prism 4 six high, straight: its folds lie at the rims' far corners, which neither the face
-  // K-gon nor the bridge's reaches (docs/method.md). Every setting is tried, none is kept, and
-  // the surface is left as the fitted K-gons build it.
-  const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 5@2");
+  // Prism 4 six high, one step of twist: its folds lie at the rims' far corners, which no
+  // setting of the face K-gon or the bridge's reaches (docs/method.md). Every setting is tried,
+  // none is kept, and the surface is left as the fitted K-gons build it.
+  const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 6@2");
   KgonOptions options;
   BezierSurface surface = build_bezier_surface(mesh, options);
   const std::vector<TubeUnfolding> found =

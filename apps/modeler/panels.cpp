@@ -161,7 +161,7 @@ void kgon_section(App& app, Widgets& ui) {
           (use_global ? std::string("global control")
                       : fmt::format("K-gon of {} {}", kKgonKinds[int(t.kind)], t.element + 1)));
   KgonControl c = s.document.kgon_control(t);
-  float scale = float(c.scale), rotate = float(c.rotate_deg);
+  float scale = float(c.scale), rotate = float(c.rotate_deg), stretch = float(c.stretch);
   float offset[3] = {float(c.offset.x()), float(c.offset.y()), float(c.offset.z())};
   bool regular = c.regularize;
   bool changed = false, merge = false;
@@ -172,16 +172,28 @@ void kgon_section(App& app, Widgets& ui) {
   merge |= ImGui::IsItemActive() && !ImGui::IsItemActivated();
   changed |= ui.drag3("offset", offset, 0.01f);
   merge |= ImGui::IsItemActive() && !ImGui::IsItemActivated();
+  // The stretch's direction is set by script (`kgon stretch S X Y Z`) or by the tube search;
+  // the slider only changes its amount.
+  if (c.stretch_along != Vec3::Zero()) {
+    changed |= ui.slider("stretch", &stretch, 0.25f, 4.0f);
+    merge |= ImGui::IsItemActive() && !ImGui::IsItemActivated();
+  }
   changed |= ui.checkbox("regularise", &regular);
   if (ui.button("Reset")) {
-    scale = 1, rotate = 0, offset[0] = offset[1] = offset[2] = 0, regular = false;
+    scale = 1, rotate = 0, stretch = 1, offset[0] = offset[1] = offset[2] = 0, regular = false;
+    c.stretch_along = Vec3::Zero();
     changed = true;
   }
   bool unfold = s.unfold_folding_tubes;
   if (ui.checkbox("unfold folding tubes", &unfold))
     run_line(app, fmt::format("unfold-tubes {}", unfold ? "on" : "off"));
   if (!changed) return;
-  const KgonControl n{scale, rotate, Vec3(offset[0], offset[1], offset[2]), regular};
+  KgonControl n = c;
+  n.scale = scale;
+  n.rotate_deg = rotate;
+  n.offset = Vec3(offset[0], offset[1], offset[2]);
+  n.regularize = regular;
+  n.stretch = stretch;
   try {
     s.apply(s.document.set_kgon_control(t, n, merge));
     app.status = fmt::format("K-gon updated: {} patches in {:.2f} ms",

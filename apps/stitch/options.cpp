@@ -103,7 +103,7 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                     "(makes star-shaped K-gons convex)");
   cmd->add_option("--kgon-controls", k.controls_path,
                   "a JSON file of per-element K-gon controls (face, vertex or edge: scale, "
-                  "rotate, offset, regularize; docs/modeler.md); they replace those of a "
+                  "rotate, offset, stretch, regularize; docs/modeler.md); they replace those of a "
                   ".stitch input for the same elements");
   cmd->add_option("--kgon-construction", k.construction,
                   "openings: faces made by inserting an edge between two faces get a K-gon on "

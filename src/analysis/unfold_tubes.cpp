@@ -20,14 +20,16 @@ namespace {
 double distance(const TubeSetting& s) {
   const double step = std::log(1.5);
   return std::abs(std::log(s.face_scale)) / step + std::abs(s.face_rotate_deg) / 30.0 +
-         std::abs(std::log(s.bridge_scale)) / step;
+         std::abs(std::log(s.face_stretch)) / step + std::abs(std::log(s.bridge_scale)) / step;
 }
 
 std::vector<TubeSetting> make_settings() {
   std::vector<TubeSetting> out;
   for (double face_scale : {1.0, 0.8, 1.2, 0.6, 1.5, 0.4})
     for (double rotate : {0.0, -10.0, 10.0, -20.0, 20.0, -30.0, 30.0})
-      for (double bridge_scale : {1.0, 0.5, 1.5}) out.push_back({face_scale, rotate, bridge_scale});
+      for (double stretch : {1.0, 1.5})
+        for (double bridge_scale : {1.0, 0.5, 1.5})
+          out.push_back({face_scale, rotate, stretch, bridge_scale});
   // Nearest first; ties keep the order above (smaller changes listed first).
   std::stable_sort(out.begin(), out.end(), [](const TubeSetting& a, const TubeSetting& b) {
     return distance(a) < distance(b);
@@ -39,12 +41,17 @@ std::vector<TubeSetting> make_settings() {
 struct TubeControls {
   Face face;
   Edge bridge;
+  Vec3 along;  ///< the tube's direction, from one rim's centre to the other's
   void set(KgonOptions& options, const TubeSetting& s) const {
     // On top of the global control, which the face K-gon (K > 4) has otherwise and which a
     // per-element control would replace.
     KgonControl c = options.global;
     c.scale *= s.face_scale;
     c.rotate_deg += s.face_rotate_deg;
+    if (s.face_stretch != 1) {
+      c.stretch = s.face_stretch;
+      c.stretch_along = along;
+    }
     options.face[face.idx] = c;
     options.edge[bridge.idx] = KgonControl{.scale = s.bridge_scale};
   }
@@ -104,9 +111,14 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
   if (!tube.unfolded())
     return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
                        tube.settings_tried - 1);
+  const std::string stretch =
+      tube.face_control.stretch == 1
+          ? ""
+          : fmt::format(" stretch {:g} along the tube", tube.face_control.stretch);
   return fmt::format(
-      "{}; chosen instead: face K-gon scale {:g} rotate {:g}, bridge K-gon scale {:g} (clean{})",
-      folds, tube.face_control.scale, tube.face_control.rotate_deg, tube.bridge_control.scale,
+      "{}; chosen instead: face K-gon scale {:g} rotate {:g}{}, bridge K-gon scale {:g} (clean{})",
+      folds, tube.face_control.scale, tube.face_control.rotate_deg, stretch,
+      tube.bridge_control.scale,
       tube.axis_open ? ""
                      : "; the line through the openings' centres meets the tube, as it does "
                        "with the fitted K-gons");
@@ -139,9 +151,16 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     if (f.idx >= mesh.face_capacity() || mesh.is_deleted(f)) continue;
     const auto openings = two_openings(mesh, f, options);
     if (!openings) continue;
-    const TubeControls tube{f, HalfedgeMesh::edge(openings->first.back())};
+    const Edge bridge = HalfedgeMesh::edge(openings->first.back());
     // The user's own controls on either K-gon are theirs to keep.
-    if (options.face.contains(f.idx) || options.edge.contains(tube.bridge.idx)) continue;
+    if (options.face.contains(f.idx) || options.edge.contains(bridge.idx)) continue;
+    // The line through the rims' centres, 3 times their distance beyond each (as the tube tests
+    // look along it): the wall can bulge across it outside the rims' planes too.
+    const Vec3 centre_a = rim_centre(mesh, openings->first),
+               centre_b = rim_centre(mesh, openings->second);
+    const Vec3 axis_a = centre_a + 3 * (centre_a - centre_b),
+               axis_b = centre_b + 3 * (centre_b - centre_a);
+    const TubeControls tube{f, bridge, centre_b - centre_a};
 
     KgonElements reach;
     reach.faces = {f};
@@ -157,12 +176,6 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
           mesh, changed,
           [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
     };
-    // The line through the rims' centres, 3 times their distance beyond each (as the tube tests
-    // look along it): the wall can bulge across it outside the rims' planes too.
-    const Vec3 centre_a = rim_centre(mesh, openings->first),
-               centre_b = rim_centre(mesh, openings->second);
-    const Vec3 axis_a = centre_a + 3 * (centre_a - centre_b),
-               axis_b = centre_b + 3 * (centre_b - centre_a);
     auto open = [&] {
       PatchSampler sampler(unfold.method, surface.nets, unfold.check.resolution);
       return axis_open(
@@ -189,7 +202,8 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     LocalCheckReport closed_report;
     std::optional<TubeSetting> chosen;
     for (const TubeSetting& s : tube_settings()) {
-      if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.bridge_scale == 1) continue;
+      if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.face_stretch == 1 && s.bridge_scale == 1)
+        continue;
       tube.set(options, s);
       rebuild();
       ++result.settings_tried;

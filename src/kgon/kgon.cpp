@@ -115,7 +115,16 @@ void apply_control(Kgon& g, const KgonControl& ctl) {
   if (ctl == KgonControl{}) return;
   if (ctl.regularize) regularize(g.points, g.centroid);
   const Eigen::AngleAxisd rot(ctl.rotate_deg * std::numbers::pi / 180.0, g.normal);
-  for (Vec3& p : g.points) p = g.centroid + ctl.scale * (rot * (p - g.centroid)) + ctl.offset;
+  Vec3 along = ctl.stretch_along - ctl.stretch_along.dot(g.normal) * g.normal;
+  // Relative to the direction's own length, so that a direction (nearly) along the normal
+  // stretches nothing rather than an arbitrary in-plane direction left by round-off.
+  const bool stretched = ctl.stretch != 1 && along.norm() > 1e-9 * ctl.stretch_along.norm();
+  if (stretched) along.normalize();
+  for (Vec3& p : g.points) {
+    Vec3 q = ctl.scale * (rot * (p - g.centroid));
+    if (stretched) q += (ctl.stretch - 1) * q.dot(along) * along;
+    p = g.centroid + q + ctl.offset;
+  }
   g.centroid += ctl.offset;
 }
 

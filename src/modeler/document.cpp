@@ -216,7 +216,8 @@ void Document::check_control(const KgonTarget& target, const KgonControl& contro
     if (!exists) throw UsageError(fmt::format("kgon: there is no such element ({})", i + 1));
   }
   if (!control.offset.allFinite() || !std::isfinite(control.scale) ||
-      !std::isfinite(control.rotate_deg))
+      !std::isfinite(control.rotate_deg) || !std::isfinite(control.stretch) ||
+      !control.stretch_along.allFinite())
     throw UsageError("kgon: the control values must be finite");
 }
 

@@ -434,7 +434,8 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     const KgonTarget t = target.value_or(KgonTarget{});
     if (w.size() <= i)
       throw UsageError(
-          "usage: kgon [global] scale S | rotate DEG | offset X Y Z | regularize on|off | reset");
+          "usage: kgon [global] scale S | rotate DEG | offset X Y Z | stretch S X Y Z | "
+          "regularize on|off | reset");
     KgonControl c = s.document.kgon_control(t);
     const std::string& what = w[i];
     const size_t args = w.size() - i - 1;
@@ -455,6 +456,12 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       need(3);
       c.offset = Vec3(number(w[i + 1], "x"), number(w[i + 2], "y"), number(w[i + 3], "z"));
       limits::check_coordinates(c.offset, "the offset");
+    } else if (what == "stretch") {
+      need(4);
+      c.stretch = number(w[i + 1], "the stretch");
+      limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale, "the stretch");
+      c.stretch_along = Vec3(number(w[i + 2], "x"), number(w[i + 3], "y"), number(w[i + 4], "z"));
+      limits::check_coordinates(c.stretch_along, "the stretch direction");
     } else if (what == "regularize" || what == "regularise") {
       need(1);
       c.regularize = on_off(w[i + 1]);
@@ -463,7 +470,7 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
       c = KgonControl{};
     } else {
       throw UsageError(fmt::format(
-          "unknown K-gon control '{}' (scale, rotate, offset, regularize, reset)", what));
+          "unknown K-gon control '{}' (scale, rotate, offset, stretch, regularize, reset)", what));
     }
     s.apply(s.document.set_kgon_control(t, c));
     result.message = fmt::format("K-gon control set; {} patches recomputed in {:.2f} ms",

@@ -107,10 +107,19 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
         } else if (key == "regularize") {
           if (!value.is_boolean()) throw InputError("\"regularize\" must be true or false");
           c.regularize = value.get<bool>();
+        } else if (key == "stretch") {
+          c.stretch = number_of(value, "stretch");
+        } else if (key == "stretch_along") {
+          if (!value.is_array() || value.size() != 3)
+            throw InputError("\"stretch_along\" must be an array of 3 numbers");
+          c.stretch_along =
+              Vec3(number_of(value[0], "stretch_along"), number_of(value[1], "stretch_along"),
+                   number_of(value[2], "stretch_along"));
         } else {
-          throw InputError(fmt::format(
-              "unknown member \"{}\" (face, vertex, edge, scale, rotate, offset, regularize)",
-              key));
+          throw InputError(
+              fmt::format("unknown member \"{}\" (face, vertex, edge, scale, rotate, offset, "
+                          "regularize, stretch, stretch_along)",
+                          key));
         }
       }
       if (!kind) throw InputError("name the element: \"face\", \"vertex\" or \"edge\"");
@@ -118,6 +127,8 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
       limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                           "the rotation");
       limits::check_coordinates(c.offset, "the offset");
+      limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale, "the stretch");
+      limits::check_coordinates(c.stretch_along, "the stretch direction");
       if (const auto [it, fresh] = seen.try_emplace({*kind, element}, n + 1); !fresh)
         throw InputError(
             fmt::format("control {} already sets this {}", it->second, kind_name(*kind)));

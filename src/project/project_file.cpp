@@ -29,10 +29,16 @@ Vec3 vec_from(const json& j, const std::string& what) {
 }
 
 json control_json(const KgonControl& c) {
-  return {{"scale", c.scale},
-          {"rotate", c.rotate_deg},
-          {"offset", vec_json(c.offset)},
-          {"regularize", c.regularize}};
+  json j = {{"scale", c.scale},
+            {"rotate", c.rotate_deg},
+            {"offset", vec_json(c.offset)},
+            {"regularize", c.regularize}};
+  // Written only when set, so that projects without a stretch read as before.
+  if (c.stretch != 1 || c.stretch_along != Vec3::Zero()) {
+    j["stretch"] = c.stretch;
+    j["stretch_along"] = vec_json(c.stretch_along);
+  }
+  return j;
 }
 
 KgonControl control_from(const json& j, const std::string& what) {
@@ -41,10 +47,15 @@ KgonControl control_from(const json& j, const std::string& what) {
   c.rotate_deg = j.value("rotate", 0.0);
   if (j.contains("offset")) c.offset = vec_from(j["offset"], what + " offset");
   c.regularize = j.value("regularize", false);
+  c.stretch = j.value("stretch", 1.0);
+  if (j.contains("stretch_along"))
+    c.stretch_along = vec_from(j["stretch_along"], what + " stretch_along");
   // The same ranges as the command line's: a project file is input like any other.
   limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, what + ": scale");
   limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                       what + ": rotate");
+  limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale,
+                      what + ": stretch");
   return c;
 }
 

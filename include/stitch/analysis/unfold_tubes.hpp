@@ -3,12 +3,12 @@
 // The openings construction places the K-gons of a face with two openings by rules fitted on
 // regular prisms and a few solids. Off those (uneven rims, long or tapered tubes, prism 16's half
 // twist) the surface over some of these faces folds, while a setting of the paper's own controls
-// on that face's K-gon (scale and rotation in its plane) and on its bridge's edge K-gon (scale)
-// makes it clean. unfold_tubes looks for such a setting where the fitted placement folds, judged
-// by the local check (local_check.hpp) on the patches those two K-gons reach, and records it as
-// per-element controls: the surface stays the one the method builds from its K-gons, C1 along
-// every edge and G1 at the face's extraordinary point (the K-gons stay planar), and a tube that
-// is clean already is left exactly as it was.
+// on that face's K-gon (scale and rotation in its plane, and a stretch along the tube) and on its
+// bridge's edge K-gon (scale) makes it clean. unfold_tubes looks for such a setting where the
+// fitted placement folds, judged by the local check (local_check.hpp) on the patches those two
+// K-gons reach, and records it as per-element controls: the surface stays the one the method builds
+// from its K-gons, C1 along every edge and G1 at the face's extraordinary point (the K-gons stay
+// planar), and a tube that is clean already is left exactly as it was.
 #pragma once
 
 #include <string>
@@ -34,7 +34,7 @@ struct TubeUnfolding {
   Edge bridge;
   LocalCheckReport fitted;     ///< the check with the fitted placement
   LocalCheckReport chosen;     ///< the check with the chosen setting (the fitted one if none)
-  KgonControl face_control;    ///< the setting chosen: scale and rotation of the face K-gon
+  KgonControl face_control;    ///< the setting chosen: scale, rotation, stretch of the face K-gon
   KgonControl bridge_control;  ///< and scale of the bridge's edge K-gon
   int settings_tried = 0;      ///< settings checked, the fitted one included
   int resolution = 0;          ///< of the checks
@@ -47,11 +47,11 @@ struct TubeUnfolding {
 };
 
 /// The settings tried, nearest to the fitted placement (no control) first, as (face scale, face
-/// rotation in degrees, bridge scale). Face scale 0.4 to 1.5, rotation -30 to 30 degrees in steps
-/// of 10, bridge scale 0.5 to 1.5: the ranges where the six folding tubes measured in
-/// docs/method.md found their clean settings.
+/// rotation in degrees, face stretch along the tube, bridge scale). Face scale 0.4 to 1.5,
+/// rotation -30 to 30 degrees in steps of 10, stretch 1 or 1.5, bridge scale 0.5 to 1.5: the
+/// ranges where the folding tubes measured in docs/method.md found their clean settings.
 struct TubeSetting {
-  double face_scale, face_rotate_deg, bridge_scale;
+  double face_scale, face_rotate_deg, face_stretch, bridge_scale;
 };
 const std::vector<TubeSetting>& tube_settings();
 

@@ -23,6 +23,12 @@ struct KgonControl {
   double rotate_deg = 0.0;     ///< rotation about the K-gon normal, in the K-gon plane
   Vec3 offset = Vec3::Zero();  ///< translation of the whole K-gon (moves the centre)
   bool regularize = false;     ///< replace by the best-fitting affinely regular polygon
+  /// Scale along one direction of the K-gon plane (after scale and rotation): `stretch_along`
+  /// projected into the plane. No stretch where that projection is zero. The K-gon stays planar,
+  /// so it keeps C1 and G1 as the other controls do; unfold_tubes stretches a tube's face K-gon
+  /// along the tube with it.
+  double stretch = 1.0;
+  Vec3 stretch_along = Vec3::Zero();
   bool operator==(const KgonControl&) const = default;
 };
 
