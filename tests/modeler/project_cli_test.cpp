@@ -105,6 +105,11 @@ TEST(KgonControlsFile, GivesAMeshFileTheModelersControls) {
       R"({"controls": [{"edge": )" + std::to_string(edge + 1) + R"(, "scale": 2}]})", "b", cube,
       by_number);
   EXPECT_EQ(by_number.edge, by_ends.edge);
+
+  KgonOptions stretched;
+  parse_kgon_controls(R"({"controls": [{"face": 2, "stretch": 1.5, "stretch_along": [0, 0, 2]}]})",
+                      "c", cube, stretched);
+  EXPECT_EQ(stretched.face.at(1), (KgonControl{.stretch = 1.5, .stretch_along = Vec3(0, 0, 2)}));
 }
 
 TEST(KgonControlsFile, BadFilesSayWhereAndExitWithTwo) {
@@ -125,6 +130,8 @@ TEST(KgonControlsFile, BadFilesSayWhereAndExitWithTwo) {
            {R"({"controls": [{"face": 3}, {"face": 3, "rotate": 5}]})", "control 1 already"},
            {R"({"controls": [{"edge": "1 7"}]})", "control 1"},
            {R"({"controls": [{"face": 2, "offset": [0, 1]}]})", "offset"},
+           {R"({"controls": [{"face": 2, "stretch_along": [0, 1]}]})", "\"stretch_along\" must"},
+           {R"({"controls": [{"face": 2, "stretch": -1}]})", "control 1 (face 2): the stretch"},
            {R"([{"face": 1}])", "\"controls\" array"},
        }) {
     SCOPED_TRACE(bad.text);

@@ -24,6 +24,8 @@ Project sample() {
   c.offset = Vec3(0.1, 0.2, 1.0 / 3.0);
   p.state.kgons.face[2] = c;
   c.regularize = true;
+  c.stretch = 1.25;
+  c.stretch_along = Vec3(0, 0.5, 1);
   p.state.kgons.vertex[6] = c;
   p.state.kgons.edge[5] = c;
   p.state.kgons.global.scale = 0.9;

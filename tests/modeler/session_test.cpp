@@ -115,6 +115,11 @@ TEST(ModelerSession, SelectionDrivesKgonEdits) {
   ASSERT_FALSE(run_script(s, {"select face 3", "kgon scale 0.5", "kgon rotate 20"}, {}));
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).scale, 0.5);
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).rotate_deg, 20.0);
+  ASSERT_FALSE(run_script(s, {"kgon stretch 1.5 0 0 1"}, {}));
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch, 1.5);
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch_along, Vec3(0, 0, 1));
+  EXPECT_TRUE(run_script(s, {"kgon stretch 1.5 0 0"}, {}));  // the direction needs three numbers
+  ASSERT_FALSE(run_script(s, {"undo"}, {}));
   ASSERT_FALSE(run_script(s,
                           {"select edge 1 2", "kgon offset 0 0 0.1", "select corner 7@2",
                            "kgon regularize on", "select none", "kgon scale 0.8"},
