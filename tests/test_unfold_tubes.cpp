@@ -50,7 +50,7 @@ void expect_built_with(const HalfedgeMesh& mesh, const BezierSurface& surface,
 
 TEST(UnfoldTubes, SettingsRunNearestFirst) {
   const std::vector<TubeSetting>& settings = tube_settings();
-  ASSERT_EQ(settings.size(), 6u * 7u * 2u * 3u);
+  ASSERT_EQ(settings.size(), 6u * 11u * 2u * 3u);
   EXPECT_EQ(settings[0].face_scale, 1.0);
   EXPECT_EQ(settings[0].face_rotate_deg, 0.0);
   EXPECT_EQ(settings[0].face_stretch, 1.0);
@@ -65,8 +65,9 @@ TEST(UnfoldTubes, SettingsRunNearestFirst) {
 
 TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
   // The six tubes of UnevenTubes.KgonControlsRepairFoldingTubes and prism 14's half twist (the
-  // modeler's and CLI tests' folding edit until this search): the fitted placement folds each,
-  // and the search finds a clean setting for each. The whole surface is then checked as the
+  // modeler's and CLI tests' folding edit until this search), two that need the stretch along
+  // the tube and one that needs a rotation of 45 degrees or more: the fitted placement folds
+  // each, and the search finds a clean setting for each. The whole surface is then checked as the
   // tube tests check it (resolution 16, the line through the caps' centres open, C1 below 1e-7
   // degrees), which the local check behind the search does not look at.
   struct Tube {
@@ -82,7 +83,8 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
       {"prism 14, half twist", prism(14), "insert-edge 1@1 22@2"},
       {"prism 16, half twist", prism(16), "insert-edge 1@1 25@2"},
       {"prism 4, height 6, straight", prism(4, 6), "insert-edge 1@1 5@2"},
-      {"prism 18, eight steps", prism(18), "insert-edge 1@1 27@2"}};
+      {"prism 18, eight steps", prism(18), "insert-edge 1@1 27@2"},
+      {"prism 6, height 0.5, two steps", prism(6, 0.5), "insert-edge 1@1 9@2"}};
   for (const Tube& t : tubes) {
     SCOPED_TRACE(t.name);
     const Vec3 ca = test::face_centre(t.solid, Face(0)), cb = test::face_centre(t.solid, Face(1));

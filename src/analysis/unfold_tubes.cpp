@@ -26,7 +26,7 @@ double distance(const TubeSetting& s) {
 std::vector<TubeSetting> make_settings() {
   std::vector<TubeSetting> out;
   for (double face_scale : {1.0, 0.8, 1.2, 0.6, 1.5, 0.4})
-    for (double rotate : {0.0, -10.0, 10.0, -20.0, 20.0, -30.0, 30.0})
+    for (double rotate : {0.0, -10.0, 10.0, -20.0, 20.0, -30.0, 30.0, -45.0, 45.0, -60.0, 60.0})
       for (double stretch : {1.0, 1.5})
         for (double bridge_scale : {1.0, 0.5, 1.5})
           out.push_back({face_scale, rotate, stretch, bridge_scale});

@@ -48,8 +48,8 @@ struct TubeUnfolding {
 
 /// The settings tried, nearest to the fitted placement (no control) first, as (face scale, face
 /// rotation in degrees, face stretch along the tube, bridge scale). Face scale 0.4 to 1.5,
-/// rotation -30 to 30 degrees in steps of 10, stretch 1 or 1.5, bridge scale 0.5 to 1.5: the
-/// ranges where the folding tubes measured in docs/method.md found their clean settings.
+/// rotation -30 to 30 degrees in steps of 10 and ±45, ±60, stretch 1 or 1.5, bridge scale 0.5 to
+/// 1.5: the ranges where the folding tubes measured in docs/method.md found their clean settings.
 struct TubeSetting {
   double face_scale, face_rotate_deg, face_stretch, bridge_scale;
 };
