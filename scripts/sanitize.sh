@@ -26,7 +26,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # exactly stitch-tests', whatever else the build registers with ctest, but for UnevenTubes: its
 # sweeps (about a minute in Release, ten under ASan) run the tube placement TwistedTubes already
 # runs here, on other vertex positions; the normal build runs them. The same for the sweep of
-# prisms 14 to 17 with unfold_tubes (about 15 s in Release); the other UnfoldTubes tests run
+# prisms 14 to 18 with unfold_tubes (about 17 s in Release); the other UnfoldTubes tests run
 # the same search here.
 pids=()
 for ((i = 0; i < jobs; ++i)); do
