@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 
 #include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
@@ -125,16 +126,15 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
 }
 
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options) {
-  std::vector<Face> out;
-  if (options.construction != KgonConstruction::openings) return out;
-  for (Face f : mesh.faces())
-    if (two_openings(mesh, f, options)) out.push_back(f);
-  return out;
+  std::vector<Face> all;
+  for (Face f : mesh.faces()) all.push_back(f);
+  return faces_with_two_openings(mesh, options, all);
 }
 
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options,
                                           const std::vector<Face>& faces) {
   std::vector<Face> out;
+  if (options.construction != KgonConstruction::openings) return out;
   for (Face f : faces)
     if (f.idx < mesh.face_capacity() && !mesh.is_deleted(f) && two_openings(mesh, f, options))
       out.push_back(f);
@@ -201,9 +201,8 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     std::optional<TubeSetting> closed;
     LocalCheckReport closed_report;
     std::optional<TubeSetting> chosen;
-    for (const TubeSetting& s : tube_settings()) {
-      if (s.face_scale == 1 && s.face_rotate_deg == 0 && s.face_stretch == 1 && s.bridge_scale == 1)
-        continue;
+    // The first setting, nearest of all, is the fitted placement itself: checked above.
+    for (const TubeSetting& s : std::span(tube_settings()).subspan(1)) {
       tube.set(options, s);
       rebuild();
       ++result.settings_tried;
