@@ -215,10 +215,7 @@ void Document::check_control(const KgonTarget& target, const KgonControl& contro
                                           : i < m.edge_capacity() && !m.is_deleted(Edge(i));
     if (!exists) throw UsageError(fmt::format("kgon: there is no such element ({})", i + 1));
   }
-  if (!control.offset.allFinite() || !std::isfinite(control.scale) ||
-      !std::isfinite(control.rotate_deg) || !std::isfinite(control.stretch) ||
-      !control.stretch_along.allFinite())
-    throw UsageError("kgon: the control values must be finite");
+  check_kgon_control(control, "kgon: ");
 }
 
 Change Document::set_kgon_controls_in_last_edit(

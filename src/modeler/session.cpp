@@ -29,7 +29,7 @@ std::string_view strip_comment(std::string_view line) {
   return line;
 }
 
-double number(const std::string& text, const std::string& what) {
+double number(const std::string& text, std::string_view what) {
   double v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v))
@@ -434,44 +434,39 @@ ScriptResult run_script_line(Session& s, std::string_view raw, const ScriptHooks
     const KgonTarget t = target.value_or(KgonTarget{});
     if (w.size() <= i)
       throw UsageError(
-          "usage: kgon [global] scale S | rotate DEG | offset X Y Z | stretch S X Y Z | "
-          "regularize on|off | reset");
+          "usage: kgon [global] scale S | rotate DEG | offset X Y Z | stretch S [X Y Z] | "
+          "stretch_along X Y Z | regularize on|off | reset");
     KgonControl c = s.document.kgon_control(t);
-    const std::string& what = w[i];
+    const std::string what = w[i] == "regularise" ? "regularize" : w[i];
     const size_t args = w.size() - i - 1;
     auto need = [&](size_t n) {
       if (args != n)
         throw UsageError(fmt::format("kgon {} takes {} value{}", what, n, n == 1 ? "" : "s"));
     };
-    if (what == "scale") {
-      need(1);
-      c.scale = number(w[i + 1], "the scale");
-      limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, "the scale");
-    } else if (what == "rotate") {
-      need(1);
-      c.rotate_deg = number(w[i + 1], "the rotation");
-      limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                          "the rotation");
-    } else if (what == "offset") {
-      need(3);
-      c.offset = Vec3(number(w[i + 1], "x"), number(w[i + 2], "y"), number(w[i + 3], "z"));
-      limits::check_coordinates(c.offset, "the offset");
-    } else if (what == "stretch") {
-      need(4);
-      c.stretch = number(w[i + 1], "the stretch");
-      limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale, "the stretch");
-      c.stretch_along = Vec3(number(w[i + 2], "x"), number(w[i + 3], "y"), number(w[i + 4], "z"));
-      limits::check_coordinates(c.stretch_along, "the stretch direction");
-    } else if (what == "regularize" || what == "regularise") {
-      need(1);
-      c.regularize = on_off(w[i + 1]);
-    } else if (what == "reset") {
+    auto vector_at = [&](size_t first) {
+      return Vec3(number(w[first], "x"), number(w[first + 1], "y"), number(w[first + 2], "z"));
+    };
+    const KgonControlField* field = find_kgon_control_field(what);
+    if (what == "reset") {
       need(0);
       c = KgonControl{};
+    } else if (what == "stretch" && args == 4) {  // the stretch and its direction in one line
+      c.stretch = number(w[i + 1], field->description);
+      c.stretch_along = vector_at(i + 2);
+    } else if (field && field->kind == KgonControlField::Kind::number) {
+      need(1);
+      c.*field->number = number(w[i + 1], field->description);
+    } else if (field && field->kind == KgonControlField::Kind::vector) {
+      need(3);
+      c.*field->vector = vector_at(i + 1);
+    } else if (field) {
+      need(1);
+      c.*field->flag = on_off(w[i + 1]);
     } else {
-      throw UsageError(fmt::format(
-          "unknown K-gon control '{}' (scale, rotate, offset, stretch, regularize, reset)", what));
+      throw UsageError(
+          fmt::format("unknown K-gon control '{}' ({}, reset)", what, kgon_control_field_names()));
     }
+    check_kgon_control(c);
     s.apply(s.document.set_kgon_control(t, c));
     result.message = fmt::format("K-gon control set; {} patches recomputed in {:.2f} ms",
                                  s.last_update.recomputed_patches, s.last_update.milliseconds);

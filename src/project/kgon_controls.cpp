@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "kgon_control_json.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/topology/operation.hpp"
@@ -19,11 +20,6 @@ namespace {
 
 std::string kind_name(KgonKind kind) {
   return kind == KgonKind::face ? "face" : kind == KgonKind::vertex ? "vertex" : "edge";
-}
-
-double number_of(const json& j, const char* key) {
-  if (!j.is_number()) throw InputError(fmt::format("\"{}\" must be a number", key));
-  return j.get<double>();
 }
 
 /// A 1-based element number as the file gives it, checked against the mesh; 0-based result.
@@ -95,40 +91,13 @@ void parse_kgon_controls(const std::string& text, const std::string& source,
           element = element_number(mesh, *kind, value);
           where = fmt::format("control {} ({} {}): ", n + 1, key,
                               value.is_string() ? value.get<std::string>() : value.dump());
-        } else if (key == "scale") {
-          c.scale = number_of(value, "scale");
-        } else if (key == "rotate") {
-          c.rotate_deg = number_of(value, "rotate");
-        } else if (key == "offset") {
-          if (!value.is_array() || value.size() != 3)
-            throw InputError("\"offset\" must be an array of 3 numbers");
-          c.offset = Vec3(number_of(value[0], "offset"), number_of(value[1], "offset"),
-                          number_of(value[2], "offset"));
-        } else if (key == "regularize") {
-          if (!value.is_boolean()) throw InputError("\"regularize\" must be true or false");
-          c.regularize = value.get<bool>();
-        } else if (key == "stretch") {
-          c.stretch = number_of(value, "stretch");
-        } else if (key == "stretch_along") {
-          if (!value.is_array() || value.size() != 3)
-            throw InputError("\"stretch_along\" must be an array of 3 numbers");
-          c.stretch_along =
-              Vec3(number_of(value[0], "stretch_along"), number_of(value[1], "stretch_along"),
-                   number_of(value[2], "stretch_along"));
-        } else {
-          throw InputError(
-              fmt::format("unknown member \"{}\" (face, vertex, edge, scale, rotate, offset, "
-                          "regularize, stretch, stretch_along)",
-                          key));
+        } else if (!detail::read_kgon_control_member(key, value, c)) {
+          throw InputError(fmt::format("unknown member \"{}\" (face, vertex, edge, {})", key,
+                                       kgon_control_field_names()));
         }
       }
       if (!kind) throw InputError("name the element: \"face\", \"vertex\" or \"edge\"");
-      limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, "the scale");
-      limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                          "the rotation");
-      limits::check_coordinates(c.offset, "the offset");
-      limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale, "the stretch");
-      limits::check_coordinates(c.stretch_along, "the stretch direction");
+      check_kgon_control(c);
       if (const auto [it, fresh] = seen.try_emplace({*kind, element}, n + 1); !fresh)
         throw InputError(
             fmt::format("control {} already sets this {}", it->second, kind_name(*kind)));

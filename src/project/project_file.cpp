@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "kgon_control_json.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 
@@ -28,34 +29,25 @@ Vec3 vec_from(const json& j, const std::string& what) {
   return p;
 }
 
-json control_json(const KgonControl& c) {
-  json j = {{"scale", c.scale},
-            {"rotate", c.rotate_deg},
-            {"offset", vec_json(c.offset)},
-            {"regularize", c.regularize}};
-  // Written only when set, so that projects without a stretch read as before.
-  if (c.stretch != 1 || c.stretch_along != Vec3::Zero()) {
-    j["stretch"] = c.stretch;
-    j["stretch_along"] = vec_json(c.stretch_along);
-  }
-  return j;
-}
-
-KgonControl control_from(const json& j, const std::string& what) {
+/// `element` names the members that say which element the control is on, read by the caller.
+KgonControl control_from(const json& j, const std::string& what,
+                         std::initializer_list<std::string_view> element = {}) {
+  if (!j.is_object()) throw InputError(what + " must be an object");
   KgonControl c;
-  c.scale = j.value("scale", 1.0);
-  c.rotate_deg = j.value("rotate", 0.0);
-  if (j.contains("offset")) c.offset = vec_from(j["offset"], what + " offset");
-  c.regularize = j.value("regularize", false);
-  c.stretch = j.value("stretch", 1.0);
-  if (j.contains("stretch_along"))
-    c.stretch_along = vec_from(j["stretch_along"], what + " stretch_along");
+  for (const auto& [key, value] : j.items()) {
+    if (std::find(element.begin(), element.end(), key) != element.end()) continue;
+    bool known = false;
+    try {
+      known = detail::read_kgon_control_member(key, value, c);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", what, e.what()));
+    }
+    if (!known)
+      throw InputError(
+          fmt::format("{}: unknown member \"{}\" ({})", what, key, kgon_control_field_names()));
+  }
   // The same ranges as the command line's: a project file is input like any other.
-  limits::check_range(c.scale, limits::min_kgon_scale, limits::max_kgon_scale, what + ": scale");
-  limits::check_range(c.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
-                      what + ": rotate");
-  limits::check_range(c.stretch, limits::min_kgon_scale, limits::max_kgon_scale,
-                      what + ": stretch");
+  check_kgon_control(c, what + ": ");
   return c;
 }
 
@@ -85,12 +77,12 @@ std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
   json kf = json::array(), kv = json::array(), ke = json::array();
   for (const auto& [f, c] : k.face) {
     if (face_rank[f] < 0) continue;  // a hole has no K-gon
-    json j = control_json(c);
+    json j = detail::kgon_control_json(c);
     j["face"] = face_rank[f];
     kf.push_back(j);
   }
   for (const auto& [v, c] : k.vertex) {
-    json j = control_json(c);
+    json j = detail::kgon_control_json(c);
     j["vertex"] = vertex_rank[v];
     kv.push_back(j);
   }
@@ -98,7 +90,7 @@ std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
     // Named by a side on a face the file keeps: no edge has holes on both sides.
     Halfedge h = HalfedgeMesh::halfedge(Edge(e), 0);
     if (m.is_hole(h)) h = HalfedgeMesh::twin(h);
-    json j = control_json(c);
+    json j = detail::kgon_control_json(c);
     j["face"] = face_rank[m.face(h).idx];
     j["corner"] = m.index_in_face(h);
     ke.push_back(j);
@@ -118,7 +110,10 @@ std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
             {"version", 1},
             {"mesh", {{"positions", positions}, {"faces", faces}}},
             {"kgons",
-             {{"global", control_json(k.global)}, {"faces", kf}, {"vertices", kv}, {"edges", ke}}}};
+             {{"global", detail::kgon_control_json(k.global)},
+              {"faces", kf},
+              {"vertices", kv},
+              {"edges", ke}}}};
   for (const auto& [name, text] : sections) j[name] = json::parse(text);
   return j.dump(1) + "\n";
 }
@@ -154,13 +149,14 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
       const int f = c.at("face").get<int>();
       if (f < 0 || f >= soup_faces)
         throw InputError(fmt::format("K-gon control of face {}: no such face", f));
-      p.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f));
+      p.kgons.face[f] = control_from(c, fmt::format("K-gon control of face {}", f), {"face"});
     }
     for (const json& c : k.at("vertices")) {
       const int v = c.at("vertex").get<int>();
       if (v < 0 || v >= int(vertex_of.size()) || vertex_of[v] < 0)
         throw InputError(fmt::format("K-gon control of vertex {}: no such vertex", v));
-      p.kgons.vertex[vertex_of[v]] = control_from(c, fmt::format("K-gon control of vertex {}", v));
+      p.kgons.vertex[vertex_of[v]] =
+          control_from(c, fmt::format("K-gon control of vertex {}", v), {"vertex"});
     }
     for (const json& c : k.at("edges")) {
       const int f = c.at("face").get<int>(), i = c.at("corner").get<int>();
@@ -169,7 +165,8 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
             fmt::format("K-gon control of the edge at corner {} of face {}: no such corner", i, f));
       const Halfedge h = m.face_loop(Face(f))[i];
       p.kgons.edge[HalfedgeMesh::edge(h).idx] =
-          control_from(c, fmt::format("K-gon control of the edge at corner {} of face {}", i, f));
+          control_from(c, fmt::format("K-gon control of the edge at corner {} of face {}", i, f),
+                       {"face", "corner"});
     }
     if (j.contains("display") && j["display"].contains("method")) {
       try {

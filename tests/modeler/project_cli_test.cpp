@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
 #include "stitch/mesh/io.hpp"
@@ -187,6 +188,47 @@ TEST(ProjectFile, RoundTripsControlsAcrossHolesAndDeletedElements) {
       (edge_mid(back.mesh, back.kgons.edge.begin()->first) - edge_mid(m, k.edge.begin()->first))
           .norm(),
       1e-12);
+}
+
+TEST(ProjectFile, ControlsAreWrittenByTheFieldsSetAndReadStrictly) {
+  KgonOptions k;
+  k.face[1] = KgonControl{.stretch = 1.5, .stretch_along = Vec3(0, 0, 2)};
+  const std::string text = write_project_json(make_cube(), k);
+  // Only the fields that differ from no change are written; the rest read back as defaults.
+  const auto saved = nlohmann::json::parse(text)["kgons"];
+  EXPECT_EQ(saved["global"], nlohmann::json::object());
+  EXPECT_EQ(saved["faces"][0],
+            nlohmann::json::parse(R"({"face": 1, "stretch": 1.5, "stretch_along": [0, 0, 2]})"));
+  EXPECT_EQ(parse_project_json(text, "p").kgons.face, k.face);
+
+  // The saved face control, changed into what a hand-edited file might hold.
+  using nlohmann::json;
+  struct Bad {
+    json control;
+    std::string expected;
+  };
+  for (const Bad& bad : std::vector<Bad>{
+           {{{"face", 1}, {"strech_along", {0, 0, 2}}},
+            "p: K-gon control of face 1: unknown member \"strech_along\" (scale, rotate"},
+           {{{"face", 1}, {"stretch", "long"}},
+            "p: K-gon control of face 1: \"stretch\" must be a number"},
+           {{{"face", 1}, {"stretch_along", {0, 2}}},
+            "p: K-gon control of face 1: \"stretch_along\" must be an array of 3 numbers"},
+           {{{"face", 1}, {"regularize", 1}},
+            "p: K-gon control of face 1: \"regularize\" must be true or false"},
+           {{{"face", 1}, {"stretch", 0}},
+            "p: K-gon control of face 1: the stretch must be a number from"},
+       }) {
+    SCOPED_TRACE(bad.control.dump());
+    json broken = json::parse(text);
+    broken["kgons"]["faces"][0] = bad.control;
+    try {
+      parse_project_json(broken.dump(), "p");
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(bad.expected, 0), 0u) << e.what();
+    }
+  }
 }
 
 }  // namespace

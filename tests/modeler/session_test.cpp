@@ -119,6 +119,21 @@ TEST(ModelerSession, SelectionDrivesKgonEdits) {
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch, 1.5);
   EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch_along, Vec3(0, 0, 1));
   EXPECT_TRUE(run_script(s, {"kgon stretch 1.5 0 0"}, {}));  // the direction needs three numbers
+  // Each field of the control by its name, as files spell it.
+  ASSERT_FALSE(run_script(s, {"kgon stretch_along 0 1 0", "kgon stretch 2"}, {}));
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch_along, Vec3(0, 1, 0));
+  EXPECT_EQ(s.document.kgon_control({KgonKind::face, 2}).stretch, 2.0);
+  const auto out_of_range = run_script(s, {"kgon stretch 0"}, {});
+  ASSERT_TRUE(out_of_range);
+  EXPECT_NE(out_of_range->message.find("the stretch must be a number from"), std::string::npos)
+      << out_of_range->message;
+  const auto unknown = run_script(s, {"kgon scael 2"}, {});
+  ASSERT_TRUE(unknown);
+  EXPECT_NE(unknown->message.find("'scael' (scale, rotate, offset, regularize, stretch, "
+                                  "stretch_along, reset)"),
+            std::string::npos)
+      << unknown->message;
+  for (int i = 0; i < 2; ++i) ASSERT_FALSE(run_script(s, {"undo"}, {}));
   ASSERT_FALSE(run_script(s, {"undo"}, {}));
   ASSERT_FALSE(run_script(s,
                           {"select edge 1 2", "kgon offset 0 0 0.1", "select corner 7@2",

@@ -11,26 +11,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "stitch/kgon/kgon_control.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch {
 
 enum class KgonKind { face, vertex, edge };
-
-/// The user's controls on one K-gon (paper, section "Discussion"). The defaults change nothing.
-struct KgonControl {
-  double scale = 1.0;          ///< scale about the centroid
-  double rotate_deg = 0.0;     ///< rotation about the K-gon normal, in the K-gon plane
-  Vec3 offset = Vec3::Zero();  ///< translation of the whole K-gon (moves the centre)
-  bool regularize = false;     ///< replace by the best-fitting affinely regular polygon
-  /// Scale along one direction of the K-gon plane (after scale and rotation): `stretch_along`
-  /// projected into the plane. No stretch where that projection is zero. The K-gon stays planar,
-  /// so it keeps C1 and G1 as the other controls do; unfold_tubes stretches a tube's face K-gon
-  /// along the tube with it.
-  double stretch = 1.0;
-  Vec3 stretch_along = Vec3::Zero();
-  bool operator==(const KgonControl&) const = default;
-};
 
 /// Where the K-gons of faces come from.
 enum class KgonConstruction {

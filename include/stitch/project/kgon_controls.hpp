@@ -7,8 +7,9 @@
 //                   {"edge": "1 5", "regularize": true}, {"edge": 13, "scale": 2} ] }
 // Numbers are 1-based, as on the command line and in the mesh file: faces and vertices in file
 // order, edges as the library numbers them (`stitch edit` prints them) or as "V W" / "V W@F"
-// (operation lines). An entry names exactly one element; the values it leaves out keep their
-// defaults (scale 1, rotate 0, offset 0, regularize false).
+// (operation lines). An entry names exactly one element; its other members are the fields of
+// kgon_control_fields(), and the ones it leaves out keep their defaults (scale 1, rotate 0,
+// offset 0, regularize false, stretch 1 along no direction).
 #pragma once
 
 #include <string>

@@ -12,7 +12,9 @@
 //     "view": { "target": [x, y, z], "distance": d, "yaw": deg, "pitch": deg, "fov": deg },
 //     "display": { "method": "mdc", "resolution": 8, "mode": "shaded", "input": false,
 //                  "overlays": ["mesh", ...], "markers": false, "split": null | "asc" } }
-// where CONTROL is "scale", "rotate" (degrees), "offset" [x, y, z], "regularize". Numbers are
+// where CONTROL is the fields of kgon_control_fields() that differ from no change: "scale",
+// "rotate" (degrees), "offset" [x, y, z], "regularize", "stretch", "stretch_along" [x, y, z]
+// (an unknown member is refused, so a misspelt one does not silently do nothing). Numbers are
 // those of the mesh as saved (deleted elements compacted away), all 0-based. "view" and
 // "display" belong to the modeler (stitch/modeler/project.hpp); of them the core reads only the
 // display's method.

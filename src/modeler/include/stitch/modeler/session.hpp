@@ -7,8 +7,8 @@
 //   primitive NAME [PARAMS]          new document from a primitive (undoable)
 //   move-vertex V X Y Z              set vertex V's position;  translate-vertex V DX DY DZ
 //   select vertex V | edge V W[@F] | face F | corner V@F[#k] | none
-//   kgon [global] scale S | rotate DEG | offset X Y Z | stretch S X Y Z | regularize on|off |
-//     reset
+//   kgon [global] scale S | rotate DEG | offset X Y Z | stretch S [X Y Z] | stretch_along X Y Z
+//     | regularize on|off | reset
 //                                    the selected face/vertex/edge (a corner: its face), or the
 //                                    global control with `global` or when nothing is selected
 //   undo | redo
