@@ -1,6 +1,8 @@
 #include "stitch/analysis/surface_check.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -193,6 +195,8 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
 
   // Folds and orientation, over edges shared by two triangles. Sorted runs rather than a map of
   // lists: one allocation instead of one per edge, which is most of the time on small soups.
+  // Sorted by bucketing on the edge's lower vertex, then sorting each bucket (a vertex is the
+  // lower end of a few edges): a comparison sort of all uses was most of unfold_tubes' time.
   struct EdgeUse {
     std::uint64_t edge;
     int triangle;
@@ -205,14 +209,21 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
            static_cast<std::uint32_t>(std::max(a, b));
   };
-  std::vector<EdgeUse> uses;
-  uses.reserve(static_cast<size_t>(nt) * 3);
-  for (int i = 0; i < nt; ++i)
-    for (int k = 0; k < 3; ++k) {
-      const int a = T[i][k], b = T[i][(k + 1) % 3];
-      uses.push_back({key(a, b), i, a < b});
-    }
-  std::sort(uses.begin(), uses.end());
+  std::vector<int> bucket_start(P.size() + 1, 0);
+  for (const auto& t : T)
+    for (int k = 0; k < 3; ++k) ++bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (size_t v = 0; v < P.size(); ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<EdgeUse> uses(static_cast<size_t>(nt) * 3);
+  {
+    std::vector<int> next(bucket_start.begin(), bucket_start.end() - 1);
+    for (int i = 0; i < nt; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int a = T[i][k], b = T[i][(k + 1) % 3];
+        uses[next[std::min(a, b)]++] = {key(a, b), i, a < b};
+      }
+  }
+  for (size_t v = 0; v < P.size(); ++v)
+    std::sort(uses.begin() + bucket_start[v], uses.begin() + bucket_start[v + 1]);
   const double cos_fold = std::cos(options.fold_angle_deg * std::numbers::pi / 180);
   for (size_t run = 0, end = 0; run < uses.size(); run = end) {
     while (end < uses.size() && uses[end].edge == uses[run].edge) ++end;
@@ -275,48 +286,75 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
         for (long z = first_cell[i][2]; z <= cell_of(thi.z(), lo.z()); ++z)
           in_cell.emplace_back(cell_key(x, y, z), i);
   }
-  std::sort(in_cell.begin(), in_cell.end());
+  tbb::parallel_sort(in_cell.begin(), in_cell.end());
   // Vertices closer than this to the other's plane count as on it; relative to the model size.
   const double eps = 1e-12 * diag;
-  for (size_t run = 0, end = 0; run < in_cell.size(); run = end) {
-    while (end < in_cell.size() && in_cell[end].first == in_cell[run].first) ++end;
-    for (size_t x = run; x < end; ++x)
-      for (size_t y = x + 1; y < end; ++y) {
-        const int i = in_cell[x].second, j = in_cell[y].second;  // i < j: sorted
-        if (!focused(i) && !focused(j)) continue;
-        // A pair is tested in the first of the cells both meet only (the cells both meet form
-        // a box, whose lowest corner is the larger of their first cells): once, without a set
-        // of the pairs tested.
-        if (cell_key(std::max(first_cell[i][0], first_cell[j][0]),
-                     std::max(first_cell[i][1], first_cell[j][1]),
-                     std::max(first_cell[i][2], first_cell[j][2])) != in_cell[run].first)
-          continue;
-        if (degenerate[i] || degenerate[j]) continue;
-        int shared = 0, si = -1, sj = -1;
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b)
-            if (T[i][a] == T[j][b]) {
-              ++shared;
-              si = a;
-              sj = b;
-            }
-        bool crossing = false;
-        if (shared >= 2) continue;  // edge neighbours: the fold test covers them
-        if (shared == 1) {
-          const Vec3 &i1 = P[T[i][(si + 1) % 3]], &i2 = P[T[i][(si + 2) % 3]];
-          const Vec3 &j1 = P[T[j][(sj + 1) % 3]], &j2 = P[T[j][(sj + 2) % 3]];
-          crossing = segment_crosses_interior(i1, i2, P[T[j][0]], P[T[j][1]], P[T[j][2]]) ||
-                     segment_crosses_interior(j1, j2, P[T[i][0]], P[T[i][1]], P[T[i][2]]);
-        } else {
-          crossing = triangles_intersect(P[T[i][0]], P[T[i][1]], P[T[i][2]], P[T[j][0]], P[T[j][1]],
-                                         P[T[j][2]], eps);
+  // Each cell's pairs are independent of the other cells': runs of cells are checked in
+  // parallel, each chunk counting and listing its own crossings, merged in the cells' order so
+  // the pairs listed are those a single pass would list.
+  std::vector<size_t> run_start;
+  for (size_t run = 0; run < in_cell.size();) {
+    run_start.push_back(run);
+    const std::uint64_t cell_here = in_cell[run].first;
+    while (run < in_cell.size() && in_cell[run].first == cell_here) ++run;
+  }
+  run_start.push_back(in_cell.size());
+  struct Crossings {
+    int count = 0;
+    std::vector<std::array<int, 2>> listed;
+  };
+  constexpr size_t kRunsPerChunk = 512;
+  const size_t runs = run_start.size() - 1;
+  std::vector<Crossings> chunks((runs + kRunsPerChunk - 1) / kRunsPerChunk);
+  tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t chunk) {
+    Crossings& found = chunks[chunk];
+    const size_t last = std::min(runs, (chunk + 1) * kRunsPerChunk);
+    for (size_t r = chunk * kRunsPerChunk; r < last; ++r) {
+      const size_t run = run_start[r], end = run_start[r + 1];
+      for (size_t x = run; x < end; ++x)
+        for (size_t y = x + 1; y < end; ++y) {
+          const int i = in_cell[x].second, j = in_cell[y].second;  // i < j: sorted
+          if (!focused(i) && !focused(j)) continue;
+          // A pair is tested in the first of the cells both meet only (the cells both meet form
+          // a box, whose lowest corner is the larger of their first cells): once, without a set
+          // of the pairs tested.
+          if (cell_key(std::max(first_cell[i][0], first_cell[j][0]),
+                       std::max(first_cell[i][1], first_cell[j][1]),
+                       std::max(first_cell[i][2], first_cell[j][2])) != in_cell[run].first)
+            continue;
+          if (degenerate[i] || degenerate[j]) continue;
+          int shared = 0, si = -1, sj = -1;
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+              if (T[i][a] == T[j][b]) {
+                ++shared;
+                si = a;
+                sj = b;
+              }
+          bool crossing = false;
+          if (shared >= 2) continue;  // edge neighbours: the fold test covers them
+          if (shared == 1) {
+            const Vec3 &i1 = P[T[i][(si + 1) % 3]], &i2 = P[T[i][(si + 2) % 3]];
+            const Vec3 &j1 = P[T[j][(sj + 1) % 3]], &j2 = P[T[j][(sj + 2) % 3]];
+            crossing = segment_crosses_interior(i1, i2, P[T[j][0]], P[T[j][1]], P[T[j][2]]) ||
+                       segment_crosses_interior(j1, j2, P[T[i][0]], P[T[i][1]], P[T[i][2]]);
+          } else {
+            crossing = triangles_intersect(P[T[i][0]], P[T[i][1]], P[T[i][2]], P[T[j][0]],
+                                           P[T[j][1]], P[T[j][2]], eps);
+          }
+          if (crossing) {
+            ++found.count;
+            if (static_cast<int>(found.listed.size()) < options.max_listed)
+              found.listed.push_back({i, j});
+          }
         }
-        if (crossing) {
-          ++report.self_intersections;
-          if (static_cast<int>(report.intersecting_pairs.size()) < options.max_listed)
-            report.intersecting_pairs.push_back({i, j});
-        }
-      }
+    }
+  });
+  for (const Crossings& found : chunks) {
+    report.self_intersections += found.count;
+    for (const auto& pair : found.listed)
+      if (static_cast<int>(report.intersecting_pairs.size()) < options.max_listed)
+        report.intersecting_pairs.push_back(pair);
   }
   std::sort(report.intersecting_pairs.begin(), report.intersecting_pairs.end());
   std::sort(report.folded_pairs.begin(), report.folded_pairs.end());

@@ -1,0 +1,41 @@
+// stitch::check_surface on a whole tessellated surface, what `stitch check-surface` and
+// `stitch smooth --check` run: folds and orientation over the shared edges, then crossings from a
+// uniform grid. The mixed torus (bench_meshes.hpp) of about 1k faces at resolution 8, about
+// 600k triangles; the tessellation is made once, outside the loop.
+//   check_surface/0   every check
+//   check_surface/1   the edges only: crossings_only_when_unfolded on a surface made to fold by
+//                     one vertex pushed through the torus, as unfold_tubes' search checks a
+//                     setting that folds
+#include <benchmark/benchmark.h>
+
+#include "bench_meshes.hpp"
+#include "stitch/analysis/surface_check.hpp"
+#include "stitch/eval/surface.hpp"
+#include "stitch/tess/tessellate.hpp"
+
+namespace {
+
+using namespace stitch;
+
+void check_surface(benchmark::State& state) {
+  const bool folding = state.range(0) == 1;
+  HalfedgeMesh mesh = bench::bench_mesh(bench::mixed_torus, 1000);
+  if (folding) mesh.position(Vertex(0)) *= 0.2;
+  TessellationOptions t;
+  t.resolution = 8;
+  const TriangleSoup soup = triangulate(tessellate(mesh, Surface(mesh, Method::mdc), t));
+  SurfaceCheckOptions options;
+  options.crossings_only_when_unfolded = folding;
+  int folds = 0;
+  for (auto _ : state) {
+    const SurfaceCheckReport report = stitch::check_surface(soup, options);
+    folds = report.folds;
+    benchmark::DoNotOptimize(report.triangles);
+  }
+  state.counters["triangles"] = static_cast<double>(soup.triangles.size());
+  state.counters["folds"] = folds;
+  state.SetLabel(bench::mesh_label(bench::mixed_torus, mesh));
+}
+BENCHMARK(check_surface)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
