@@ -181,27 +181,28 @@ namespace stitch {
 namespace {
 
 // --check warns about folds and self-intersections of what was written, and stays quiet on a
-// clean surface (issue 13, item 4). A tube through prism 14's caps twisted by half a turn
-// folds in eight pairs of triangles at resolution 16 (docs/method.md, item 8; prism 9's four-step
-// twist, used here before, is clean since item 7, and prism 11's five-step twist since item 8).
+// clean surface (issue 13, item 4). The straight tube through prism 30's caps folds in four pairs
+// of triangles at resolution 16 (docs/method.md, "Quads split along the shorter diagonal";
+// prism 9's four-step twist, used here before, is clean since item 7, prism 11's five-step twist
+// since item 8, and prism 14's half twist since quads are split along their shorter diagonal).
 TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
   testing::TempFolder folder;
   auto r = testing::stitch_cli(folder, "primitive cube -o straight-in.obj");
   ASSERT_EQ(r.status, 0) << r.err;
-  r = testing::stitch_cli(folder, "primitive prism 14 -o twisted-in.obj");
+  r = testing::stitch_cli(folder, "primitive prism 30 -o twisted-in.obj");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const std::string name : {"straight", "twisted"}) {
-    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 22@2";
+    const std::string op = name == "straight" ? "insert-edge 1@1 5@2" : "insert-edge 1@1 31@2";
     r = testing::stitch_cli(folder,
                             "edit " + name + "-in.obj --op \"" + op + "\" -o " + name + ".obj");
     ASSERT_EQ(r.status, 0) << r.err;
-    // --no-unfold-tubes: the fitted K-gons, which fold on prism 14's half twist.
+    // --no-unfold-tubes: the fitted K-gons, which fold on prism 30's tube.
     r = testing::stitch_cli(
         folder, "smooth " + name + ".obj -o s.ply --resolution 16 --check --no-unfold-tubes");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.find("not clean") != std::string::npos, name == "twisted") << r.err;
     if (name == "twisted") {
-      EXPECT_NE(r.err.find("8 folded pairs"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("4 folded pairs"), std::string::npos) << r.err;
     }
   }
   // By default the twisted tube's K-gon controls are chosen where the fitted ones fold
@@ -209,7 +210,7 @@ TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
   r = testing::stitch_cli(folder, "smooth twisted.obj -o s.ply --resolution 16 --check");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("not clean"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("stitch: note: twisted.obj: the tube of face 1 (bridge 1 22) folds with its "
+  EXPECT_NE(r.err.find("stitch: note: twisted.obj: the tube of face 1 (bridge 1 31) folds with its "
                        "fitted K-gons"),
             std::string::npos)
       << r.err;
@@ -217,11 +218,12 @@ TEST(CliSmooth, CheckWarnsAboutAFoldingSurfaceAndNotAboutACleanOne) {
   r = testing::stitch_cli(folder, "smooth twisted.obj -o s.ply --resolution 16 --check --quiet");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
-  // The adaptive triangles are checked too: the same tube is clean at the default tolerance
-  // (its folds at resolution 16 are the grid's, method.md, "Beyond prism 13") and folds with
-  // the coarser triangles of 1e-2 (before, --check with --tolerance checked nothing).
-  r = testing::stitch_cli(folder,
-                          "smooth twisted.obj -o a.obj --tolerance 1e-3 --check --no-unfold-tubes");
+  // The adaptive triangles are checked too (before, --check with --tolerance checked nothing):
+  // the cube's tube is clean at the default tolerance, prism 30's fitted K-gons fold with the
+  // coarser triangles of 1e-2 (its folds are the tessellation's, clean at resolution 32:
+  // method.md, "Quads split along the shorter diagonal").
+  r = testing::stitch_cli(
+      folder, "smooth straight.obj -o a.obj --tolerance 1e-3 --check --no-unfold-tubes");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("not clean"), std::string::npos) << r.err;
   r = testing::stitch_cli(folder,

@@ -130,24 +130,24 @@ TEST(UnevenTubes, CapsWithRadialJitter) {
       "radial jitter",
       {{4, {{{-1, {16, 16, 16}}, {0, {4, 4, 4}}, {1, {8, 8, 8}}, {2, {4, 4, 4}}}, 2}},
        {6,
-        {{{-1, {36, 31, 36}}, {0, {6, 6, 6}}, {1, {12, 12, 12}}, {2, {12, 12, 12}}, {3, {6, 1, 6}}},
+        {{{-1, {36, 30, 36}}, {0, {6, 6, 6}}, {1, {12, 12, 12}}, {2, {12, 12, 12}}, {3, {6, 0, 6}}},
          2}},
        {8,
-        {{{-1, {64, 53, 64}},
+        {{{-1, {64, 57, 64}},
           {0, {8, 8, 8}},
           {1, {16, 16, 16}},
           {2, {16, 16, 16}},
-          {3, {16, 11, 16}},
-          {4, {8, 2, 8}}},
+          {3, {16, 14, 16}},
+          {4, {8, 3, 8}}},
          2}},
        {10,
-        {{{-1, {100, 79, 100}},
+        {{{-1, {100, 84, 100}},
           {0, {10, 10, 10}},
           {1, {20, 20, 20}},
           {2, {20, 20, 20}},
-          {3, {20, 17, 20}},
-          {4, {20, 9, 20}},
-          {5, {10, 3, 10}}},
+          {3, {20, 19, 20}},
+          {4, {20, 11, 20}},
+          {5, {10, 4, 10}}},
          2}}},
       [](int n) { return radial_jitter(n, 1300u + static_cast<std::uint32_t>(n)); });
 }
@@ -160,42 +160,48 @@ TEST(UnevenTubes, CapsWithAngularJitter) {
       "angular jitter",
       {{4, {{{-1, {16, 14, 16}}, {0, {4, 4, 4}}, {1, {8, 8, 8}}, {2, {4, 2, 4}}}, 1}},
        {6,
-        {{{-1, {36, 30, 33}}, {0, {6, 6, 6}}, {1, {12, 12, 12}}, {2, {12, 11, 12}}, {3, {6, 1, 3}}},
-         1}},
+        {{{-1, {36, 33, 33}}, {0, {6, 6, 6}}, {1, {12, 12, 12}}, {2, {12, 12, 12}}, {3, {6, 3, 3}}},
+         2}},
        {8,
-        {{{-1, {64, 56, 64}},
+        {{{-1, {64, 64, 64}},
           {0, {8, 8, 8}},
           {1, {16, 16, 16}},
           {2, {16, 16, 16}},
-          {3, {16, 13, 16}},
-          {4, {8, 3, 8}}},
-         2}},
+          {3, {16, 16, 16}},
+          {4, {8, 8, 8}}},
+         4}},
        {10,
-        {{{-1, {100, 93, 100}},
+        {{{-1, {100, 99, 100}},
           {0, {10, 10, 10}},
           {1, {20, 20, 20}},
           {2, {20, 20, 20}},
           {3, {20, 20, 20}},
-          {4, {20, 15, 20}},
-          {5, {10, 8, 10}}},
-         3}}},
+          {4, {20, 20, 20}},
+          {5, {10, 9, 10}}},
+         4}}},
       [](int n) { return angular_jitter(n, 2300u + static_cast<std::uint32_t>(n)); });
 }
 
 TEST(UnevenTubes, SmallJitterIsClean) {
-  // A quarter of the jitter above, with the same seeds: every pair is clean and open. Measured
-  // once for prisms 6, 8 and 10 with these seeds: up to 0.05 of the radius and 0.075 of the step
-  // every pair is; at 0.1 and 0.15, 35 and 31 of prism 6's 36 pairs are clean, 64 and 61 of prism
-  // 8's 64, 92 and 100 of prism 10's 100 (prisms 6 and 10 here, for time).
+  // A quarter of the jitter above, with the same seeds: every pair is clean and open but one of
+  // prism 10's with radial jitter, `insert-edge 2@1 17@2` (five steps), whose one folded pair of
+  // triangles came with the split of quads along their shorter diagonal (method.md, "Quads split
+  // along the shorter diagonal"). Measured once for prisms 6, 8 and 10 with these seeds, with the
+  // split along the first diagonal: up to 0.05 of the radius and 0.075 of the step every pair
+  // was clean; at 0.1 and 0.15, 35 and 31 of prism 6's 36 pairs were, 64 and 61 of prism 8's 64,
+  // 92 and 100 of prism 10's 100 (prisms 6 and 10 here, for time).
   for (int n : {6, 10}) {
     SCOPED_TRACE("prism " + std::to_string(n));
     const HalfedgeMesh regular = make_prism(n);
-    for (const HalfedgeMesh& mesh :
-         {radial_jitter(n, 1300u + static_cast<std::uint32_t>(n), 0.05),
-          angular_jitter(n, 2300u + static_cast<std::uint32_t>(n), 0.075)}) {
+    for (const bool angular : {false, true}) {
+      const auto seed = (angular ? 2300u : 1300u) + static_cast<std::uint32_t>(n);
+      const HalfedgeMesh mesh =
+          angular ? angular_jitter(n, seed, 0.075) : radial_jitter(n, seed, 0.05);
       const auto results = sweep(mesh, 1, 2, C1Check::clean_pairs, &regular);
-      EXPECT_EQ(count(results).at(-1), (Counts{n * n, n * n, n * n})) << failures(results);
-      test::expect_clean_and_open(results, n / 2);
+      const int folding = n == 10 && !angular ? 1 : 0;
+      EXPECT_EQ(count(results).at(-1), (Counts{n * n, n * n - folding, n * n}))
+          << failures(results);
+      test::expect_clean_and_open(results, n / 2 - folding);
     }
   }
 }
@@ -210,24 +216,24 @@ TEST(UnevenTubes, ShortAndLongPrisms) {
   expect_counts("height 0.5",
                 {{4, {{{-1, {16, 12, 12}}, {0, {4, 4, 4}}, {1, {8, 8, 8}}, {2, {4, 0, 0}}}, 1}},
                  {8,
-                  {{{-1, {64, 40, 64}},
+                  {{{-1, {64, 56, 64}},
                     {0, {8, 8, 8}},
                     {1, {16, 16, 16}},
                     {2, {16, 16, 16}},
-                    {3, {16, 0, 16}},
+                    {3, {16, 16, 16}},
                     {4, {8, 0, 8}}},
-                   2}}},
+                   3}}},
                 [](int n) { return with_height(n, 0.5); });
   expect_counts("height 6",
                 {{4, {{{-1, {16, 0, 16}}, {0, {4, 0, 4}}, {1, {8, 0, 8}}, {2, {4, 0, 4}}}, -1}},
                  {8,
-                  {{{-1, {64, 40, 64}},
+                  {{{-1, {64, 56, 64}},
                     {0, {8, 8, 8}},
                     {1, {16, 16, 16}},
                     {2, {16, 16, 16}},
-                    {3, {16, 0, 16}},
+                    {3, {16, 16, 16}},
                     {4, {8, 0, 8}}},
-                   2}},
+                   3}},
                  {12,
                   {{{-1, {144, 84, 144}},
                     {0, {12, 12, 12}},
@@ -270,12 +276,12 @@ TEST(UnevenTubes, EllipticCaps) {
         {{{-1, {36, 18, 22}}, {0, {6, 6, 6}}, {1, {12, 8, 12}}, {2, {12, 4, 4}}, {3, {6, 0, 0}}},
          0}},
        {10,
-        {{{-1, {100, 22, 78}},
+        {{{-1, {100, 26, 78}},
           {0, {10, 10, 10}},
           {1, {20, 8, 20}},
           {2, {20, 4, 20}},
           {3, {20, 0, 20}},
-          {4, {20, 0, 4}},
+          {4, {20, 4, 4}},
           {5, {10, 0, 4}}},
          0}}},
       elongated);
@@ -310,23 +316,20 @@ TEST(UnevenTubes, KgonControlsRepairFoldingTubes) {
   // the fitted items 5 to 8 miss these tubes, not the method (method.md, "Uneven rims"). Each
   // control was picked from the middle of the clean ones of a sweep over face scale 0.4 to 1.6,
   // rotation -30 to 30 degrees and bridge scale 0.5 to 1.5 (prism 16's edge of that region:
-  // 1.1 to 1.3 at -35 to -20 degrees). Resolution 16; the default placement folds every one.
+  // 1.1 to 1.3 at -35 to -20 degrees). Resolution 16; the default placement folds every one or
+  // blocks its axis.
   struct Repair {
     std::string name;
     HalfedgeMesh solid;
     std::string op;
     KgonControl face, bridge;
   };
+  // Three more that folded (prism 8 six high and half as high, three steps; prism 14's half
+  // twist) are clean and open with the fitted K-gons since quads are split along their shorter
+  // diagonal; prism 16's half twist is clean but its axis blocked.
   const std::vector<Repair> repairs{
-      {"prism 8, height 6, three steps", with_height(8, 6), "insert-edge 1@1 12@2", {0.8, -10}, {}},
       {"frustum 10, one step", frustum(10), "insert-edge 1@1 12@2", {0.6, 0}, {}},
       {"frustum 10, three steps", frustum(10), "insert-edge 1@1 14@2", {0.7, -20}, {}},
-      {"prism 8, height 0.5, three steps",
-       with_height(8, 0.5),
-       "insert-edge 1@1 12@2",
-       {0.8, -10},
-       {0.5, 0}},
-      {"prism 14, half twist", make_prism(14), "insert-edge 1@1 22@2", {1.2, -30}, {}},
       {"prism 16, half twist", make_prism(16), "insert-edge 1@1 25@2", {1.2, -30}, {}}};
   for (const Repair& r : repairs) {
     SCOPED_TRACE(r.name);

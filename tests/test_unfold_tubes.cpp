@@ -64,11 +64,13 @@ TEST(UnfoldTubes, SettingsRunNearestFirst) {
 }
 
 TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
-  // The six tubes of UnevenTubes.KgonControlsRepairFoldingTubes and prism 14's half twist (the
-  // modeler's and CLI tests' folding edit until this search), two that need the stretch along
-  // the tube and one that needs a rotation of 45 degrees or more: the fitted placement folds
-  // each, and the search finds a clean setting for each. The whole surface is then checked as the
-  // tube tests check it (resolution 16, the line through the caps' centres open, C1 below 1e-7
+  // The three tubes of UnevenTubes.KgonControlsRepairFoldingTubes (prism 16's half twist clean
+  // with its fitted K-gons but its axis blocked, the frustum's twists folding), one that needs
+  // the stretch along the tube and one that needs a rotation of 45 degrees or more: the search
+  // finds a clean and open setting for each. (Prism 8 six high and half as high with three steps,
+  // prism 14's half twist and prism 18's eight-step twist were here too until quads were split
+  // along their shorter diagonal: their fitted K-gons are clean and open now.) The whole surface is then checked as the tube
+  // tests check it (resolution 16, the line through the caps' centres open, C1 below 1e-7
   // degrees), which the local check behind the search does not look at.
   struct Tube {
     std::string name;
@@ -76,20 +78,16 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
     std::string op;
   };
   const std::vector<Tube> tubes{
-      {"prism 8, height 6, three steps", prism(8, 6), "insert-edge 1@1 12@2"},
       {"frustum 10, one step", prism(10, 2, 0.5), "insert-edge 1@1 12@2"},
       {"frustum 10, three steps", prism(10, 2, 0.5), "insert-edge 1@1 14@2"},
-      {"prism 8, height 0.5, three steps", prism(8, 0.5), "insert-edge 1@1 12@2"},
-      {"prism 14, half twist", prism(14), "insert-edge 1@1 22@2"},
       {"prism 16, half twist", prism(16), "insert-edge 1@1 25@2"},
       {"prism 4, height 6, straight", prism(4, 6), "insert-edge 1@1 5@2"},
-      {"prism 18, eight steps", prism(18), "insert-edge 1@1 27@2"},
       {"prism 6, height 0.5, two steps", prism(6, 0.5), "insert-edge 1@1 9@2"}};
   for (const Tube& t : tubes) {
     SCOPED_TRACE(t.name);
     const Vec3 ca = test::face_centre(t.solid, Face(0)), cb = test::face_centre(t.solid, Face(1));
     const PairResult fitted = check_tube(t.solid, t.op, ca, cb);
-    EXPECT_FALSE(fitted.clean) << "the fitted placement is clean now: " << t.op;
+    EXPECT_FALSE(fitted.clean && fitted.open) << "the fitted placement is clean now: " << t.op;
 
     const HalfedgeMesh mesh = edited(t.solid, t.op);
     KgonOptions options;
@@ -100,7 +98,7 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
     const TubeUnfolding& u = found[0];
     EXPECT_EQ(u.face, Face(0));  // the insert-edge merges both caps into face 1
     EXPECT_EQ(u.bridge, Edge(t.solid.edge_capacity()));
-    EXPECT_FALSE(u.fitted.clean());
+    EXPECT_EQ(u.fitted.clean(), fitted.clean);  // clean with its axis blocked, or folding
     EXPECT_TRUE(u.unfolded());
     EXPECT_GT(u.settings_tried, 1);
     EXPECT_EQ(options.face.at(0), u.face_control);

@@ -17,6 +17,7 @@
 #include "gltf_validator.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "test_support.hpp"
@@ -571,11 +572,15 @@ TEST(UvWrite, GltfSplitsVerticesOnSeamsAndPassesTheValidator) {
     const auto corners = input.mesh.patch_corners();
     for (int q = 0; q < back.mesh.num_faces(); q += 7) {
       const auto loop = back.mesh.face_loop(Face(q));
-      ASSERT_EQ(loop.size(), 3U);  // glTF holds triangles: quad q / 2, corners 0 1 2 or 0 2 3
+      // glTF holds triangles: quad q / 2 split along its shorter diagonal (quad_triangles),
+      // corners 0 1 2 and 0 2 3, or 0 1 3 and 1 2 3.
+      ASSERT_EQ(loop.size(), 3U);
       const int quad = q / 2, k = quad / (n * n), i = quad % (n * n) / n, j = quad % n;
       const std::array<std::array<int, 2>, 4> at{{{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+      const auto& wq = welded.quads[quad];
+      const auto& P = welded.positions;
       const std::array<int, 3> which =
-          q % 2 == 0 ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 3};
+          quad_triangles(std::array{0, 1, 2, 3}, P[wq[0]], P[wq[1]], P[wq[2]], P[wq[3]])[q % 2];
       for (int m = 0; m < 3; ++m) {
         const auto& ij = at[which[m]];
         const Eigen::Vector2d expected =

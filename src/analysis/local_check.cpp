@@ -11,6 +11,7 @@
 #include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
 #include "stitch/mesh/limits.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/topology/operation.hpp"
 
 namespace stitch {
@@ -117,8 +118,9 @@ LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>&
       for (int j = 0; j < n; ++j) {
         const int q0 = grid[i * side + j], q1 = grid[(i + 1) * side + j],
                   q2 = grid[(i + 1) * side + j + 1], q3 = grid[i * side + j + 1];
-        add_triangle(soup, focus, q0, q1, q2, c.idx, focused);
-        add_triangle(soup, focus, q0, q2, q3, c.idx, focused);
+        const auto& P = soup.positions;
+        for (const auto& t : quad_triangles(std::array{q0, q1, q2, q3}, P[q0], P[q1], P[q2], P[q3]))
+          add_triangle(soup, focus, t[0], t[1], t[2], c.idx, focused);
       }
   }
 

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "stitch/mesh/polygon.hpp"
+
 namespace stitch {
 
 namespace {
@@ -101,8 +103,9 @@ TriangleSoup triangulate(const TessellatedMesh& surface) {
   soup.positions = surface.positions;
   for (int q = 0; q < static_cast<int>(surface.quads.size()); ++q) {
     const auto& v = surface.quads[q];
-    add_triangle(soup, v[0], v[1], v[2], q);
-    add_triangle(soup, v[0], v[2], v[3], q);
+    const auto& P = surface.positions;
+    for (const auto& t : quad_triangles(v, P[v[0]], P[v[1]], P[v[2]], P[v[3]]))
+      add_triangle(soup, t[0], t[1], t[2], q);
   }
   return soup;
 }
@@ -129,6 +132,13 @@ TriangleSoup triangulate(const PolygonSoup& polygons) {
   }
   for (int f = 0; f < static_cast<int>(polygons.faces.size()); ++f) {
     const auto& loop = polygons.faces[f];
+    if (loop.size() == 4) {  // as the tessellation's quads are split (quad_triangles)
+      const std::array<int, 4> q = {weld[loop[0]], weld[loop[1]], weld[loop[2]], weld[loop[3]]};
+      const auto& P = soup.positions;
+      for (const auto& t : quad_triangles(q, P[q[0]], P[q[1]], P[q[2]], P[q[3]]))
+        add_triangle(soup, t[0], t[1], t[2], f);
+      continue;
+    }
     for (size_t i = 1; i + 1 < loop.size(); ++i)
       add_triangle(soup, weld[loop[0]], weld[loop[i]], weld[loop[i + 1]], f);
   }

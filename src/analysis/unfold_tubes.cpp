@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <span>
 
 #include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/net/control_net.hpp"
 
 namespace stitch {
@@ -73,6 +75,20 @@ Vec3 rim_centre(const HalfedgeMesh& mesh, const std::vector<Corner>& rim) {
   return sum / static_cast<double>(vertices.size());
 }
 
+/// Whether the line between the rims' centres runs along both rims' normals (within 10 degrees):
+/// then it is the tube's axis, which a clean tube leaves open. Between faces that face different
+/// ways (a bent tunnel) it is not, and the wall of a clean tube may cross it.
+bool axis_through_rims(const HalfedgeMesh& mesh, const TwoOpenings& openings, const Vec3& along) {
+  const double cos_limit = std::cos(10 * std::numbers::pi / 180);
+  for (const auto* rim : {&openings.first, &openings.second}) {
+    std::vector<Vec3> loop;
+    for (Corner c : *rim) loop.push_back(mesh.position(mesh.origin(c)));
+    const Vec3 n = newell_normal(loop);
+    if (!(std::abs(n.dot(along)) >= cos_limit * n.norm() * along.norm())) return false;
+  }
+  return true;
+}
+
 /// Whether the segment from a to b misses the patches of `corners`, each sampled on the grid of
 /// resolution n. Each cell is cut along both diagonals: a wall that comes this close to the line
 /// blocks it in some tessellation of the same samples.
@@ -104,11 +120,19 @@ const std::vector<TubeSetting>& tube_settings() {
 
 std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
   const Halfedge h = HalfedgeMesh::halfedge(tube.bridge, 0);
-  const std::string folds = fmt::format(
-      "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and {} crossing "
-      "pairs of triangles at resolution {})",
-      tube.face.idx + 1, mesh.origin(h).idx + 1, mesh.origin(HalfedgeMesh::twin(h)).idx + 1,
-      tube.fitted.folds, tube.fitted.self_intersections, tube.resolution);
+  const std::string folds =
+      tube.fitted.clean()
+          ? fmt::format(
+                "the line through the openings' centres meets the tube of face {} (bridge {} {}) "
+                "with its fitted K-gons, which are clean at resolution {}",
+                tube.face.idx + 1, mesh.origin(h).idx + 1,
+                mesh.origin(HalfedgeMesh::twin(h)).idx + 1, tube.resolution)
+          : fmt::format(
+                "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and "
+                "{} crossing pairs of triangles at resolution {})",
+                tube.face.idx + 1, mesh.origin(h).idx + 1,
+                mesh.origin(HalfedgeMesh::twin(h)).idx + 1, tube.fitted.folds,
+                tube.fitted.self_intersections, tube.resolution);
   if (!tube.unfolded())
     return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
                        tube.settings_tried - 1);
@@ -193,11 +217,15 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     result.chosen = result.fitted;
     result.settings_tried = 1;
     result.resolution = unfold.check.resolution;
-    if (result.fitted.clean()) continue;
-    // A clean setting that closes the tube (the line between the rims' centres meets its wall)
-    // is kept only when no clean setting leaves it open, and only when the fitted K-gons close
-    // it too: a hole pinched shut is not what the user made, a fold at least shows.
+    // A clean tube is searched too when the line between the rims' centres is its axis and
+    // meets its wall: the hole is pushed off its axis (prism 16's half twists, docs/method.md).
+    const bool fitted_clean = result.fitted.clean();
     const bool fitted_open = open();
+    if (fitted_clean && (fitted_open || !axis_through_rims(mesh, *openings, centre_b - centre_a)))
+      continue;
+    // A clean setting that closes the tube (the line between the rims' centres meets its wall)
+    // is kept only when no clean setting leaves it open, and only when the fitted K-gons fold
+    // and close it too: a hole pinched shut is not what the user made, a fold at least shows.
     std::optional<TubeSetting> closed;
     LocalCheckReport closed_report;
     std::optional<TubeSetting> chosen;
@@ -213,7 +241,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
         result.chosen = std::move(report);
         break;
       }
-      if (!closed && !fitted_open) {
+      if (!closed && !fitted_open && !fitted_clean) {
         closed = s;
         closed_report = std::move(report);
       }
@@ -232,6 +260,8 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       result.axis_open = fitted_open;
     }
     rebuild();
+    // A clean tube that no setting opens keeps its fitted K-gons, as any clean tube does.
+    if (fitted_clean && !chosen) continue;
     out.push_back(std::move(result));
   }
   return out;

@@ -16,6 +16,7 @@
 #include "number_text.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 namespace stitch::io_detail {
 
@@ -422,16 +423,22 @@ void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>&
         size_t triangles = 0;
         for (int size : block.sizes) triangles += static_cast<size_t>(std::max(0, size - 2));
         LittleEndianWriter record(bytes, triangles * 50);
+        auto put = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+          const Vec3 n = (b - a).cross(c - a).stableNormalized();
+          for (const Vec3* p : {&n, &a, &b, &c})
+            for (int axis = 0; axis < 3; ++axis) record.put(static_cast<float>((*p)[axis]));
+          record.put(std::uint16_t{0});
+        };
         for_each_face(block, [&](int size, const int* loop) {
-          const Vec3& a = positions[loop[0]];
-          for (int k = 1; k + 1 < size; ++k) {
-            const Vec3& b = positions[loop[k]];
-            const Vec3& c = positions[loop[k + 1]];
-            const Vec3 n = (b - a).cross(c - a).stableNormalized();
-            for (const Vec3* p : {&n, &a, &b, &c})
-              for (int axis = 0; axis < 3; ++axis) record.put(static_cast<float>((*p)[axis]));
-            record.put(std::uint16_t{0});
+          if (size == 4) {  // as the tessellation's quads are split everywhere
+            const std::array q = {loop[0], loop[1], loop[2], loop[3]};
+            for (const auto& t : quad_triangles(q, positions[q[0]], positions[q[1]],
+                                                positions[q[2]], positions[q[3]]))
+              put(positions[t[0]], positions[t[1]], positions[t[2]]);
+            return;
           }
+          for (int k = 1; k + 1 < size; ++k)
+            put(positions[loop[0]], positions[loop[k]], positions[loop[k + 1]]);
         });
       },
       progress);

@@ -12,6 +12,7 @@
 
 #include "shaders.hpp"
 #include "stitch/error.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/render/gl_context.hpp"
 #include "stitch/tess/incremental_surface.hpp"
 
@@ -246,15 +247,20 @@ std::vector<SurfaceVertex> surface_vertices(const TessellatedMesh& s, int first,
   return vertices;
 }
 
-// Both triangles of quads [first, first + count), degenerate ones included.
-std::vector<std::uint32_t> quad_triangles(const TessellatedMesh& s, int first, int count) {
+// The two triangles of a quad as every file and check splits it (stitch::quad_triangles).
+std::array<std::array<int, 3>, 2> split(const TessellatedMesh& s, const std::array<int, 4>& q) {
+  const auto& P = s.positions;
+  return stitch::quad_triangles(q, P[q[0]], P[q[1]], P[q[2]], P[q[3]]);
+}
+
+// Both triangles of quads [first, first + count), degenerate ones included. The split follows
+// the positions given; update_surface_vertices moves vertices without rewriting it.
+std::vector<std::uint32_t> block_triangles(const TessellatedMesh& s, int first, int count) {
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<size_t>(count) * 6);
-  for (int k = first; k < first + count; ++k) {
-    const auto& q = s.quads[k];
-    for (const int i : {q[0], q[1], q[2], q[0], q[2], q[3]})
-      indices.push_back(static_cast<std::uint32_t>(i));
-  }
+  for (int k = first; k < first + count; ++k)
+    for (const auto& t : split(s, s.quads[k]))
+      for (const int i : t) indices.push_back(static_cast<std::uint32_t>(i));
   return indices;
 }
 
@@ -290,7 +296,7 @@ void Renderer::set_surface(const TessellatedMesh& s) {
   indices.reserve(s.quads.size() * 6);
   for (const auto& q : s.quads) {
     // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
-    for (const auto& t : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
+    for (const auto& t : split(s, q)) {
       if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
       indices.insert(indices.end(), t.begin(), t.end());
     }
@@ -326,7 +332,8 @@ void Renderer::set_block_surface(const TessellatedMesh& s, int vertices_per_bloc
   // re-uploads everything, so over a session that cost is spread thin, as for a std::vector.
   const int capacity = slot_capacity_for(blocks);
   const std::vector<SurfaceVertex> vertices = surface_vertices(s, 0, s.num_vertices());
-  const std::vector<std::uint32_t> indices = quad_triangles(s, 0, static_cast<int>(s.quads.size()));
+  const std::vector<std::uint32_t> indices =
+      block_triangles(s, 0, static_cast<int>(s.quads.size()));
   Buffer& b = impl_->surface;
   glBindVertexArray(b.vao);
   glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
@@ -380,7 +387,7 @@ void Renderer::update_surface_blocks(const TessellatedMesh& s, std::vector<int> 
         GL_ARRAY_BUFFER,
         static_cast<GLintptr>(static_cast<size_t>(first) * per_v * sizeof(SurfaceVertex)),
         static_cast<GLsizeiptr>(vertices.size() * sizeof(SurfaceVertex)), vertices.data());
-    const auto indices = quad_triangles(s, first * per_q, run * per_q);
+    const auto indices = block_triangles(s, first * per_q, run * per_q);
     glBufferSubData(
         GL_ELEMENT_ARRAY_BUFFER,
         static_cast<GLintptr>(static_cast<size_t>(first) * per_q * 6 * sizeof(std::uint32_t)),

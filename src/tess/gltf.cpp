@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 // tinygltf is header-only; this file holds its implementation. Images are never written.
 #define TINYGLTF_IMPLEMENTATION
@@ -62,7 +63,9 @@ tinygltf::Model make_model(const TessellatedMesh& mesh,
   std::vector<std::uint32_t> indices;
   indices.reserve(6 * mesh.quads.size());
   for (const auto& q : mesh.quads)
-    for (int k : {0, 1, 2, 0, 2, 3}) indices.push_back(static_cast<std::uint32_t>(q[k]));
+    for (const auto& t : quad_triangles(q, mesh.positions[q[0]], mesh.positions[q[1]],
+                                        mesh.positions[q[2]], mesh.positions[q[3]]))
+      for (int i : t) indices.push_back(static_cast<std::uint32_t>(i));
 
   tinygltf::Model model;
   model.asset.version = "2.0";

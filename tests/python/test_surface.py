@@ -201,13 +201,14 @@ def test_heavy_calls_release_the_gil():
 
 
 def test_a_tube_that_folds_is_unfolded():
-    # Prism 16's half twist folds with the fitted K-gons (docs/method.md, "Tubes that still
-    # fold"); the search finds controls for its face and bridge, as stitch smooth does.
-    mesh = stitch.primitive("prism", 16)
-    mesh.edit("insert-edge 1@1 25@2")
+    # Prism 30's straight tube folds at resolution 16 with the fitted K-gons (docs/method.md,
+    # "Quads split along the shorter diagonal"); the search finds controls for its face and
+    # bridge, as stitch smooth does.
+    mesh = stitch.primitive("prism", 30)
+    mesh.edit("insert-edge 1@1 31@2")
     surface = stitch.Surface(mesh)
     [tube] = surface.unfolded_tubes
-    assert tube["face"] == 0 and tube["bridge"] == 48
+    assert tube["face"] == 0 and tube["bridge"] == 90
     assert tube["fitted_folds"] > 0 and tube["unfolded"] and tube["axis_open"]
     setting = (tube["face_scale"], tube["face_rotate"], tube["face_stretch"], tube["bridge_scale"])
     assert setting != (1.0, 0.0, 1.0, 1.0)

@@ -21,12 +21,14 @@ struct TriangleSoup {
   std::vector<int> source;
 };
 
-/// Each quad split along its 0-2 diagonal (two triangles with source = the quad's index).
+/// Each quad split along its shorter diagonal (quad_triangles in stitch/mesh/polygon.hpp: two
+/// triangles with source = the quad's index).
 TriangleSoup triangulate(const TessellatedMesh& surface);
 /// Its triangles as they are (source = the triangle's index).
 TriangleSoup triangulate(const AdaptiveMesh& surface);
-/// Each polygon fanned from its first corner; vertices at exactly equal positions are merged
-/// first, so a file written without shared vertices still has its adjacency.
+/// Each polygon fanned from its first corner, a quad split as above; vertices at exactly equal
+/// positions are merged first, so a file written without shared vertices still has its
+/// adjacency.
 TriangleSoup triangulate(const PolygonSoup& soup);
 
 struct SurfaceCheckOptions {
