@@ -4,6 +4,7 @@
 
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/polygon.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
 
@@ -123,6 +124,31 @@ TEST(SurfaceCheck, SegmentsThroughAndPastTheSurface) {
   const TriangleSoup torus = triangulate(to_polygon_soup(make_torus(32, 16)));
   EXPECT_TRUE(segment_hits(torus, {0, 0, -3}, {0, 0, 3}).empty());
   EXPECT_EQ(segment_hits(torus, {2, 0.01, -3}, {2, 0.01, 3}).size(), 2u);
+}
+
+TEST(SurfaceCheck, QuadsAreSplitAlongTheirShorterDiagonal) {
+  using Tri = std::array<int, 3>;
+  // A flat square: both diagonals are as long, and a-c is kept.
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(1, 1, 0), d(0, 1, 0);
+  EXPECT_EQ((quad_triangles(std::array{0, 1, 2, 3}, a, b, c, d)),
+            (std::array<Tri, 2>{Tri{0, 1, 2}, Tri{0, 2, 3}}));
+  // A thin rhombus whose a-c diagonal is the long one (a wedge's cell next to an extraordinary
+  // point of high valence), lifted at c: split along b-d, and both triangles keep the quad's
+  // orientation (their normals point as the flat rhombus's does, +z).
+  const Vec3 p0(0, 0, 0), p1(1, -0.1, 0), p2(2, 0, 0.05), p3(1, 0.1, 0);
+  const auto split = quad_triangles(std::array{10, 11, 12, 13}, p0, p1, p2, p3);
+  EXPECT_EQ(split, (std::array<Tri, 2>{Tri{10, 11, 13}, Tri{11, 12, 13}}));
+  const std::array<Vec3, 4> at = {p0, p1, p2, p3};
+  for (const Tri& t : split) {
+    const Vec3 n = (at[t[1] - 10] - at[t[0] - 10]).cross(at[t[2] - 10] - at[t[0] - 10]);
+    EXPECT_GT(n.z(), 0) << t[0] << " " << t[1] << " " << t[2];
+  }
+  // check_surface's triangulate() of a tessellation and of a file's quads split the same way.
+  PolygonSoup soup;
+  soup.positions = {p0, p1, p2, p3};
+  soup.faces = {{0, 1, 2, 3}};
+  const TriangleSoup triangles = triangulate(soup);
+  EXPECT_EQ(triangles.triangles, (std::vector<Tri>{Tri{0, 1, 3}, Tri{1, 2, 3}}));
 }
 
 }  // namespace
