@@ -1,7 +1,8 @@
 // stitch::unfold_tubes on one tube whose fitted K-gons fold: the search of the K-gon controls
 // (docs/method.md, "Tubes that still fold"), the Bézier surface built once outside the loop and
 // the options reset each iteration, so each one searches from the fitted placement again.
-//   unfold_tubes/0   prism 16's half twist (insert-edge 1@1 25@2): found after 26 settings
+//   unfold_tubes/0   prism 16's half twist (insert-edge 1@1 25@2): clean with its fitted K-gons
+//                    but its axis blocked; opened by the second setting
 //   unfold_tubes/1   prism 4 six high, one step (insert-edge 1@1 6@2): none clean, all 396 tried
 // The counter `settings` is the number of settings checked per search.
 #include <benchmark/benchmark.h>

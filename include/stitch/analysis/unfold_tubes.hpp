@@ -5,10 +5,11 @@
 // twist) the surface over some of these faces folds, while a setting of the paper's own controls
 // on that face's K-gon (scale and rotation in its plane, and a stretch along the tube) and on its
 // bridge's edge K-gon (scale) makes it clean. unfold_tubes looks for such a setting where the
-// fitted placement folds, judged by the local check (local_check.hpp) on the patches those two
-// K-gons reach, and records it as per-element controls: the surface stays the one the method builds
-// from its K-gons, C1 along every edge and G1 at the face's extraordinary point (the K-gons stay
-// planar), and a tube that is clean already is left exactly as it was.
+// fitted placement folds (or is clean but pushes the hole off the tube's axis, as on the half
+// twists of prisms 16 to 24), judged by the local check (local_check.hpp) on the patches those
+// two K-gons reach, and records it as per-element controls: the surface stays the one the method
+// builds from its K-gons, C1 along every edge and G1 at the face's extraordinary point (the
+// K-gons stay planar), and a tube that is clean and open already is left exactly as it was.
 #pragma once
 
 #include <string>
@@ -28,7 +29,8 @@ struct UnfoldTubesOptions {
   Method method = Method::mdc;
 };
 
-/// What the search found for one face with two openings whose surface folded.
+/// What the search found for one face with two openings whose surface folded (or was clean with
+/// its axis blocked, and was opened).
 struct TubeUnfolding {
   Face face;
   Edge bridge;
@@ -56,14 +58,16 @@ struct TubeSetting {
 const std::vector<TubeSetting>& tube_settings();
 
 /// For every face of `faces` with two openings (the openings construction) whose patches or
-/// their neighbours fold or cross, and on which the user set no control (neither on the face nor
-/// on its bridge): tries tube_settings() in order and keeps the first that the local check finds
-/// clean and that leaves the line through the rims' centres open (the first clean one if
-/// none does and the fitted K-gons do not either), adding it to options.face and options.edge.
+/// their neighbours fold or cross, or which is clean but whose axis (the line through the rims'
+/// centres, where it runs along both rims' normals) meets its wall, and on which the user set no
+/// control (neither on the face nor on its bridge): tries tube_settings() in order and keeps the
+/// first that the local check finds clean and that leaves the line through the rims' centres
+/// open (for a folding tube, the first clean one if none does and the fitted K-gons do not
+/// either), adding it to options.face and options.edge.
 /// `surface` is the Bézier surface built for `mesh` with `options`; it is left built with the
 /// options as they are on return (only the K-gons and nets of the faces searched are touched, so
 /// the cost follows the tubes, not the mesh). Returns one entry per folding face, unfolded or not,
-/// in the order of `faces`.
+/// and one per clean face whose axis a setting opened, in the order of `faces`.
 std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
                                         BezierSurface& surface, const std::vector<Face>& faces,
                                         const UnfoldTubesOptions& unfold = {});
