@@ -118,8 +118,7 @@ LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>&
       for (int j = 0; j < n; ++j) {
         const int q0 = grid[i * side + j], q1 = grid[(i + 1) * side + j],
                   q2 = grid[(i + 1) * side + j + 1], q3 = grid[i * side + j + 1];
-        const auto& P = soup.positions;
-        for (const auto& t : quad_triangles(std::array{q0, q1, q2, q3}, P[q0], P[q1], P[q2], P[q3]))
+        for (const auto& t : quad_triangles(std::array{q0, q1, q2, q3}, soup.positions))
           add_triangle(soup, focus, t[0], t[1], t[2], c.idx, focused);
       }
   }

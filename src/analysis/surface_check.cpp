@@ -102,9 +102,7 @@ TriangleSoup triangulate(const TessellatedMesh& surface) {
   TriangleSoup soup;
   soup.positions = surface.positions;
   for (int q = 0; q < static_cast<int>(surface.quads.size()); ++q) {
-    const auto& v = surface.quads[q];
-    const auto& P = surface.positions;
-    for (const auto& t : quad_triangles(v, P[v[0]], P[v[1]], P[v[2]], P[v[3]]))
+    for (const auto& t : quad_triangles(surface.quads[q], surface.positions))
       add_triangle(soup, t[0], t[1], t[2], q);
   }
   return soup;
@@ -134,8 +132,7 @@ TriangleSoup triangulate(const PolygonSoup& polygons) {
     const auto& loop = polygons.faces[f];
     if (loop.size() == 4) {  // as the tessellation's quads are split (quad_triangles)
       const std::array<int, 4> q = {weld[loop[0]], weld[loop[1]], weld[loop[2]], weld[loop[3]]};
-      const auto& P = soup.positions;
-      for (const auto& t : quad_triangles(q, P[q[0]], P[q[1]], P[q[2]], P[q[3]]))
+      for (const auto& t : quad_triangles(q, soup.positions))
         add_triangle(soup, t[0], t[1], t[2], f);
       continue;
     }

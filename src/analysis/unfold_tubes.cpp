@@ -120,19 +120,19 @@ const std::vector<TubeSetting>& tube_settings() {
 
 std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
   const Halfedge h = HalfedgeMesh::halfedge(tube.bridge, 0);
+  const std::string name =
+      fmt::format("the tube of face {} (bridge {} {})", tube.face.idx + 1, mesh.origin(h).idx + 1,
+                  mesh.origin(HalfedgeMesh::twin(h)).idx + 1);
   const std::string folds =
       tube.fitted.clean()
           ? fmt::format(
-                "the line through the openings' centres meets the tube of face {} (bridge {} {}) "
-                "with its fitted K-gons, which are clean at resolution {}",
-                tube.face.idx + 1, mesh.origin(h).idx + 1,
-                mesh.origin(HalfedgeMesh::twin(h)).idx + 1, tube.resolution)
+                "the line through the openings' centres meets {} with its fitted "
+                "K-gons, which are clean at resolution {}",
+                name, tube.resolution)
           : fmt::format(
-                "the tube of face {} (bridge {} {}) folds with its fitted K-gons ({} folded and "
-                "{} crossing pairs of triangles at resolution {})",
-                tube.face.idx + 1, mesh.origin(h).idx + 1,
-                mesh.origin(HalfedgeMesh::twin(h)).idx + 1, tube.fitted.folds,
-                tube.fitted.self_intersections, tube.resolution);
+                "{} folds with its fitted K-gons ({} folded and {} crossing pairs of "
+                "triangles at resolution {})",
+                name, tube.fitted.folds, tube.fitted.self_intersections, tube.resolution);
   if (!tube.unfolded())
     return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
                        tube.settings_tried - 1);
@@ -220,9 +220,9 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
     // A clean tube is searched too when the line between the rims' centres is its axis and
     // meets its wall: the hole is pushed off its axis (prism 16's half twists, docs/method.md).
     const bool fitted_clean = result.fitted.clean();
+    if (fitted_clean && !axis_through_rims(mesh, *openings, centre_b - centre_a)) continue;
     const bool fitted_open = open();
-    if (fitted_clean && (fitted_open || !axis_through_rims(mesh, *openings, centre_b - centre_a)))
-      continue;
+    if (fitted_clean && fitted_open) continue;
     // A clean setting that closes the tube (the line between the rims' centres meets its wall)
     // is kept only when no clean setting leaves it open, and only when the fitted K-gons fold
     // and close it too: a hole pinched shut is not what the user made, a fold at least shows.

@@ -431,9 +431,8 @@ void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>&
         };
         for_each_face(block, [&](int size, const int* loop) {
           if (size == 4) {  // as the tessellation's quads are split everywhere
-            const std::array q = {loop[0], loop[1], loop[2], loop[3]};
-            for (const auto& t : quad_triangles(q, positions[q[0]], positions[q[1]],
-                                                positions[q[2]], positions[q[3]]))
+            for (const auto& t :
+                 quad_triangles(std::array{loop[0], loop[1], loop[2], loop[3]}, positions))
               put(positions[t[0]], positions[t[1]], positions[t[2]]);
             return;
           }

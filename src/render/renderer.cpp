@@ -247,19 +247,14 @@ std::vector<SurfaceVertex> surface_vertices(const TessellatedMesh& s, int first,
   return vertices;
 }
 
-// The two triangles of a quad as every file and check splits it (stitch::quad_triangles).
-std::array<std::array<int, 3>, 2> split(const TessellatedMesh& s, const std::array<int, 4>& q) {
-  const auto& P = s.positions;
-  return stitch::quad_triangles(q, P[q[0]], P[q[1]], P[q[2]], P[q[3]]);
-}
-
-// Both triangles of quads [first, first + count), degenerate ones included. The split follows
-// the positions given; update_surface_vertices moves vertices without rewriting it.
+// Both triangles of quads [first, first + count), degenerate ones included, split as every file
+// and check splits them (quad_triangles). The split follows the positions given;
+// update_surface_vertices moves vertices without rewriting it.
 std::vector<std::uint32_t> block_triangles(const TessellatedMesh& s, int first, int count) {
   std::vector<std::uint32_t> indices;
   indices.reserve(static_cast<size_t>(count) * 6);
   for (int k = first; k < first + count; ++k)
-    for (const auto& t : split(s, s.quads[k]))
+    for (const auto& t : quad_triangles(s.quads[k], s.positions))
       for (const int i : t) indices.push_back(static_cast<std::uint32_t>(i));
   return indices;
 }
@@ -296,7 +291,7 @@ void Renderer::set_surface(const TessellatedMesh& s) {
   indices.reserve(s.quads.size() * 6);
   for (const auto& q : s.quads) {
     // Degenerate quads (a repeated index: the fans of input_faces) give one triangle.
-    for (const auto& t : split(s, q)) {
+    for (const auto& t : quad_triangles(q, s.positions)) {
       if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
       indices.insert(indices.end(), t.begin(), t.end());
     }

@@ -63,8 +63,7 @@ tinygltf::Model make_model(const TessellatedMesh& mesh,
   std::vector<std::uint32_t> indices;
   indices.reserve(6 * mesh.quads.size());
   for (const auto& q : mesh.quads)
-    for (const auto& t : quad_triangles(q, mesh.positions[q[0]], mesh.positions[q[1]],
-                                        mesh.positions[q[2]], mesh.positions[q[3]]))
+    for (const auto& t : quad_triangles(q, mesh.positions))
       for (int i : t) indices.push_back(static_cast<std::uint32_t>(i));
 
   tinygltf::Model model;

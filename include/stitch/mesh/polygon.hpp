@@ -48,4 +48,12 @@ std::array<std::array<Index, 3>, 2> quad_triangles(const std::array<Index, 4>& q
   return {{{q[0], q[1], q[3]}, {q[1], q[2], q[3]}}};
 }
 
+/// The same for a quad of indices into `positions` (anything indexed by them, e.g. a
+/// std::vector<Vec3>).
+template <class Index, class Positions>
+std::array<std::array<Index, 3>, 2> quad_triangles(const std::array<Index, 4>& q,
+                                                   const Positions& positions) {
+  return quad_triangles(q, positions[q[0]], positions[q[1]], positions[q[2]], positions[q[3]]);
+}
+
 }  // namespace stitch
