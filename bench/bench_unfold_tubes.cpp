@@ -3,7 +3,10 @@
 // the options reset each iteration, so each one searches from the fitted placement again.
 //   unfold_tubes/0   prism 16's half twist (insert-edge 1@1 25@2): clean with its fitted K-gons
 //                    but its axis blocked; opened by the second setting
-//   unfold_tubes/1   prism 4 six high, one step (insert-edge 1@1 6@2): none clean, all 396 tried
+//   unfold_tubes/1   prism 4 six high, one step (insert-edge 1@1 6@2): no setting of the grid is
+//                    clean (all 396 tried); the descent past it finds one
+//   unfold_tubes/2   the same tube with the grid alone (descent_evaluations 0): all 396, none
+//                    clean, as /1 was before the descent
 // The counter `settings` is the number of settings checked per search.
 #include <benchmark/benchmark.h>
 
@@ -24,13 +27,16 @@ HalfedgeMesh folding_tube(int kind) {
 }
 
 void unfold_tubes(benchmark::State& state) {
-  const HalfedgeMesh mesh = folding_tube(static_cast<int>(state.range(0)));
+  const int kind = static_cast<int>(state.range(0));
+  const HalfedgeMesh mesh = folding_tube(kind == 0 ? 0 : 1);
+  UnfoldTubesOptions search;
+  if (kind == 2) search.descent_evaluations = 0;
   BezierSurface surface = build_bezier_surface(mesh);
   const std::vector<Face> tubes = faces_with_two_openings(mesh, {});
   int settings = 0;
   for (auto _ : state) {
     KgonOptions options;
-    const auto found = stitch::unfold_tubes(mesh, options, surface, tubes);
+    const auto found = stitch::unfold_tubes(mesh, options, surface, tubes, search);
     settings = found.empty() ? 0 : found[0].settings_tried;
     benchmark::DoNotOptimize(found.data());
     // Back to the fitted K-gons for the next search, not timed.
@@ -40,6 +46,6 @@ void unfold_tubes(benchmark::State& state) {
   }
   state.counters["settings"] = settings;
 }
-BENCHMARK(unfold_tubes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(unfold_tubes)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

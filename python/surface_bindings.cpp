@@ -59,8 +59,13 @@ py::list unfolded_tubes(const SurfaceHandle& s) {
     d["face_scale"] = t.face_control.scale;
     d["face_rotate"] = t.face_control.rotate_deg;
     d["face_stretch"] = t.face_control.stretch;
+    const Vec3& along = t.face_control.stretch_along;
+    d["face_stretch_along"] = py::make_tuple(along.x(), along.y(), along.z());
+    const Vec3& offset = t.face_control.offset;
+    d["face_offset"] = py::make_tuple(offset.x(), offset.y(), offset.z());
     d["bridge_scale"] = t.bridge_control.scale;
     d["settings_tried"] = t.settings_tried;
+    d["descended"] = t.descended;
     d["axis_open"] = t.axis_open;
     out.append(std::move(d));
   }
@@ -277,9 +282,10 @@ void bind_surface(py::module_& m) {
                              "(0-based face and edge indices), fitted_folds and "
                              "fitted_self_intersections (pairs of triangles at resolution 16), "
                              "unfolded (a clean setting was found), face_scale, face_rotate "
-                             "(degrees) and bridge_scale (the controls used), settings_tried, "
-                             "axis_open (the line through the openings' centres misses the "
-                             "tube)")
+                             "(degrees), face_stretch, face_stretch_along, face_offset and "
+                             "bridge_scale (the controls used), settings_tried, descended (found "
+                             "by the descent past the grid of settings), axis_open (the line "
+                             "through the openings' centres misses the tube)")
       .def_property_readonly("method",
                              [](const SurfaceHandle& s) { return to_string(s.surface->method()); })
       .def_property_readonly("mesh", [](const SurfaceHandle& s) { return MeshHandle{s.mesh}; })

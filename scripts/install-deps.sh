@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
-  libeigen3-dev libosd-dev libtbb-dev libfmt-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libosd-dev libtbb-dev libfmt-dev nlohmann-json3-dev libcli11-dev libnlopt-cxx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libepoxy-dev libegl-dev libegl1-mesa-dev libgl-dev libgbm-dev libosmesa6-dev libgl1-mesa-dri
   libglfw3-dev libimgui-dev libstb-dev

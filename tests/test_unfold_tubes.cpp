@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
+#include "analysis/tube_descent.hpp"
 #include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/net/control_net.hpp"
@@ -253,21 +255,93 @@ TEST(UnfoldTubes, TheUsersControlsAreKept) {
 
 TEST(UnfoldTubes, ATubeNoSettingUnfoldsIsLeftFitted) {
   // Prism 4 six high, one step of twist: its folds lie at the rims' far corners, which no
-  // setting of the face K-gon or the bridge's reaches (docs/method.md). Every setting is tried,
-  // none is kept, and the surface is left as the fitted K-gons build it.
+  // setting of the grid reaches (docs/method.md); with the descent turned off, every setting is
+  // tried, none is kept, and the surface is left as the fitted K-gons build it.
   const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 6@2");
   KgonOptions options;
   BezierSurface surface = build_bezier_surface(mesh, options);
+  UnfoldTubesOptions grid_only;
+  grid_only.descent_evaluations = 0;
   const std::vector<TubeUnfolding> found =
-      unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options));
+      unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options), grid_only);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_FALSE(found[0].unfolded());
+  EXPECT_FALSE(found[0].descended);
   EXPECT_EQ(found[0].settings_tried, static_cast<int>(tube_settings().size()));
   EXPECT_EQ(found[0].chosen.folds, found[0].fitted.folds);
   EXPECT_GT(found[0].fitted.folds, 0);
   EXPECT_TRUE(options.face.empty());
   EXPECT_TRUE(options.edge.empty());
   expect_built_with(mesh, surface, options);
+}
+
+TEST(UnfoldTubes, TheDescentCleansWhatNoSettingOfTheGridDoes) {
+  // The same tube with the descent (tube_descent.hpp): past the grid, it moves the controls
+  // downhill from the fitted placement and stops at the first setting the local check finds
+  // clean with the axis open. The whole surface is then clean and open at resolution 16, C1
+  // along every edge (the K-gons stay planar), and the search makes the same choice again.
+  const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 6@2");
+  KgonOptions options;
+  BezierSurface surface = build_bezier_surface(mesh, options);
+  const std::vector<TubeUnfolding> found =
+      unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options));
+  ASSERT_EQ(found.size(), 1u);
+  const TubeUnfolding& tube = found[0];
+  ASSERT_TRUE(tube.unfolded());
+  EXPECT_TRUE(tube.descended);
+  EXPECT_TRUE(tube.axis_open);
+  const int grid = static_cast<int>(tube_settings().size());
+  EXPECT_GT(tube.settings_tried, grid);
+  EXPECT_LE(tube.settings_tried, grid + UnfoldTubesOptions{}.descent_evaluations);
+  expect_built_with(mesh, surface, options);
+  // Within the descent's bounds, and within what every front end reads back.
+  const KgonControl& face = tube.face_control;
+  EXPECT_NO_THROW(check_kgon_control(face));
+  EXPECT_NO_THROW(check_kgon_control(tube.bridge_control));
+  EXPECT_GE(face.scale, std::exp(-1.5));
+  EXPECT_LE(face.scale, std::exp(1.5));
+  EXPECT_LE(std::abs(face.rotate_deg), 90);
+  EXPECT_GE(face.stretch, std::exp(-1.2));
+  EXPECT_LE(face.stretch, std::exp(1.2));
+  EXPECT_GE(tube.bridge_control.scale, std::exp(-1.2));
+  EXPECT_LE(tube.bridge_control.scale, std::exp(1.2));
+  EXPECT_EQ(options.face.at(0), face);
+  // The whole surface, as stitch smooth builds it (unfold_tubes again, from the mesh alone).
+  const PairResult whole = check_tube(
+      prism(4, 6), "insert-edge 1@1 6@2", Vec3(0, 0, -3), Vec3(0, 0, 3), test::C1Check::every_pair,
+      test::SweepTessellation::resolution_16, {}, test::TubeKgons::unfolded);
+  EXPECT_TRUE(whole.clean) << whole.problems;
+  EXPECT_TRUE(whole.open);
+  KgonOptions again;
+  const std::vector<TubeUnfolding> repeated = unfold_tubes(mesh, again);
+  ASSERT_EQ(repeated.size(), 1u);
+  EXPECT_EQ(repeated[0].face_control, face);
+  EXPECT_EQ(repeated[0].bridge_control, tube.bridge_control);
+  EXPECT_EQ(repeated[0].settings_tried, tube.settings_tried);
+}
+
+TEST(TubeDescent, SharpTurnsGrowAsAFoldForms) {
+  // One patch's grid of 8 folded along its middle row like a roof of slope s: the cells on
+  // either side turn by 2 atan(s). Below 30 degrees that counts nothing; past it, the sum grows
+  // with the angle, (angle - 30) / 60 for each of the 8 pairs of cells across the ridge.
+  auto roof = [](double slope) {
+    detail::PatchGrids g;
+    g.n = 8;
+    g.corners = {Corner(0)};
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j) {
+        const double x = i / 8.0, y = j / 8.0;
+        g.positions.emplace_back(x, y, -slope * std::abs(x - 0.5));
+      }
+    return g;
+  };
+  EXPECT_EQ(detail::sharp_turns(roof(0)), 0);
+  EXPECT_EQ(detail::sharp_turns(roof(std::tan(14 * std::numbers::pi / 180))), 0);
+  for (double degrees : {40.0, 90.0, 150.0}) {
+    const double turns = detail::sharp_turns(roof(std::tan(degrees / 2 * std::numbers::pi / 180)));
+    // Tolerance: the angle comes back through acos of a dot product of unit normals.
+    EXPECT_NEAR(turns, 8 * (degrees - 30) / 60, 1e-9) << degrees;
+  }
 }
 
 }  // namespace

@@ -13,11 +13,14 @@
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/topology/operation.hpp"
+#include "support/scratch.hpp"
+#include "triangle_check.hpp"
 
 namespace stitch {
 
 namespace {
 
+using detail::ScratchVector;
 using detail::sort_unique;
 
 bool has_patch(const HalfedgeMesh& m, Corner c) {
@@ -56,14 +59,22 @@ std::uint64_t sample_key(const HalfedgeMesh& m, Corner c, int i, int j, int n) {
   return key(On::interior, c.idx, i, j);
 }
 
-void add_triangle(TriangleSoup& soup, std::vector<char>& focus, int a, int b, int c, int source,
-                  bool focused) {
-  // A grid cell at a collapsed side repeats a vertex: no triangle (as triangulate does).
-  if (a == b || b == c || a == c) return;
-  soup.triangles.push_back({a, b, c});
-  soup.source.push_back(source);
-  focus.push_back(focused ? 1 : 0);
-}
+/// The triangles of the patches checked, in scratch storage: a search checks one setting after
+/// another, and fresh arrays each time cost more than the check (support/scratch.hpp).
+struct LocalTriangles {
+  ScratchVector<Vec3> positions;
+  ScratchVector<std::array<int, 3>> triangles;
+  ScratchVector<int> source;  ///< the corner whose patch each triangle samples
+  ScratchVector<char> focus;
+
+  void add(int a, int b, int c, int corner, bool focused) {
+    // A grid cell at a collapsed side repeats a vertex: no triangle (as triangulate does).
+    if (a == b || b == c || a == c) return;
+    triangles.push_back({a, b, c});
+    source.push_back(corner);
+    focus.push_back(focused ? 1 : 0);
+  }
+};
 
 }  // namespace
 
@@ -98,9 +109,15 @@ LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>&
   report.patches = static_cast<int>(local.size());
   if (local.empty()) return report;
 
-  TriangleSoup soup;
-  std::vector<char> focus;
+  LocalTriangles soup;
+  const std::size_t samples = local.size() * (n + 1) * (n + 1);
+  soup.positions.reserve(samples);
+  const std::size_t triangles = 2 * local.size() * n * n;
+  soup.triangles.reserve(triangles);
+  soup.source.reserve(triangles);
+  soup.focus.reserve(triangles);
   std::unordered_map<std::uint64_t, int> welded;
+  welded.reserve(samples);
   const int side = n + 1;
   std::vector<int> grid(static_cast<size_t>(side) * side);
   for (Corner c : local) {
@@ -119,13 +136,14 @@ LocalCheckReport check_patches(const HalfedgeMesh& m, const std::vector<Corner>&
         const int q0 = grid[i * side + j], q1 = grid[(i + 1) * side + j],
                   q2 = grid[(i + 1) * side + j + 1], q3 = grid[i * side + j + 1];
         for (const auto& t : quad_triangles(std::array{q0, q1, q2, q3}, soup.positions))
-          add_triangle(soup, focus, t[0], t[1], t[2], c.idx, focused);
+          soup.add(t[0], t[1], t[2], c.idx, focused);
       }
   }
 
   SurfaceCheckOptions check = options.surface;
   check.max_listed = std::numeric_limits<int>::max();
-  const SurfaceCheckReport r = check_surface(soup, focus, check);
+  const SurfaceCheckReport r =
+      detail::check_triangles(soup.positions, soup.triangles, soup.focus, check);
   report.triangles = r.triangles;
   report.self_intersections = r.self_intersections;
   report.folds = r.folds;

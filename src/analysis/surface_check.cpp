@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "stitch/mesh/polygon.hpp"
+#include "support/scratch.hpp"
+#include "triangle_check.hpp"
 
 namespace stitch {
 
@@ -166,16 +168,14 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2, const V
   return std::min(hi_a, hi_b) > std::max(lo_a, lo_b);
 }
 
-namespace {
-
-/// Both checks: the whole surface (focus null) and the part of it near an edit (focus[t] for the
-/// triangles whose problems count; pairs count when either triangle is in focus).
-SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focus,
-                         const SurfaceCheckOptions& options) {
+/// Both checks: the whole surface (focus empty) and the part of it near an edit (focus[t] for
+/// the triangles whose problems count; pairs count when either triangle is in focus).
+SurfaceCheckReport detail::check_triangles(std::span<const Vec3> P,
+                                           std::span<const std::array<int, 3>> T,
+                                           std::span<const char> focus,
+                                           const SurfaceCheckOptions& options) {
   SurfaceCheckReport report;
-  auto focused = [&](int t) { return focus == nullptr || (*focus)[t] != 0; };
-  const auto& P = soup.positions;
-  const auto& T = soup.triangles;
+  auto focused = [&](int t) { return focus.empty() || focus[t] != 0; };
   const int nt = static_cast<int>(T.size());
   report.triangles = nt;
   if (nt == 0) return report;
@@ -187,8 +187,8 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
       hi = hi.cwiseMax(P[v]);
     }
   const double diag = (hi - lo).norm();
-  std::vector<Vec3> normal(nt);
-  std::vector<char> degenerate(nt, 0);
+  detail::ScratchVector<Vec3> normal(nt);
+  detail::ScratchVector<char> degenerate(nt, 0);
   for (int i = 0; i < nt; ++i) {
     normal[i] = (P[T[i][1]] - P[T[i][0]]).cross(P[T[i][2]] - P[T[i][0]]);
     if (normal[i].norm() <= options.degenerate_relative_area * diag * diag) {
@@ -216,13 +216,13 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
            static_cast<std::uint32_t>(std::max(a, b));
   };
-  std::vector<int> bucket_start(P.size() + 1, 0);
+  detail::ScratchVector<int> bucket_start(P.size() + 1, 0);
   for (const auto& t : T)
     for (int k = 0; k < 3; ++k) ++bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
   for (size_t v = 0; v < P.size(); ++v) bucket_start[v + 1] += bucket_start[v];
-  std::vector<EdgeUse> uses(static_cast<size_t>(nt) * 3);
+  detail::ScratchVector<EdgeUse> uses(static_cast<size_t>(nt) * 3);
   {
-    std::vector<int> next(bucket_start.begin(), bucket_start.end() - 1);
+    detail::ScratchVector<int> next(bucket_start.begin(), bucket_start.end() - 1);
     for (int i = 0; i < nt; ++i)
       for (int k = 0; k < 3; ++k) {
         const int a = T[i][k], b = T[i][(k + 1) % 3];
@@ -279,8 +279,8 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
   };
   // (cell, triangle) for every cell a triangle's box meets, sorted so each cell's triangles
   // form a run; and each triangle's first cell.
-  std::vector<std::pair<std::uint64_t, int>> in_cell;
-  std::vector<std::array<long, 3>> first_cell(static_cast<size_t>(nt));
+  detail::ScratchVector<std::pair<std::uint64_t, int>> in_cell;
+  detail::ScratchVector<std::array<long, 3>> first_cell(static_cast<size_t>(nt));
   for (int i = 0; i < nt; ++i) {
     Vec3 tlo = P[T[i][0]], thi = tlo;
     for (int v : T[i]) {
@@ -299,7 +299,7 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
   // Each cell's pairs are independent of the other cells': runs of cells are checked in
   // parallel, each chunk counting and listing its own crossings, merged in the cells' order so
   // the pairs listed are those a single pass would list.
-  std::vector<size_t> run_start;
+  detail::ScratchVector<size_t> run_start;
   for (size_t run = 0; run < in_cell.size();) {
     run_start.push_back(run);
     const std::uint64_t cell_here = in_cell[run].first;
@@ -312,7 +312,7 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
   };
   constexpr size_t kRunsPerChunk = 512;
   const size_t runs = run_start.size() - 1;
-  std::vector<Crossings> chunks((runs + kRunsPerChunk - 1) / kRunsPerChunk);
+  detail::ScratchVector<Crossings> chunks((runs + kRunsPerChunk - 1) / kRunsPerChunk);
   tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t chunk) {
     Crossings& found = chunks[chunk];
     const size_t last = std::min(runs, (chunk + 1) * kRunsPerChunk);
@@ -368,10 +368,8 @@ SurfaceCheckReport check(const TriangleSoup& soup, const std::vector<char>* focu
   return report;
 }
 
-}  // namespace
-
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options) {
-  return check(soup, nullptr, options);
+  return detail::check_triangles(soup.positions, soup.triangles, {}, options);
 }
 
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const std::vector<char>& focus,
@@ -379,7 +377,7 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const std::vector<cha
   if (focus.size() != soup.triangles.size())
     throw std::invalid_argument(fmt::format("check_surface: {} focus flags for {} triangles",
                                             focus.size(), soup.triangles.size()));
-  return check(soup, &focus, options);
+  return detail::check_triangles(soup.positions, soup.triangles, focus, options);
 }
 
 std::string SurfaceCheckReport::describe(const TriangleSoup& soup) const {

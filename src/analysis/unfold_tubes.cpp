@@ -13,6 +13,7 @@
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/net/control_net.hpp"
+#include "tube_descent.hpp"
 
 namespace stitch {
 
@@ -41,7 +42,7 @@ std::vector<TubeSetting> make_settings() {
 }
 
 /// The two K-gons a setting changes, with the controls the options give them.
-struct TubeControls {
+struct TubeKgons {
   Face face;
   Edge bridge;
   Vec3 along;  ///< the tube's direction, from one rim's centre to the other's
@@ -57,6 +58,10 @@ struct TubeControls {
     }
     options.face[face.idx] = c;
     options.edge[bridge.idx] = KgonControl{.scale = s.bridge_scale};
+  }
+  void set(KgonOptions& options, const detail::TubeControls& controls) const {
+    options.face[face.idx] = controls.face;
+    options.edge[bridge.idx] = controls.bridge;
   }
   void clear(KgonOptions& options) const {
     options.face.erase(face.idx);
@@ -89,17 +94,28 @@ bool axis_through_rims(const HalfedgeMesh& mesh, const TwoOpenings& openings, co
   return true;
 }
 
-/// Whether the segment from a to b misses the patches of `corners`, each sampled on the grid of
-/// resolution n. Each cell is cut along both diagonals: a wall that comes this close to the line
-/// blocks it in some tessellation of the same samples.
-bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const Vec3& b,
-               const PatchGridSampler& sample) {
-  TriangleSoup soup;
-  for (Corner c : corners) {
-    const int first = static_cast<int>(soup.positions.size());
+/// The patches of `corners` sampled on the grid of resolution n.
+detail::PatchGrids sample_grids(const std::vector<Corner>& corners, int n, PatchSampler& sampler) {
+  detail::PatchGrids grids;
+  grids.n = n;
+  grids.corners = corners;
+  grids.positions.reserve(corners.size() * (n + 1) * (n + 1));
+  for (Corner c : corners)
     for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) soup.positions.push_back(sample(c, i, j));
-    auto at = [&](int i, int j) { return first + i * (n + 1) + j; };
+      for (int j = 0; j <= n; ++j)
+        grids.positions.push_back(sampler.evaluate_grid(c, i, j).position);
+  return grids;
+}
+
+/// Where the segment from a to b meets the sampled patches. Each cell is cut along both
+/// diagonals: a wall that comes this close to the line blocks it in some tessellation of the
+/// same samples.
+int axis_hits(const detail::PatchGrids& grids, const Vec3& a, const Vec3& b) {
+  TriangleSoup soup;
+  soup.positions = grids.positions;
+  const int n = grids.n;
+  for (size_t k = 0; k < grids.corners.size(); ++k) {
+    auto at = [&](int i, int j) { return static_cast<int>((k * (n + 1) + i) * (n + 1) + j); };
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         soup.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
@@ -108,7 +124,14 @@ bool axis_open(const std::vector<Corner>& corners, int n, const Vec3& a, const V
         soup.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
       }
   }
-  return segment_hits(soup, a, b).empty();
+  return static_cast<int>(segment_hits(soup, a, b).size());
+}
+
+/// The mean distance of a rim's vertices from its centre.
+double rim_radius(const HalfedgeMesh& mesh, const std::vector<Corner>& rim, const Vec3& centre) {
+  double sum = 0;
+  for (Corner c : rim) sum += (mesh.position(mesh.origin(c)) - centre).norm();
+  return sum / static_cast<double>(rim.size());
 }
 
 }  // namespace
@@ -134,16 +157,24 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
                 "triangles at resolution {})",
                 name, tube.fitted.folds, tube.fitted.self_intersections, tube.resolution);
   if (!tube.unfolded())
-    return fmt::format("{}, and none of the {} other K-gon settings tried is clean", folds,
-                       tube.settings_tried - 1);
-  const std::string stretch =
-      tube.face_control.stretch == 1
-          ? ""
-          : fmt::format(" stretch {:g} along the tube", tube.face_control.stretch);
+    return fmt::format("{}, and none of the {} other K-gon settings tried is clean{}", folds,
+                       tube.settings_tried - 1, tube.fitted.clean() ? " and open" : "");
+  // Three digits: the descent's values are continuous, and a note is read, not parsed.
+  const KgonControl& face = tube.face_control;
+  auto vector = [](const Vec3& v) {
+    return fmt::format("({:.3g}, {:.3g}, {:.3g})", v.x(), v.y(), v.z());
+  };
+  std::string shape;
+  if (face.stretch != 1)
+    shape += tube.descended
+                 ? fmt::format(" stretch {:.3g} along {}", face.stretch, vector(face.stretch_along))
+                 : fmt::format(" stretch {:.3g} along the tube", face.stretch);
+  if (!face.offset.isZero()) shape += " offset " + vector(face.offset);
   return fmt::format(
-      "{}; chosen instead: face K-gon scale {:g} rotate {:g}{}, bridge K-gon scale {:g} (clean{})",
-      folds, tube.face_control.scale, tube.face_control.rotate_deg, stretch,
-      tube.bridge_control.scale,
+      "{}; chosen instead{}: face K-gon scale {:.3g} rotate {:.3g}{}, bridge K-gon scale {:.3g} "
+      "(clean{})",
+      folds, tube.descended ? fmt::format(" after {} settings", tube.settings_tried) : "",
+      face.scale, face.rotate_deg, shape, tube.bridge_control.scale,
       tube.axis_open ? ""
                      : "; the line through the openings' centres meets the tube, as it does "
                        "with the fitted K-gons");
@@ -184,7 +215,7 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
                centre_b = rim_centre(mesh, openings->second);
     const Vec3 axis_a = centre_a + 3 * (centre_a - centre_b),
                axis_b = centre_b + 3 * (centre_b - centre_a);
-    const TubeControls tube{f, bridge, centre_b - centre_a};
+    const TubeKgons tube{f, bridge, centre_b - centre_a};
 
     KgonElements reach;
     reach.faces = {f};
@@ -194,34 +225,52 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       update_kgons(mesh, options, surface.kgons, {f}, {}, {tube.bridge});
       for (Corner c : changed) surface.nets[c.idx] = build_control_net(mesh, surface.kgons, c);
     };
-    auto check = [&](const LocalCheckOptions& options) {
-      PatchSampler sampler(unfold.method, surface.nets, options.resolution);
+    const int n = unfold.check.resolution;
+    // The changed patches are sampled once per setting, for the check, the axis and the
+    // descent's sharp turns; their neighbours only by the check.
+    std::vector<std::size_t> slot(mesh.halfedge_capacity(), changed.size());
+    for (std::size_t k = 0; k < changed.size(); ++k) slot[changed[k].idx] = k;
+    auto check = [&](const LocalCheckOptions& options, const detail::PatchGrids& grids,
+                     PatchSampler& sampler) {
       return check_patches(
           mesh, changed,
-          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; }, options);
-    };
-    auto open = [&] {
-      PatchSampler sampler(unfold.method, surface.nets, unfold.check.resolution);
-      return axis_open(
-          changed, unfold.check.resolution, axis_a, axis_b,
-          [&](Corner c, int i, int j) { return sampler.evaluate_grid(c, i, j).position; });
+          [&](Corner c, int i, int j) {
+            const std::size_t k = slot[c.idx];
+            return k < changed.size() ? grids.at(k, i, j) : sampler.evaluate_grid(c, i, j).position;
+          },
+          options);
     };
     // The settings tried only need to be told clean or not.
     LocalCheckOptions quick = unfold.check;
     quick.surface.crossings_only_when_unfolded = true;
+    struct Checked {
+      LocalCheckReport report;
+      detail::PatchGrids grids;
+    };
+    auto check_setting = [&](const LocalCheckOptions& options) {
+      PatchSampler sampler(unfold.method, surface.nets, n);
+      Checked out{{}, sample_grids(changed, n, sampler)};
+      out.report = check(options, out.grids, sampler);
+      return out;
+    };
+    auto open = [&](const detail::PatchGrids& grids) {
+      return axis_hits(grids, axis_a, axis_b) == 0;
+    };
 
     TubeUnfolding result;
     result.face = f;
     result.bridge = tube.bridge;
-    result.fitted = check(unfold.check);
+    Checked fitted = check_setting(unfold.check);
+    result.fitted = fitted.report;
     result.chosen = result.fitted;
     result.settings_tried = 1;
-    result.resolution = unfold.check.resolution;
+    result.resolution = n;
     // A clean tube is searched too when the line between the rims' centres is its axis and
     // meets its wall: the hole is pushed off its axis (prism 16's half twists, docs/method.md).
     const bool fitted_clean = result.fitted.clean();
-    if (fitted_clean && !axis_through_rims(mesh, *openings, centre_b - centre_a)) continue;
-    const bool fitted_open = open();
+    const bool axis_counts = axis_through_rims(mesh, *openings, centre_b - centre_a);
+    if (fitted_clean && !axis_counts) continue;
+    const bool fitted_open = open(fitted.grids);
     if (fitted_clean && fitted_open) continue;
     // A clean setting that closes the tube (the line between the rims' centres meets its wall)
     // is kept only when no clean setting leaves it open, and only when the fitted K-gons fold
@@ -234,34 +283,74 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
       tube.set(options, s);
       rebuild();
       ++result.settings_tried;
-      LocalCheckReport report = check(quick);
-      if (!report.clean()) continue;
-      if (open()) {
+      Checked setting = check_setting(quick);
+      if (!setting.report.clean()) continue;
+      if (open(setting.grids)) {
         chosen = s;
-        result.chosen = std::move(report);
+        result.chosen = std::move(setting.report);
         break;
       }
       if (!closed && !fitted_open && !fitted_clean) {
         closed = s;
-        closed_report = std::move(report);
+        closed_report = std::move(setting.report);
       }
     }
-    if (!chosen && closed) {
-      chosen = closed;
+    // Then downhill from the fitted placement over the same controls taken as continuous, with
+    // the stretch's direction and the face K-gon's offset besides (tube_descent.hpp); the axis
+    // counts where it is the tube's.
+    std::optional<detail::TubeControls> descended;
+    if (!chosen && unfold.descent_evaluations > 0) {
+      tube.clear(options);
+      rebuild();
+      detail::TubeFrame frame;
+      frame.length = (centre_b - centre_a).norm();
+      frame.along = (centre_b - centre_a) / frame.length;
+      frame.face_normal = surface.kgons.face[f.idx].normal;
+      frame.across = frame.face_normal.cross(frame.along);
+      // A K-gon facing along the tube (not met on the tubes measured) has no direction across
+      // it that the cross product gives.
+      frame.across = frame.across.norm() > 1e-6 ? Vec3(frame.across.normalized())
+                                                : Vec3(frame.along.unitOrthogonal());
+      frame.radius = rim_radius(mesh, openings->first, centre_a);
+      int evaluations = 0;
+      descended = detail::tube_descent(
+          frame, options.global,
+          [&](const detail::TubeControls& controls) {
+            tube.set(options, controls);
+            rebuild();
+            Checked setting = check_setting(unfold.check);
+            return detail::TubeScore{std::move(setting.report), detail::sharp_turns(setting.grids),
+                                     axis_counts ? axis_hits(setting.grids, axis_a, axis_b) : 0};
+          },
+          unfold.descent_evaluations, evaluations);
+      result.settings_tried += evaluations;
+    }
+    if (descended) {
+      tube.set(options, *descended);
+      rebuild();
+      Checked setting = check_setting(unfold.check);
+      result.chosen = std::move(setting.report);
+      result.axis_open = open(setting.grids);
+      result.descended = true;
+    } else if (chosen) {
+      tube.set(options, *chosen);
+      rebuild();
+    } else if (closed) {
+      tube.set(options, *closed);
+      rebuild();
       result.chosen = std::move(closed_report);
       result.axis_open = false;
-    }
-    if (chosen) {
-      tube.set(options, *chosen);
-      result.face_control = options.face[f.idx];
-      result.bridge_control = options.edge[tube.bridge.idx];
     } else {
       tube.clear(options);
+      rebuild();
       result.axis_open = fitted_open;
     }
-    rebuild();
+    if (descended || chosen || closed) {
+      result.face_control = options.face[f.idx];
+      result.bridge_control = options.edge[tube.bridge.idx];
+    }
     // A clean tube that no setting opens keeps its fitted K-gons, as any clean tube does.
-    if (fitted_clean && !chosen) continue;
+    if (fitted_clean && !chosen && !descended) continue;
     out.push_back(std::move(result));
   }
   return out;

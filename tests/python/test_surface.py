@@ -212,6 +212,8 @@ def test_a_tube_that_folds_is_unfolded():
     assert tube["fitted_folds"] > 0 and tube["unfolded"] and tube["axis_open"]
     setting = (tube["face_scale"], tube["face_rotate"], tube["face_stretch"], tube["bridge_scale"])
     assert setting != (1.0, 0.0, 1.0, 1.0)
+    # A setting of the grid: the descent past it (which also moves the face K-gon) not needed.
+    assert not tube["descended"] and tube["face_offset"] == (0.0, 0.0, 0.0)
     fitted = stitch.Surface(mesh, unfold_tubes=False)
     assert fitted.unfolded_tubes == []
     assert np.abs(surface.tessellate(2).vertices - fitted.tessellate(2).vertices).max() > 1e-3

@@ -27,6 +27,10 @@ struct UnfoldTubesOptions {
   /// The method whose surface is judged (mdc and asc share the nets but not the surface); with
   /// cc nothing is searched, since its surface does not come from the K-gons.
   Method method = Method::mdc;
+  /// Settings the descent may score (docs/method.md, "The descent") where no setting of
+  /// tube_settings() is clean and open: 0 searches the grid alone. The tubes measured took 17 to
+  /// 85; a tube that none of them cleans costs this many local checks.
+  int descent_evaluations = 600;
 };
 
 /// What the search found for one face with two openings whose surface folded (or was clean with
@@ -39,7 +43,10 @@ struct TubeUnfolding {
   KgonControl face_control;    ///< the setting chosen: scale, rotation, stretch of the face K-gon
   KgonControl bridge_control;  ///< and scale of the bridge's edge K-gon
   int settings_tried = 0;      ///< settings checked, the fitted one included
-  int resolution = 0;          ///< of the checks
+  /// Whether the setting was found by the descent, past the grid of tube_settings(): then the
+  /// face K-gon may also be stretched across the tube and moved (its offset).
+  bool descended = false;
+  int resolution = 0;  ///< of the checks
   /// Whether the line through the two rims' centres (3 times their distance beyond each) misses
   /// the tube's patches with the chosen setting. A clean setting that closes the tube is chosen
   /// only when no clean one leaves it open and the fitted K-gons close it too (the line is not a
