@@ -127,7 +127,7 @@ int axis_hits(const detail::PatchGrids& grids, const Vec3& a, const Vec3& b) {
   return static_cast<int>(segment_hits(soup, a, b).size());
 }
 
-/// The mean distance of a rim's vertices from its centre.
+/// The mean distance of a rim's corners from its centre.
 double rim_radius(const HalfedgeMesh& mesh, const std::vector<Corner>& rim, const Vec3& centre) {
   double sum = 0;
   for (Corner c : rim) sum += (mesh.position(mesh.origin(c)) - centre).norm();
@@ -162,7 +162,10 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
   // Three digits: the descent's values are continuous, and a note is read, not parsed.
   const KgonControl& face = tube.face_control;
   auto vector = [](const Vec3& v) {
-    return fmt::format("({:.3g}, {:.3g}, {:.3g})", v.x(), v.y(), v.z());
+    // Rounding leaves 1e-17 where a coordinate is 0 (the tube along z): shown as 0.
+    const Vec3 shown =
+        v.unaryExpr([&](double x) { return std::abs(x) < 1e-9 * v.norm() ? 0.0 : x; });
+    return fmt::format("({:.3g}, {:.3g}, {:.3g})", shown.x(), shown.y(), shown.z());
   };
   std::string shape;
   if (face.stretch != 1)
@@ -173,7 +176,8 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
   return fmt::format(
       "{}; chosen instead{}: face K-gon scale {:.3g} rotate {:.3g}{}, bridge K-gon scale {:.3g} "
       "(clean{})",
-      folds, tube.descended ? fmt::format(" after {} settings", tube.settings_tried) : "",
+      folds,
+      tube.descended ? fmt::format(" by the descent ({} settings tried)", tube.settings_tried) : "",
       face.scale, face.rotate_deg, shape, tube.bridge_control.scale,
       tube.axis_open ? ""
                      : "; the line through the openings' centres meets the tube, as it does "
