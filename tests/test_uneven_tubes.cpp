@@ -123,6 +123,20 @@ void expect_counts(const std::string& family, const std::map<int, Expected>& exp
   }
 }
 
+/// Every corner pair of each variant clean and open with the controls unfold_tubes chooses.
+void expect_every_pair_unfolded(const std::vector<std::pair<std::string, HalfedgeMesh>>& variants) {
+  for (const auto& [name, solid] : variants) {
+    SCOPED_TRACE(name);
+    const int n = solid.degree(Face(0));
+    const HalfedgeMesh regular = make_prism(n);
+    const auto results =
+        sweep(solid, 1, 2, C1Check::clean_pairs, &regular, test::SweepTessellation::resolution_16,
+              test::SweepScope::every_pair, test::TubeKgons::unfolded);
+    EXPECT_EQ(static_cast<int>(results.size()), n * n);
+    test::expect_clean_and_open(results, n);
+  }
+}
+
 TEST(UnevenTubes, CapsWithRadialJitter) {
   // Each cap vertex's distance from the axis times 0.8 to 1.2 (seed 1300 + n). Prism 12 (not
   // swept here): 106 of 144 clean, all open.
@@ -293,21 +307,10 @@ TEST(UnevenTubes, UnfoldedTubesAreCleanAndOpen) {
   // 10 (10 of 100 clean fitted), the radial jitter of prism 10 (79), the angular jitter of prism
   // 8 (56) and prism 8 at height 6 (40). method.md, "Tubes that still fold", has every variant's
   // counts; these four are the ones the search makes whole, within a time a test can take.
-  const std::vector<std::pair<std::string, HalfedgeMesh>> variants{
-      {"frustum 10", frustum(10)},
-      {"radial jitter 10", radial_jitter(10, 1310u)},
-      {"angular jitter 8", angular_jitter(8, 2308u)},
-      {"prism 8, height 6", with_height(8, 6)}};
-  for (const auto& [name, solid] : variants) {
-    SCOPED_TRACE(name);
-    const int n = solid.degree(Face(0));
-    const HalfedgeMesh regular = make_prism(n);
-    const auto results =
-        sweep(solid, 1, 2, C1Check::clean_pairs, &regular, test::SweepTessellation::resolution_16,
-              test::SweepScope::every_pair, test::TubeKgons::unfolded);
-    EXPECT_EQ(static_cast<int>(results.size()), n * n);
-    test::expect_clean_and_open(results, n);
-  }
+  expect_every_pair_unfolded({{"frustum 10", frustum(10)},
+                              {"radial jitter 10", radial_jitter(10, 1310u)},
+                              {"angular jitter 8", angular_jitter(8, 2308u)},
+                              {"prism 8, height 6", with_height(8, 6)}});
 }
 
 TEST(UnevenTubes, TheDescentLeavesEveryPairCleanAndOpen) {
@@ -317,20 +320,9 @@ TEST(UnevenTubes, TheDescentLeavesEveryPairCleanAndOpen) {
   // for time, the variants of prism 4 and 6 where the descent does the most: prism 4 six high (12
   // of its 16 pairs no grid setting cleans), prism 6 half as high (6 of 36: its half twists,
   // which cross themselves with the fitted K-gons) and the elliptic prism 6 (14 of 36).
-  const std::vector<std::pair<std::string, HalfedgeMesh>> variants{
-      {"prism 4, height 6", with_height(4, 6)},
-      {"prism 6, height 0.5", with_height(6, 0.5)},
-      {"ellipse 6", elongated(6)}};
-  for (const auto& [name, solid] : variants) {
-    SCOPED_TRACE(name);
-    const int n = solid.degree(Face(0));
-    const HalfedgeMesh regular = make_prism(n);
-    const auto results =
-        sweep(solid, 1, 2, C1Check::clean_pairs, &regular, test::SweepTessellation::resolution_16,
-              test::SweepScope::every_pair, test::TubeKgons::unfolded);
-    EXPECT_EQ(static_cast<int>(results.size()), n * n);
-    test::expect_clean_and_open(results, n);
-  }
+  expect_every_pair_unfolded({{"prism 4, height 6", with_height(4, 6)},
+                              {"prism 6, height 0.5", with_height(6, 0.5)},
+                              {"ellipse 6", elongated(6)}});
 }
 
 TEST(UnevenTubes, KgonControlsRepairFoldingTubes) {

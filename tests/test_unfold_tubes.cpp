@@ -39,6 +39,13 @@ HalfedgeMesh edited(HalfedgeMesh m, const std::string& op) {
   return m;
 }
 
+/// unfold_tubes over every face of `mesh` with two openings, on `surface` (built with `options`).
+std::vector<TubeUnfolding> search_tubes(const HalfedgeMesh& mesh, KgonOptions& options,
+                                        BezierSurface& surface,
+                                        const UnfoldTubesOptions& unfold = {}) {
+  return unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options), unfold);
+}
+
 /// The nets of `surface` equal those a fresh build with `options` makes, to the bit.
 void expect_built_with(const HalfedgeMesh& mesh, const BezierSurface& surface,
                        const KgonOptions& options) {
@@ -94,8 +101,7 @@ TEST(UnfoldTubes, FoldingTubesComeOutCleanAndOpen) {
     const HalfedgeMesh mesh = edited(t.solid, t.op);
     KgonOptions options;
     BezierSurface surface = build_bezier_surface(mesh, options);
-    const std::vector<TubeUnfolding> found =
-        unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options));
+    const std::vector<TubeUnfolding> found = search_tubes(mesh, options, surface);
     ASSERT_EQ(found.size(), 1u);
     const TubeUnfolding& u = found[0];
     EXPECT_EQ(u.face, Face(0));  // the insert-edge merges both caps into face 1
@@ -262,8 +268,7 @@ TEST(UnfoldTubes, ATubeNoSettingUnfoldsIsLeftFitted) {
   BezierSurface surface = build_bezier_surface(mesh, options);
   UnfoldTubesOptions grid_only;
   grid_only.descent_evaluations = 0;
-  const std::vector<TubeUnfolding> found =
-      unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options), grid_only);
+  const std::vector<TubeUnfolding> found = search_tubes(mesh, options, surface, grid_only);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_FALSE(found[0].unfolded());
   EXPECT_FALSE(found[0].descended);
@@ -283,8 +288,7 @@ TEST(UnfoldTubes, TheDescentCleansWhatNoSettingOfTheGridDoes) {
   const HalfedgeMesh mesh = edited(prism(4, 6), "insert-edge 1@1 6@2");
   KgonOptions options;
   BezierSurface surface = build_bezier_surface(mesh, options);
-  const std::vector<TubeUnfolding> found =
-      unfold_tubes(mesh, options, surface, faces_with_two_openings(mesh, options));
+  const std::vector<TubeUnfolding> found = search_tubes(mesh, options, surface);
   ASSERT_EQ(found.size(), 1u);
   const TubeUnfolding& tube = found[0];
   ASSERT_TRUE(tube.unfolded());
