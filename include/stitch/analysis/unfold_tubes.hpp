@@ -4,12 +4,14 @@
 // regular prisms and a few solids. Off those (uneven rims, long or tapered tubes, prism 16's half
 // twist) the surface over some of these faces folds, while a setting of the paper's own controls
 // on that face's K-gon (scale and rotation in its plane, and a stretch along the tube) and on its
-// bridge's edge K-gon (scale) makes it clean. unfold_tubes looks for such a setting where the
-// fitted placement folds (or is clean but pushes the hole off the tube's axis, as on the half
-// twists of prisms 16 to 24), judged by the local check (local_check.hpp) on the patches those
-// two K-gons reach, and records it as per-element controls: the surface stays the one the method
-// builds from its K-gons, C1 along every edge and G1 at the face's extraordinary point (the
-// K-gons stay planar), and a tube that is clean and open already is left exactly as it was.
+// bridge's edge K-gon (scale) makes it clean. unfold_tubes looks for such a setting, first on a
+// fixed grid and then by a descent from the fitted placement (which may also move the face K-gon
+// and stretch it across the tube), where the fitted placement folds (or is clean but pushes the
+// hole off the tube's axis, as on the half twists of prisms 16 to 24), judged by the local check
+// (local_check.hpp) on the patches those two K-gons reach, and records it as per-element controls:
+// the surface stays the one the method builds from its K-gons, C1 along every edge and G1 at the
+// face's extraordinary point (the K-gons stay planar), and a tube that is clean and open already is
+// left exactly as it was.
 #pragma once
 
 #include <string>
@@ -28,8 +30,9 @@ struct UnfoldTubesOptions {
   /// cc nothing is searched, since its surface does not come from the K-gons.
   Method method = Method::mdc;
   /// Settings the descent may score (docs/method.md, "The descent") where no setting of
-  /// tube_settings() is clean and open: 0 searches the grid alone. The tubes measured took 17 to
-  /// 85; a tube that none of them cleans costs this many local checks.
+  /// tube_settings() is clean and open: 0 searches the grid alone. Most tubes measured took 17
+  /// to 85, the half twist of prism 6 half as high about 110 (a quarter of this per start); a
+  /// tube that none of them cleans costs this many local checks.
   int descent_evaluations = 600;
 };
 
@@ -38,9 +41,11 @@ struct UnfoldTubesOptions {
 struct TubeUnfolding {
   Face face;
   Edge bridge;
-  LocalCheckReport fitted;     ///< the check with the fitted placement
-  LocalCheckReport chosen;     ///< the check with the chosen setting (the fitted one if none)
-  KgonControl face_control;    ///< the setting chosen: scale, rotation, stretch of the face K-gon
+  LocalCheckReport fitted;  ///< the check with the fitted placement
+  LocalCheckReport chosen;  ///< the check with the chosen setting (the fitted one if none)
+  /// The setting chosen: scale, rotation, stretch of the face K-gon (and from the descent the
+  /// stretch's direction across the tube and an offset).
+  KgonControl face_control;
   KgonControl bridge_control;  ///< and scale of the bridge's edge K-gon
   int settings_tried = 0;      ///< settings checked, the fitted one included
   /// Whether the setting was found by the descent, past the grid of tube_settings(): then the
@@ -69,8 +74,9 @@ const std::vector<TubeSetting>& tube_settings();
 /// centres, where it runs along both rims' normals) meets its wall, and on which the user set no
 /// control (neither on the face nor on its bridge): tries tube_settings() in order and keeps the
 /// first that the local check finds clean and that leaves the line through the rims' centres
-/// open (for a folding tube, the first clean one if none does and the fitted K-gons do not
-/// either), adding it to options.face and options.edge.
+/// open; if none does, the first setting of the descent that is (unfold.descent_evaluations);
+/// if that finds none, for a folding tube the grid's first clean one if the fitted K-gons close
+/// the line too. The setting kept is added to options.face and options.edge.
 /// `surface` is the Bézier surface built for `mesh` with `options`; it is left built with the
 /// options as they are on return (only the K-gons and nets of the faces searched are touched, so
 /// the cost follows the tubes, not the mesh). Returns one entry per folding face, unfolded or not,
