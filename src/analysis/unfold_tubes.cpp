@@ -180,8 +180,12 @@ std::string describe(const HalfedgeMesh& mesh, const TubeUnfolding& tube) {
       tube.descended ? fmt::format(" by the descent ({} settings tried)", tube.settings_tried) : "",
       face.scale, face.rotate_deg, shape, tube.bridge_control.scale,
       tube.axis_open ? ""
-                     : "; the line through the openings' centres meets the tube, as it does "
-                       "with the fitted K-gons");
+      : tube.descended
+          // The descent looks at the line only where it is the tube's axis.
+          ? "; the line through the openings' centres, more than 10 degrees off their normals "
+            "and so not taken for the tube's axis, meets the tube"
+          : "; the line through the openings' centres meets the tube, as it does with the "
+            "fitted K-gons");
 }
 
 std::vector<Face> faces_with_two_openings(const HalfedgeMesh& mesh, const KgonOptions& options) {
