@@ -9,6 +9,7 @@
 #include <span>
 
 #include "eval/patch_sampler.hpp"
+#include "kgon/openings.hpp"
 #include "mesh/sort_unique.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
@@ -69,15 +70,12 @@ struct TubeKgons {
   }
 };
 
-/// The centroid of a rim's vertices, each once (the bridge vertex begins and ends the rim's
-/// corners).
+/// The centroid of a rim's vertices, each once.
 Vec3 rim_centre(const HalfedgeMesh& mesh, const std::vector<Corner>& rim) {
-  std::vector<Vertex> vertices;
-  for (Corner c : rim) vertices.push_back(mesh.origin(c));
-  detail::sort_unique(vertices);
+  const std::vector<Vec3> points = detail::rim_points(mesh, rim);
   Vec3 sum = Vec3::Zero();
-  for (Vertex v : vertices) sum += mesh.position(v);
-  return sum / static_cast<double>(vertices.size());
+  for (const Vec3& p : points) sum += p;
+  return sum / static_cast<double>(points.size());
 }
 
 /// Whether the line between the rims' centres runs along both rims' normals (within 10 degrees):
@@ -86,9 +84,7 @@ Vec3 rim_centre(const HalfedgeMesh& mesh, const std::vector<Corner>& rim) {
 bool axis_through_rims(const HalfedgeMesh& mesh, const TwoOpenings& openings, const Vec3& along) {
   const double cos_limit = std::cos(10 * std::numbers::pi / 180);
   for (const auto* rim : {&openings.first, &openings.second}) {
-    std::vector<Vec3> loop;
-    for (Corner c : *rim) loop.push_back(mesh.position(mesh.origin(c)));
-    const Vec3 n = newell_normal(loop);
+    const Vec3 n = newell_normal(detail::rim_points(mesh, *rim));
     if (!(std::abs(n.dot(along)) >= cos_limit * n.norm() * along.norm())) return false;
   }
   return true;

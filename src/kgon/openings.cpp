@@ -198,13 +198,6 @@ struct Tube {
   [[nodiscard]] Vec3 normal(double angle) const { return hole ? -radial(angle) : radial(angle); }
 };
 
-/// An opening's rim: its vertices' positions, the bridge vertex once.
-std::vector<Vec3> rim_points(const HalfedgeMesh& m, const std::vector<Corner>& corners) {
-  std::vector<Vec3> pts;
-  for (size_t i = 0; i + 1 < corners.size(); ++i) pts.push_back(m.position(m.origin(corners[i])));
-  return pts;
-}
-
 /// The openings (rim normals normal_a, normal_b; `across` from the first to the second) face
 /// away from each other around a hole through the solid (the surface's outside is the tube's
 /// inside): true; towards each other across a handle joining two solids: false; else nothing.
@@ -876,6 +869,12 @@ void slide_acute_sides(const HalfedgeMesh& m, const TwoOpenings& openings,
       corner_point[(*corners)[forward ? j : n - j].idx] = at(forward ? u : rim_size - u);
     }
   }
+}
+
+std::vector<Vec3> rim_points(const HalfedgeMesh& m, const std::vector<Corner>& corners) {
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i + 1 < corners.size(); ++i) pts.push_back(m.position(m.origin(corners[i])));
+  return pts;
 }
 
 }  // namespace stitch::detail

@@ -30,6 +30,10 @@ namespace stitch::detail {
 /// is the edge whose two rims are planar, and the rims share the other edge's two vertices.
 std::optional<TwoOpenings> find_two_openings(const HalfedgeMesh& mesh, Face f);
 
+/// An opening's rim: its vertices' positions, the bridge vertex once (it begins and ends the
+/// rim's corners).
+std::vector<Vec3> rim_points(const HalfedgeMesh& mesh, const std::vector<Corner>& corners);
+
 /// Doo-Sabin corner points of each opening over that opening's own rim, the bridge vertex's
 /// point split in two along the rim for its two corners (stored by corner).
 void set_opening_corner_points(const HalfedgeMesh& mesh, const TwoOpenings& openings,
