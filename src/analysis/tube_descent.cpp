@@ -86,14 +86,13 @@ std::optional<TubeControls> tube_descent(const TubeFrame& frame, const KgonContr
     const TubeFrame& frame;
     const KgonControl& base;
     const TubeScorer& score;
-    int max_evaluations;
     int& evaluations;
     std::optional<TubeControls> found;
     nlopt::opt* opt = nullptr;
     // NLopt turns an exception thrown by the objective into its own "nlopt failure": kept here
     // and thrown again after, with its message.
     std::exception_ptr error;
-  } state{frame, base, score, max_evaluations, evaluations, std::nullopt, nullptr, nullptr};
+  } state{frame, base, score, evaluations, std::nullopt, nullptr, nullptr};
   for (const Point& start : starts) {
     if (state.found || evaluations >= max_evaluations) break;
     nlopt::opt opt(nlopt::LN_NELDERMEAD, dimensions);

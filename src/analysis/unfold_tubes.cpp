@@ -317,25 +317,28 @@ std::vector<TubeUnfolding> unfold_tubes(const HalfedgeMesh& mesh, KgonOptions& o
                                                 : Vec3(frame.along.unitOrthogonal());
       frame.radius = rim_radius(mesh, openings->first, centre_a);
       int evaluations = 0;
+      // The descent stops right after scoring the setting it returns: this is that one's check.
+      Checked last;
       descended = detail::tube_descent(
           frame, options.global,
           [&](const detail::TubeControls& controls) {
             tube.set(options, controls);
             rebuild();
-            Checked setting = check_setting(unfold.check);
-            return detail::TubeScore{std::move(setting.report), detail::sharp_turns(setting.grids),
-                                     axis_counts ? axis_hits(setting.grids, axis_a, axis_b) : 0};
+            last = check_setting(unfold.check);
+            return detail::TubeScore{last.report, detail::sharp_turns(last.grids),
+                                     axis_counts ? axis_hits(last.grids, axis_a, axis_b) : 0};
           },
           unfold.descent_evaluations, evaluations);
       result.settings_tried += evaluations;
+      if (descended) {
+        result.chosen = std::move(last.report);
+        result.axis_open = open(last.grids);
+        result.descended = true;
+      }
     }
     if (descended) {
       tube.set(options, *descended);
       rebuild();
-      Checked setting = check_setting(unfold.check);
-      result.chosen = std::move(setting.report);
-      result.axis_open = open(setting.grids);
-      result.descended = true;
     } else if (chosen) {
       tube.set(options, *chosen);
       rebuild();
