@@ -17,54 +17,6 @@ namespace stitch::modeler::app {
 
 namespace {
 
-/// The rest of the line after its first word, without a comment (paths may contain blanks).
-std::string argument_of(std::string_view line) {
-  std::string rest{line.substr(0, line.find('#'))};
-  const size_t word_end = rest.find_first_of(" \t", rest.find_first_not_of(" \t"));
-  if (word_end == std::string::npos) return "";
-  rest.erase(0, word_end);
-  rest.erase(0, rest.find_first_not_of(" \t"));
-  rest.erase(rest.find_last_not_of(" \t\r") + 1);
-  return rest;
-}
-
-/// The application's own lines, about the window rather than the session: `ui on|off`,
-/// `dialog ...`, `layout PATH`. Returns false for any other line.
-bool run_window_line(App& app, std::string_view line) {
-  std::istringstream in{std::string(line)};
-  std::string word;
-  if (!(in >> word)) return false;
-  if (word == "ui") {
-    const std::string value = argument_of(line);
-    if (value != "on" && value != "off") throw UsageError("usage: ui on|off");
-    app.layout.show_ui = value == "on";
-    return true;
-  }
-  if (word == "dialog") {
-    // The file dialogs, for pictures and layout checks: `dialog open|append|save|export
-    // [FOLDER]`, `dialog close`.
-    std::string action, folder;
-    in >> action;
-    const std::string rest = argument_of(argument_of(line));
-    if (action == "close") {
-      close_file_dialog(app);
-      return true;
-    }
-    if (action.empty()) throw UsageError("usage: dialog open|append|save|export [FOLDER] | close");
-    request_file_dialog(app, parse_file_action(action), rest);
-    return true;
-  }
-  if (word == "layout") {
-    const std::string path = argument_of(line);
-    if (path.empty()) throw UsageError("usage: layout PATH (the screen layout as JSON)");
-    // Two frames: ImGui sizes new windows in the first.
-    for (int i = 0; i < 2; ++i) render_frame(app, false);
-    write_layout_report(app, path);
-    return true;
-  }
-  return false;
-}
-
 std::vector<std::string> read_lines(const std::string& path) {
   std::istringstream in(read_regular_file(path));
   std::vector<std::string> lines;
@@ -74,9 +26,51 @@ std::vector<std::string> read_lines(const std::string& path) {
 
 }  // namespace
 
+std::vector<ScriptCommand> window_commands(App& app) {
+  // The rows hold the window they act on, so they are made per App rather than kept in a table.
+  auto ui = [&app](Session&, const ScriptLine& line, const ScriptHooks&) {
+    const std::string value = line.rest();
+    if (value != "on" && value != "off") throw UsageError("usage: ui on|off");
+    app.layout.show_ui = value == "on";
+    return ScriptResult{};
+  };
+  auto dialog = [&app](Session&, const ScriptLine& line, const ScriptHooks&) {
+    const std::string action = line.words.size() > 1 ? line.words[1] : "";
+    if (action == "close") {
+      close_file_dialog(app);
+      return ScriptResult{};
+    }
+    if (action.empty()) throw UsageError("usage: dialog open|append|save|export [FOLDER] | close");
+    const std::string action_and_folder = line.rest();
+    const std::string folder = ScriptLine{action_and_folder, {}}.rest();
+    request_file_dialog(app, parse_file_action(action), folder);
+    return ScriptResult{};
+  };
+  auto layout = [&app](Session&, const ScriptLine& line, const ScriptHooks&) {
+    const std::string path = line.rest();
+    if (path.empty()) throw UsageError("usage: layout PATH (the screen layout as JSON)");
+    // Two frames: ImGui sizes new windows in the first.
+    for (int i = 0; i < 2; ++i) render_frame(app, false);
+    write_layout_report(app, path);
+    return ScriptResult{};
+  };
+  return {
+      {"ui", "ui on|off", "shows or hides the panels (for pictures)", ui},
+      {"dialog", "dialog open|append|save|export [FOLDER] | close",
+       "opens the file dialog of an action on FOLDER (for pictures and layout checks), or closes "
+       "it",
+       dialog},
+      {"layout", "layout PATH", "writes the screen layout as JSON (apps/modeler/layout_report.hpp)",
+       layout},
+  };
+}
+
 ScriptResult run_app_line(App& app, std::string_view line) {
-  if (run_window_line(app, line)) return {};
   Session& s = app.session;
+  // The window's own lines change nothing in the session: nothing to upload after them.
+  if (const ScriptLine read = read_script_line(line);
+      !read.words.empty() && find_script_command(app.hooks.commands, read.words[0]))
+    return run_script_line(s, line, app.hooks);
   const DisplaySettings before = s.display;
   const std::string path_before = s.path;
   const bool was_modified = s.document.modified();

@@ -72,6 +72,7 @@ int run(GLFWwindow* window, const Options& o) {
   app.autosave.enabled = !o.no_autosave && o.script.empty();
   app.hooks.print = [](const std::string& text) { std::cout << text << "\n"; };
   app.hooks.screenshot = [&app](const std::string& path) { screenshot(app, path); };
+  app.hooks.commands = window_commands(app);
   app.views.main.renderer = std::make_unique<Renderer>();
   // Two frames lay the panels out (ImGui sizes new windows in the first), so that the document
   // is framed in the area they leave.

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "docs_text.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/modeler/project.hpp"
@@ -121,6 +122,32 @@ TEST(ModelerXvfb, ScriptErrorsGiveTheLineAndStatus2) {
   const std::string log = dir.file("log.txt");
   EXPECT_EQ(run_modeler("--script " + script, log), 2);
   EXPECT_NE(read_text(log).find("bad.txt:2:"), std::string::npos) << read_text(log);
+}
+
+TEST(ModelerXvfb, HelpListsTheWindowsLinesWhichTheModelerPageDescribes) {
+  if (!have_xvfb_run())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb); skipping the GUI test";
+  stitch::testing::TempFolder dir;
+  const std::string script = dir.write("help.txt", "help\nhelp layout\nquit\n");
+  const std::string log = dir.file("log.txt");
+  ASSERT_EQ(run_modeler("--script " + script, log), 0) << read_text(log);
+  // The rows after "application:", each "  SYNOPSIS  help" (a long synopsis puts the help on
+  // an indented line of its own).
+  std::istringstream printed(read_text(log));
+  std::vector<std::string> names;
+  bool in_application = false;
+  for (std::string line; std::getline(printed, line);) {
+    if (line == "application:") in_application = true;
+    if (line.empty() || line[0] != ' ') continue;
+    if (in_application && line.size() > 2 && line[2] != ' ')
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"ui", "dialog", "layout"})) << read_text(log);
+  EXPECT_NE(read_text(log).find("layout PATH: writes the screen layout"), std::string::npos)
+      << read_text(log);
+  const std::string docs = read_docs("modeler.md");
+  for (const std::string& name : names)
+    EXPECT_TRUE(names_in_code(docs, name)) << "docs/modeler.md does not name `" << name << "`";
 }
 
 TEST(ModelerXvfb, ScreenshotExitAndRecover) {

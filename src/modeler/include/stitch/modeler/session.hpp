@@ -1,47 +1,17 @@
 // A modeler session without a window: the document, its file, the view, the display settings,
 // the selection and the live surface; and the script language that drives it (`--script`), which
-// the GUI's buttons also use, so both do exactly the same thing.
-//
-// Script lines (one per line, `#` starts a comment):
-//   any `stitch edit --ops` line (insert-edge 1@1 5@2, delete-edge 1 5, extrude-face 3 0.5, ...)
-//   primitive NAME [PARAMS]          new document from a primitive (undoable)
-//   move-vertex V X Y Z              set vertex V's position;  translate-vertex V DX DY DZ
-//   select vertex V | edge V W[@F] | face F | corner V@F[#k] | none
-//   kgon [global] scale S | rotate DEG | offset X Y Z | stretch S [X Y Z] | stretch_along X Y Z
-//     | regularize on|off | reset
-//                                    the selected face/vertex/edge (a corner: its face), or the
-//                                    global control with `global` or when nothing is selected
-//   undo | redo
-//   method mdc|asc|cc     resolution N     mode shaded|zebra|isophote|levels|patches|input
-//   overlay mesh|kgons|nets|tess|markers on|off      split off|mdc|asc|cc
-//   view front|back|left|right|top|bottom|iso        frame all|selection
-//   orbit DYAW DPITCH (degrees)      zoom STEPS
-//   screenshot PATH    save [PATH]    open PATH    info    quit
-//   check                            the whole surface for folds and self-intersections (an
-//                                    edit checks the patches it changed: surface_problems)
-//   unfold-tubes on|off              whether an edit that makes a tube (a face with two
-//                                    openings, e.g. insert-edge between two faces) whose surface
-//                                    folds chooses K-gon controls for it (unfold_tubes.hpp), in
-//                                    the same undo step; on by default
-//   append PATH [--offset X,Y,Z]     adds a mesh or project as one more component (one undo
-//                                    step), moved by the offset
-//   export PATH                      the smooth surface as shown (method, resolution, K-gon
-//                                    controls): .obj .ply .off .stl .glb .gltf, or .json for the
-//                                    Bézier patches
-// (paths run to the end of the line, so they may contain blanks). The application adds the
-// lines about its window rather than the session (`ui on|off`, `dialog ...`, `layout PATH`,
-// apps/modeler/commands.cpp), through ScriptHooks::run_line.
+// the GUI's buttons also use, so both do exactly the same thing. The script lines are the rows of
+// script_command_table() and the operation table (script_commands.hpp); `help` lists them.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "stitch/modeler/document.hpp"
 #include "stitch/modeler/navigation.hpp"
 #include "stitch/modeler/project.hpp"
+#include "stitch/modeler/script_commands.hpp"
 #include "stitch/modeler/surface_health.hpp"
 #include "stitch/tess/incremental_surface.hpp"
 
@@ -132,35 +102,10 @@ void save_file(Session& session, const std::string& path);
 /// Adds the mesh or project at `path` to the document as one more component moved by `offset`
 /// (Document::append), one undo step. Returns what was added. Throws stitch::Error.
 std::string append_file(Session& session, const std::string& path, const Vec3& offset);
-
-/// What a script line needs from the application.
-struct ScriptResult {
-  bool quit = false;
-  std::string message;  ///< what happened, for the status bar / log
-};
-
-struct ScriptHooks {
-  std::function<void(const std::string& path)> screenshot;  ///< renders the view to a PNG
-  std::function<void(const std::string& text)> print;       ///< `info` and operation reports
-  /// When set, run_script runs each line through this instead of run_script_line: the
-  /// application adds its own lines (`ui off`) and uploads what a line changed. It throws on a
-  /// bad line, as run_script_line does.
-  std::function<ScriptResult(std::string_view line)> run_line;
-};
-
-/// Runs one line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the
-/// session is unchanged by a refused line.
-ScriptResult run_script_line(Session& session, std::string_view line, const ScriptHooks& hooks);
-
-/// A script error with its 1-based line number.
-struct ScriptError {
-  int line = 0;
-  std::string message;
-};
-/// Runs lines (through hooks.run_line when set) until the end or `quit`; stops at the first
-/// error and returns it. `quit` tells whether the script asked to quit.
-std::optional<ScriptError> run_script(Session& session, const std::vector<std::string>& lines,
-                                      const ScriptHooks& hooks, bool* quit = nullptr);
+/// Writes the smooth surface as the session shows it (method, resolution, K-gon controls): a
+/// tessellated mesh by extension, or the Bézier patches as JSON (docs/formats.md). Returns what
+/// was written. Throws stitch::Error.
+std::string export_surface(const Session& session, const std::string& path);
 
 /// The selected K-gon, if the selection has one (a corner selects its face's).
 std::optional<KgonTarget> kgon_target(const Session& session);
