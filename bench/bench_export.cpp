@@ -53,7 +53,7 @@ void BM_Export(benchmark::State& state) {
 #if STITCH_WITH_CAD
     if (format == step || format == iges) {
       cad::quiet_opencascade();
-      cad::write_cad(path, set);
+      cad::write_cad(path, mesh, surface, set);
     }
 #endif
   }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -68,21 +69,29 @@ TEST(BezierPatches, RegularPatchesAreTheNetsAndTheHierarchyIsWithinTolerance) {
     const HalfedgeMesh mesh = read_mesh(test::example_path(name));
     const Surface surface(mesh, Method::mdc);
     const PatchSet set = bezier_patches(mesh, surface);
-    // A root with k extraordinary corners: itself when depth is 0; else its 4 - k regular
-    // children and, per extraordinary child, 3 regular cells per level below it and the
-    // innermost one: 4 + 3 k (depth - 1) patches.
-    size_t expected = 0;
+    // Each root's cells tile its square (their areas 4^-level add up to 1, computed exactly in
+    // binary); a root with k extraordinary corners that was split has one innermost cell per
+    // extraordinary corner, the rest exact.
+    std::map<int, double> area;
+    std::map<int, int> inexact, cells;
+    for (const BezierPatch& p : set.patches) {
+      area[p.corner.idx] += std::ldexp(1.0, -2 * p.level);
+      inexact[p.corner.idx] += p.exact ? 0 : 1;
+      ++cells[p.corner.idx];
+    }
     int extraordinary_corners = 0;
     for (Corner c : surface.corners()) {
       const int k = std::popcount(unsigned(surface.bezier().nets[c.idx].extraordinary));
       extraordinary_corners += k;
-      expected += (k == 0 || set.depth == 0) ? 1 : 4 + 3 * k * (set.depth - 1);
+      EXPECT_EQ(area[c.idx], 1.0);
+      if (k == 0) {
+        EXPECT_EQ(cells[c.idx], 1);
+        EXPECT_EQ(inexact[c.idx], 0);
+      } else if (cells[c.idx] > 1) {
+        EXPECT_EQ(inexact[c.idx], k);
+      }
     }
     EXPECT_EQ(set.depth > 0, extraordinary_corners > 0);
-    EXPECT_EQ(set.patches.size(), expected);
-    if (set.depth > 0) {
-      EXPECT_EQ(set.patches.size() - set.num_exact(), size_t(extraordinary_corners));
-    }
     for (const BezierPatch& p : set.patches) {
       if (p.level != 0) continue;
       EXPECT_EQ(p.net.p, surface.bezier().nets[p.corner.idx].p);  // a regular root, as it is
@@ -105,6 +114,34 @@ TEST(BezierPatches, TighterToleranceGoesDeeperAndAscNeedsNoSplits) {
   EXPECT_EQ(plain.depth, 0);
   EXPECT_EQ(plain.patches.size(), mdc.corners().size());
   EXPECT_EQ(plain.num_exact(), static_cast<int>(plain.patches.size()));
+}
+
+TEST(BezierPatches, PointsWithoutANormalAreNamedAndLeftOutOfTheAngleTolerance) {
+  // catmark_inf_crease0: an infinitely sharp crease ends in a cone at vertex 19, where the
+  // surface has no tangent plane; no depth brings the innermost cell's normal there to the
+  // surface's. The patch set still meets both tolerances everywhere else and names the point.
+  const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_inf_crease0.obj"));
+  const Surface surface(mesh, Method::mdc);
+  const PatchSet set = bezier_patches(mesh, surface);
+  ASSERT_EQ(set.points_without_normal.size(), 1u);
+  const PointWithoutNormal& point = set.points_without_normal.front();
+  EXPECT_EQ(describe(mesh, point), "vertex 19");
+  EXPECT_NE(vertex_kind(mesh, Vertex(point.index), KgonOptions{}), VertexKind::smooth);
+  EXPECT_GT(point.angle_deg, set.angle_tolerance_deg);
+  EXPECT_LE(set.max_position_deviation, set.tolerance * set.model_size);
+  EXPECT_LE(set.max_normal_deviation_deg, set.angle_tolerance_deg);
+  // Positions hold everywhere: every patch against exact evaluation at random points.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const BezierPatch& patch : set.patches)
+    for (int k = 0; k < 4; ++k) {
+      const double s = unit(random), t = unit(random);
+      const auto [u, v] = cell_to_root(patch, s, t);
+      EXPECT_LE(
+          (evaluate_cell(patch, s, t).position - surface.evaluate(patch.corner, u, v).position)
+              .norm(),
+          set.tolerance * set.model_size);
+    }
 }
 
 TEST(BezierPatches, RefusesCatmullClarkAndToleranceNotAboveZero) {

@@ -20,7 +20,7 @@ bool is_cad(const std::string& ext) {
   return ext == ".step" || ext == ".stp" || ext == ".igs" || ext == ".iges";
 }
 
-void report(const PatchSet& set) {
+void report(const HalfedgeMesh& mesh, const PatchSet& set) {
   fmt::print(stderr,
              "stitch: {} Bezier patches ({} exact, {} innermost cells at extraordinary points), "
              "depth {}\n",
@@ -31,6 +31,20 @@ void report(const PatchSet& set) {
              set.max_position_deviation,
              set.model_size > 0 ? set.max_position_deviation / set.model_size : 0.0, set.model_size,
              set.tolerance, set.max_normal_deviation_deg, set.angle_tolerance_deg);
+  if (!set.points_without_normal.empty()) {
+    std::string where;
+    for (size_t i = 0; i < set.points_without_normal.size() && i < 8; ++i)
+      where += fmt::format("{}{} ({:.3g} degrees)", i ? ", " : "",
+                           describe(mesh, set.points_without_normal[i]),
+                           set.points_without_normal[i].angle_deg);
+    if (set.points_without_normal.size() > 8)
+      where += fmt::format(", ... ({} more)", set.points_without_normal.size() - 8);
+    fmt::print(stderr,
+               "stitch: note: the angle tolerance is not applied at {} point(s) where the surface "
+               "has no tangent plane (cone points of creases and corners, valence-2 vertices, "
+               "folds): {}\n",
+               set.points_without_normal.size(), where);
+  }
 }
 
 }  // namespace
@@ -84,7 +98,7 @@ std::string write_exact_outputs(const std::string& out, const HalfedgeMesh& mesh
   const PatchSet set =
       bezier_patches(mesh, surface, {options.tolerance, options.angle_tolerance_deg});
   stage.end();
-  report(set);
+  report(mesh, set);
   const KgonSet* kgons = options.kgons ? &surface.bezier().kgons : nullptr;
   if (!options.patches.empty()) {
     stage.begin("writing " + options.patches);
@@ -102,9 +116,20 @@ std::string write_exact_outputs(const std::string& out, const HalfedgeMesh& mesh
     cad::quiet_opencascade();  // stdout is for the summary below
     cad::CadOptions cad_options;
     cad_options.units = options.units;
-    const cad::CadReport r = cad::write_cad(out, set, cad_options);
-    summary = fmt::format("{} B-spline faces, {} shell(s), {} solid(s), {} free edges, units {}",
-                          r.faces, r.shells, r.solids, r.free_edges, options.units);
+    cad_options.angle_tolerance_deg = options.angle_tolerance_deg;
+    cad_options.progress = [&stage](double done) { stage.fraction(done); };
+    const cad::CadEstimate e =
+        cad::estimate_cad(mesh, surface, set, cad_options.packing, *cad::cad_format(out));
+    fmt::print(stderr, "stitch: {} B-spline faces, about {} poles and {:.1f} MB\n", e.faces,
+               e.poles, e.bytes / 1e6);
+    const cad::CadReport r = cad::write_cad(out, mesh, surface, set, cad_options);
+    summary = fmt::format(
+        "{} B-spline faces, {} poles, knots {} removed/{} C2/{} C1/{} C0, {} shell(s), {} "
+        "solid(s), volume {:.6g}, {} free edges, {} smooth edges ({} G1, largest angle {:.3g} "
+        "degrees), {} sharp edges, units {}",
+        r.faces, r.poles, r.knots[0], r.knots[1], r.knots[2], r.knots[3], r.shells, r.solids,
+        r.volume, r.free_edges, r.smooth_edges, r.g1_edges, r.max_smooth_angle_deg, r.sharp_edges,
+        options.units);
 #endif
   }
   stage.end();

@@ -3,46 +3,71 @@
 #include "stitch/cad/cad.hpp"
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/error.hpp"
 // clang-format on
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLProp_SLProps.hxx>
 #include <BRepLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <IGESBasic_Name.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESControl_Writer.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <IGESSolid_Face.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_AdvancedFace.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <TransferBRep.hxx>
+#include <TransferBRep_ShapeMapper.hxx>
+#include <Transfer_FinderProcess.hxx>
+#include <XSControl_TransferWriter.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 namespace stitch::cad {
@@ -66,28 +91,234 @@ const Unit& find_unit(const std::string& name) {
   throw UsageError(fmt::format("unknown unit '{}' (known: {})", name, kCadUnits));
 }
 
-/// The patch as a B-spline surface of degree 3 x 3 with the knots 0,0,0,0,1,1,1,1: a Bézier
-/// patch, with u along the first pole index like P[a][b].
-TopoDS_Face make_face(const BezierPatch& patch, double tolerance) {
-  TColgp_Array2OfPnt poles(1, 4, 1, 4);
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      const Vec3& p = patch.net.at(a, b);
-      poles.SetValue(a + 1, b + 1, gp_Pnt(p.x(), p.y(), p.z()));
+/// Forwards OCCT's progress to a callback, mapped into [from, to] of the whole export.
+class ForwardProgress : public Message_ProgressIndicator {
+ public:
+  ForwardProgress(const std::function<void(double)>& callback, double from, double to)
+      : callback_(callback), from_(from), to_(to) {}
+  void Show(const Message_ProgressScope&, const Standard_Boolean) override {
+    // OCCT calls Show under its own lock, so the callback sees one thread at a time.
+    if (callback_) callback_(from_ + (to_ - from_) * GetPosition());
+  }
+
+ private:
+  const std::function<void(double)>& callback_;
+  double from_, to_;
+};
+
+/// The face as an OCCT B-spline surface, its interior knots lowered to the smallest
+/// multiplicity that keeps the surface within `tolerance` (counted in `knots`).
+Handle(Geom_BSplineSurface)
+    make_surface(const BsplineFace& face, double tolerance, std::array<std::int64_t, 4>& knots) {
+  const int nu = face.num_u_poles(), nv = face.num_v_poles();
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const Vec3& p = face.pole(i, j);
+      poles.SetValue(i + 1, j + 1, gp_Pnt(p.x(), p.y(), p.z()));
     }
-  TColStd_Array1OfReal knots(1, 2);
-  knots.SetValue(1, 0.0);
-  knots.SetValue(2, 1.0);
-  TColStd_Array1OfInteger multiplicities(1, 2);
-  multiplicities.Init(4);
+  const auto knot_arrays = [](const std::vector<double>& values, TColStd_Array1OfReal& k,
+                              TColStd_Array1OfInteger& m) {
+    const int n = static_cast<int>(values.size());
+    k.Resize(1, n, false);
+    m.Resize(1, n, false);
+    for (int i = 0; i < n; ++i) {
+      k.SetValue(i + 1, values[i]);
+      m.SetValue(i + 1, i == 0 || i == n - 1 ? 4 : 3);
+    }
+  };
+  TColStd_Array1OfReal u_knots(1, 2), v_knots(1, 2);
+  TColStd_Array1OfInteger u_mults(1, 2), v_mults(1, 2);
+  knot_arrays(face.u_knots, u_knots, u_mults);
+  knot_arrays(face.v_knots, v_knots, v_mults);
   // OCCT geometry lives in reference-counted handles, which take ownership of a new object.
-  const Handle(Geom_BSplineSurface) surface =
-      new Geom_BSplineSurface(poles, knots, knots, multiplicities, multiplicities, 3, 3);
-  BRepBuilderAPI_MakeFace face(surface, tolerance);
-  if (!face.IsDone())
-    throw Error(fmt::format("OpenCASCADE refused the patch of corner {}@{} (level {})",
-                            patch.vertex + 1, patch.face + 1, patch.level));
-  return face.Face();
+  Handle(Geom_BSplineSurface) surface =
+      new Geom_BSplineSurface(poles, u_knots, v_knots, u_mults, v_mults, 3, 3);
+  // From the last interior knot to the first, so that removing one keeps the others' indices.
+  for (int i = surface->NbUKnots() - 1; i >= 2; --i) {
+    int m = 3;
+    while (m > 0 && surface->RemoveUKnot(i, m - 1, tolerance)) --m;
+    ++knots[m];
+  }
+  for (int i = surface->NbVKnots() - 1; i >= 2; --i) {
+    int m = 3;
+    while (m > 0 && surface->RemoveVKnot(i, m - 1, tolerance)) --m;
+    ++knots[m];
+  }
+  return surface;
+}
+
+/// The side (t = 0, s = 1, t = 1, s = 0) an edge of a face made from a whole surface runs
+/// along, from its parameter curve's middle.
+int side_of(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+  double first = 0, last = 0;
+  const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  if (curve.IsNull()) return -1;
+  const gp_Pnt2d p = curve->Value((first + last) / 2);
+  constexpr double kEps = 1e-9;
+  if (p.Y() < kEps) return 0;
+  if (p.X() > 1 - kEps) return 1;
+  if (p.Y() > 1 - kEps) return 2;
+  if (p.X() < kEps) return 3;
+  return -1;
+}
+
+/// The outward normal of a face at a point of an edge's parameter curve on it.
+std::optional<gp_Dir> normal_on(const TopoDS_Edge& edge, const TopoDS_Face& face, double at) {
+  double first = 0, last = 0;
+  const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  if (curve.IsNull()) return std::nullopt;
+  const gp_Pnt2d uv = curve->Value(first + at * (last - first));
+  BRepAdaptor_Surface adaptor(face, false);
+  BRepLProp_SLProps props(adaptor, uv.X(), uv.Y(), 1, Precision::Confusion());
+  if (!props.IsNormalDefined()) return std::nullopt;
+  gp_Dir n = props.Normal();
+  if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
+  return n;
+}
+
+/// The largest angle between the normals of the two faces along a shared edge, in degrees,
+/// sampled inside the edge (its ends may be points without a normal).
+double largest_angle_deg(const TopoDS_Edge& edge, const TopoDS_Face& a, const TopoDS_Face& b) {
+  constexpr int kSamples = 9;
+  double worst = 0;
+  for (int k = 0; k < kSamples; ++k) {
+    const double at = (k + 0.5) / kSamples;
+    const auto na = normal_on(edge, a, at), nb = normal_on(edge, b, at);
+    if (na && nb) worst = std::max(worst, na->Angle(*nb) * 180.0 / std::numbers::pi);
+  }
+  return worst;
+}
+
+/// The shape and the name of each of its faces.
+struct NamedShape {
+  TopoDS_Shape shape;
+  std::vector<std::pair<TopoDS_Face, std::string>> names;
+};
+
+NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
+                       const CadOptions& options, CadReport& r) {
+  const auto progress = [&](double from, double to, double done) {
+    if (options.progress) options.progress(from + (to - from) * done);
+  };
+  r.sewing_tolerance = options.sewing_tolerance > 0
+                           ? options.sewing_tolerance
+                           : std::max({2 * patches.max_position_deviation,
+                                       1e-7 * patches.model_size, Precision::Confusion()});
+  const std::vector<BsplineFace> faces = bspline_faces(
+      mesh, surface, patches, options.packing, [&](double done) { progress(0.0, 0.3, done); });
+  r.faces = static_cast<int>(faces.size());
+
+  // The OCCT surfaces, their knots lowered (each face on its own, so in parallel), then the
+  // faces and the edges that run along sharp mesh edges.
+  const double knot_tolerance = kKnotRemovalTolerance * patches.model_size;
+  std::vector<Handle(Geom_BSplineSurface)> surfaces(faces.size());
+  std::vector<std::array<std::int64_t, 4>> knots(faces.size());
+  tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
+    knots[i] = {};
+    surfaces[i] = make_surface(faces[i], knot_tolerance, knots[i]);
+  });
+  std::vector<TopoDS_Face> occt_faces(faces.size());
+  TopTools_MapOfShape sharp_edges;  // edges of occt_faces
+  for (size_t i = 0; i < faces.size(); ++i) {
+    for (int m = 0; m < 4; ++m) r.knots[m] += knots[i][m];
+    r.poles += static_cast<std::int64_t>(surfaces[i]->NbUPoles()) * surfaces[i]->NbVPoles();
+    BRepBuilderAPI_MakeFace make(surfaces[i], Precision::Confusion());
+    if (!make.IsDone())
+      throw Error(
+          fmt::format("OpenCASCADE refused the B-spline face of {}", face_name(mesh, faces[i])));
+    occt_faces[i] = make.Face();
+    for (TopExp_Explorer e(occt_faces[i], TopAbs_EDGE); e.More(); e.Next()) {
+      const int side = side_of(TopoDS::Edge(e.Current()), occt_faces[i]);
+      if (side >= 0 && faces[i].sharp_side[side]) sharp_edges.Add(e.Current());
+    }
+    if (i % 64 == 0) progress(0.3, 0.5, double(i) / faces.size());
+  }
+  BRepBuilderAPI_Sewing sewing(r.sewing_tolerance, true, true, true, false);
+  for (const TopoDS_Face& face : occt_faces) sewing.Add(face);
+  {
+    Handle(ForwardProgress) indicator = new ForwardProgress(options.progress, 0.5, 0.8);
+    sewing.Perform(indicator->Start());
+  }
+  r.free_edges = sewing.NbFreeEdges();
+  const TopoDS_Shape sewn = sewing.SewedShape();
+  TopTools_MapOfShape sewn_sharp;
+  for (TopTools_MapOfShape::Iterator it(sharp_edges); it.More(); it.Next()) {
+    const TopoDS_Shape& original = it.Value();
+    const TopoDS_Shape now =
+        sewing.IsModifiedSubShape(original) ? sewing.ModifiedSubShape(original) : original;
+    for (TopExp_Explorer e(now, TopAbs_EDGE); e.More(); e.Next()) sewn_sharp.Add(e.Current());
+  }
+
+  // Regularity: OCCT marks the edges where the faces meet tangentially; the report measures
+  // the angle along every shared edge that is not on a sharp mesh edge.
+  BRepLib::EncodeRegularity(sewn, options.angle_tolerance_deg * std::numbers::pi / 180.0);
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(sewn, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  for (int i = 1; i <= edge_faces.Extent(); ++i) {
+    const TopTools_ListOfShape& around = edge_faces.FindFromIndex(i);
+    if (around.Extent() != 2) continue;
+    const TopoDS_Edge& edge = TopoDS::Edge(edge_faces.FindKey(i));
+    if (sewn_sharp.Contains(edge)) {
+      ++r.sharp_edges;
+      continue;
+    }
+    const TopoDS_Face& a = TopoDS::Face(around.First());
+    const TopoDS_Face& b = TopoDS::Face(around.Last());
+    ++r.smooth_edges;
+    r.max_smooth_angle_deg = std::max(r.max_smooth_angle_deg, largest_angle_deg(edge, a, b));
+    if (BRep_Tool::Continuity(edge, a, b) >= GeomAbs_G1) ++r.g1_edges;
+  }
+
+  // Every closed shell becomes a solid, oriented so that its faces point out of it.
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  std::vector<TopoDS_Shape> parts;
+  for (TopExp_Explorer it(sewn, TopAbs_SHELL); it.More(); it.Next()) {
+    const TopoDS_Shell& shell = TopoDS::Shell(it.Current());
+    ++r.shells;
+    if (BRep_Tool::IsClosed(shell)) {
+      TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(shell).Solid();
+      BRepLib::OrientClosedSolid(solid);
+      parts.push_back(solid);
+      ++r.solids;
+    } else {
+      parts.push_back(shell);
+    }
+  }
+  for (TopExp_Explorer it(sewn, TopAbs_FACE, TopAbs_SHELL); it.More(); it.Next())
+    parts.push_back(it.Current());  // faces sewing left on their own
+  // The faces are the patches' polynomials, so the solids' volume is theirs, integrated exactly
+  // (OCCT's numerical integration over many knot spans takes seconds).
+  if (r.solids > 0 && static_cast<int>(parts.size()) == r.solids)
+    r.volume = enclosed_volume(patches);
+  NamedShape named;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const TopoDS_Shape now = sewing.IsModified(occt_faces[i]) ? sewing.Modified(occt_faces[i])
+                                                              : TopoDS_Shape(occt_faces[i]);
+    for (TopExp_Explorer f(now, TopAbs_FACE); f.More(); f.Next())
+      named.names.emplace_back(TopoDS::Face(f.Current()), face_name(mesh, faces[i]));
+  }
+  if (parts.size() == 1) {
+    named.shape = parts.front();
+  } else {
+    for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
+    named.shape = compound;
+  }
+  progress(0.8, 0.8, 1.0);
+  return named;
+}
+
+/// Sets each face's name on the entity the writer made of it.
+template <class Entity, class SetName>
+void name_entities(const Handle(Transfer_FinderProcess) & process, const NamedShape& named,
+                   const Handle(Standard_Type) & type, SetName set_name) {
+  for (const auto& [face, name] : named.names) {
+    const Handle(TransferBRep_ShapeMapper) mapper = TransferBRep::ShapeMapper(process, face);
+    Handle(Entity) entity;
+    if (process->FindTypedTransient(mapper, type, entity)) set_name(entity, name);
+  }
 }
 
 /// Runs an OCCT writer that writes to a path, atomically (OCCT writes to a temporary file).
@@ -111,55 +342,38 @@ std::optional<CadFormat> cad_format(const std::string& path) {
   return std::nullopt;
 }
 
-TopoDS_Shape make_shape(const PatchSet& patches, const CadOptions& options, CadReport* report) {
+TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
+                        const CadOptions& options, CadReport* report) {
   CadReport r;
-  r.sewing_tolerance = options.sewing_tolerance > 0
-                           ? options.sewing_tolerance
-                           : std::max({2 * patches.max_position_deviation,
-                                       1e-7 * patches.model_size, Precision::Confusion()});
-  // Cutting (the third option) splits an edge where a smaller neighbour's edges end: the
-  // hierarchy meets unsplit neighbours along halves, quarters, ... of their sides.
-  BRepBuilderAPI_Sewing sewing(r.sewing_tolerance, true, true, true, false);
-  for (const BezierPatch& patch : patches.patches)
-    sewing.Add(make_face(patch, Precision::Confusion()));
-  r.faces = static_cast<int>(patches.patches.size());
-  sewing.Perform();
-  r.free_edges = sewing.NbFreeEdges();
-  const TopoDS_Shape sewn = sewing.SewedShape();
-
-  // Every closed shell becomes a solid, oriented so that its faces point out of it.
-  BRep_Builder builder;
-  TopoDS_Compound compound;
-  builder.MakeCompound(compound);
-  std::vector<TopoDS_Shape> parts;
-  for (TopExp_Explorer it(sewn, TopAbs_SHELL); it.More(); it.Next()) {
-    const TopoDS_Shell& shell = TopoDS::Shell(it.Current());
-    ++r.shells;
-    if (BRep_Tool::IsClosed(shell)) {
-      TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(shell).Solid();
-      BRepLib::OrientClosedSolid(solid);
-      parts.push_back(solid);
-      ++r.solids;
-    } else {
-      parts.push_back(shell);
-    }
-  }
-  for (TopExp_Explorer it(sewn, TopAbs_FACE, TopAbs_SHELL); it.More(); it.Next())
-    parts.push_back(it.Current());  // faces sewing left on their own
+  NamedShape named = build_shape(mesh, surface, patches, options, r);
   if (report) *report = r;
-  if (parts.size() == 1) return parts.front();
-  for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
-  return compound;
+  return named.shape;
 }
 
-CadReport write_cad(const std::string& path, const PatchSet& patches, const CadOptions& options) {
+CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
+                         FacePacking packing, CadFormat format) {
+  // Bytes per pole and per face of OCCT's writers, measured on the examples (docs/formats.md).
+  const double pole_bytes = format == CadFormat::step ? 80 : 75;
+  const double face_bytes = format == CadFormat::step ? 3000 : 1500;
+  CadEstimate e;
+  for (const BsplineFace& face : bspline_face_layout(mesh, surface, patches, packing)) {
+    ++e.faces;
+    e.poles += static_cast<std::int64_t>(face.u_knots.size() + 2) * (face.v_knots.size() + 2);
+  }
+  e.bytes = static_cast<std::int64_t>(e.poles * pole_bytes + e.faces * face_bytes);
+  return e;
+}
+
+CadReport write_cad(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                    const PatchSet& patches, const CadOptions& options) {
   const std::optional<CadFormat> format = cad_format(path);
   if (!format)
     throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
                                  file_extension(path), kCadExtensions));
   const Unit& unit = find_unit(options.units);
   CadReport report;
-  const TopoDS_Shape shape = make_shape(patches, options, &report);
+  const NamedShape named = build_shape(mesh, surface, patches, options, report);
+  const TopoDS_Shape& shape = named.shape;
   if (*format == CadFormat::step) {
     STEPControl_Writer writer;
     // The shape's length unit (the model's local unit) is the written one, so the coordinates
@@ -169,11 +383,19 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
     writer.Model()->SetWriteLengthUnit(unit.mm);
     const std::string previous_unit = Interface_Static::CVal("write.step.unit");
     Interface_Static::SetCVal("write.step.unit", unit.occt);
-    const IFSelect_ReturnStatus transferred = writer.Transfer(shape, STEPControl_AsIs);
+    Handle(ForwardProgress) indicator = new ForwardProgress(options.progress, 0.8, 0.9);
+    const IFSelect_ReturnStatus transferred =
+        writer.Transfer(shape, STEPControl_AsIs, true, indicator->Start());
     Interface_Static::SetCVal("write.step.unit", previous_unit.c_str());
     if (transferred != IFSelect_RetDone)
       throw OutputError(
           fmt::format("cannot write {}: OpenCASCADE could not convert the shape", path));
+    name_entities<StepRepr_RepresentationItem>(
+        writer.WS()->TransferWriter()->FinderProcess(), named,
+        STANDARD_TYPE(StepRepr_RepresentationItem),
+        [](const Handle(StepRepr_RepresentationItem) & item, const std::string& name) {
+          item->SetName(new TCollection_HAsciiString(name.c_str()));
+        });
     write_through(path, [&](const std::string& temporary) {
       return writer.Write(temporary.c_str()) == IFSelect_RetDone;
     });
@@ -181,14 +403,27 @@ CadReport write_cad(const std::string& path, const PatchSet& patches, const CadO
     IGESControl_Controller::Init();
     IGESControl_Writer writer(unit.occt, 1);  // 1: B-rep entities, which keep shells and solids
     writer.Model()->ChangeGlobalSection().SetCascadeUnit(unit.mm);
-    if (!writer.AddShape(shape))
+    Handle(ForwardProgress) indicator = new ForwardProgress(options.progress, 0.8, 0.9);
+    if (!writer.AddShape(shape, indicator->Start()))
       throw OutputError(
           fmt::format("cannot write {}: OpenCASCADE could not convert the shape", path));
+    // The name as IGES keeps it: an 8-character label and the whole name in a Name property
+    // (entity 406, form 15), as OCCT's own IGESCAFControl_Writer writes names.
+    name_entities<IGESData_IGESEntity>(
+        writer.TransferProcess(), named, STANDARD_TYPE(IGESData_IGESEntity),
+        [&writer](const Handle(IGESData_IGESEntity) & entity, const std::string& name) {
+          entity->SetLabel(new TCollection_HAsciiString(name.substr(0, 8).c_str()));
+          Handle(IGESBasic_Name) long_name = new IGESBasic_Name;
+          long_name->Init(1, new TCollection_HAsciiString(name.c_str()));
+          entity->AddProperty(long_name);
+          writer.AddEntity(long_name);
+        });
     writer.ComputeModel();
     write_through(path, [&](const std::string& temporary) {
       return writer.Write(temporary.c_str()) == Standard_True;
     });
   }
+  if (options.progress) options.progress(1.0);
   return report;
 }
 
@@ -250,6 +485,36 @@ TopoDS_Shape read_cad(const std::string& path) {
   const TopoDS_Shape shape = reader->OneShape();
   if (shape.IsNull()) throw InputError(fmt::format("{}: no shape in the file", path));
   return shape;
+}
+
+std::vector<std::string> read_face_names(const std::string& path) {
+  const std::optional<CadFormat> format = cad_format(path);
+  if (!format)
+    throw InputError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
+                                 file_extension(path), kCadExtensions));
+  std::vector<std::string> names;
+  const auto text = [](const Handle(TCollection_HAsciiString) & s) {
+    return s.IsNull() ? std::string() : std::string(s->ToCString());
+  };
+  if (*format == CadFormat::step) {
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+      throw InputError(fmt::format("{}: OpenCASCADE cannot read it", path));
+    const Handle(StepData_StepModel) model = reader.StepModel();
+    for (int i = 1; i <= model->NbEntities(); ++i)
+      if (const auto face = Handle(StepShape_AdvancedFace)::DownCast(model->Value(i));
+          !face.IsNull())
+        names.push_back(text(face->Name()));
+  } else {
+    IGESControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+      throw InputError(fmt::format("{}: OpenCASCADE cannot read it", path));
+    const Handle(IGESData_IGESModel) model = reader.IGESModel();
+    for (int i = 1; i <= model->NbEntities(); ++i)
+      if (const auto face = Handle(IGESSolid_Face)::DownCast(model->Value(i)); !face.IsNull())
+        names.push_back(text(face->NameValue()));
+  }
+  return names;
 }
 
 }  // namespace stitch::cad

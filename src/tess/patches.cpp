@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 
 #include "stitch/error.hpp"
+#include "stitch/topology/operation.hpp"
 
 namespace stitch {
 
@@ -20,6 +24,10 @@ struct Cell {
   ControlNet net;
   int root = 0;  ///< index into Surface::corners()
   int level = 0, cell_u = 0, cell_v = 0;
+  /// How far the surface's normals turn in the cell one level up (turning(), in degrees).
+  double parent_turning = INFINITY;
+  /// False for an innermost cell, whose polynomial only approximates the surface.
+  bool exact = true;
 };
 
 /// Samples per side of an innermost cell when its deviation is measured: the corners, the
@@ -51,8 +59,13 @@ std::vector<Cell> split_cell(const Cell& cell, std::vector<Cell>* done) {
   const auto children = split(cell.net, SplitRule::modified);
   for (int qu = 0; qu < 2; ++qu)
     for (int qv = 0; qv < 2; ++qv) {
-      Cell child{children[2 * qu + qv], cell.root, cell.level + 1, 2 * cell.cell_u + qu,
-                 2 * cell.cell_v + qv};
+      Cell child{children[2 * qu + qv],
+                 cell.root,
+                 cell.level + 1,
+                 2 * cell.cell_u + qu,
+                 2 * cell.cell_v + qv,
+                 INFINITY,
+                 true};
       if (!child.net.regular())
         inner.push_back(child);
       else if (done)
@@ -66,36 +79,112 @@ double angle_deg(const Vec3& a, const Vec3& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / std::numbers::pi;
 }
 
-struct Deviation {
-  double position = 0, normal_deg = 0;
+/// The patch corners in PatchCorner order with their (u, v).
+constexpr std::array<std::pair<std::uint8_t, std::array<double, 2>>, 4> kPatchCorners{
+    {{corner00, {0, 0}}, {corner30, {1, 0}}, {corner33, {1, 1}}, {corner03, {0, 1}}}};
+
+/// One innermost cell against exact evaluation.
+struct CellDeviation {
+  double position = 0;    ///< largest distance
+  double normal_deg = 0;  ///< largest angle between the cell's normal and the surface's
+  /// Largest angle between the surface's normals in the cell and at its centre: how far the
+  /// normals turn around the extraordinary point the cell holds.
+  double turning_deg = 0;
 };
 
-/// The largest deviation of the innermost cells' polynomials from exact evaluation.
-Deviation measure(const Surface& surface, const std::vector<Cell>& cells) {
-  std::vector<Deviation> per_cell(cells.size());
+/// The innermost cells' polynomials against exact evaluation. Normals are not compared at the
+/// root corners in `no_normal` (root index -> PatchCorner bits).
+std::vector<CellDeviation> measure(const Surface& surface, const std::vector<Cell>& cells,
+                                   const std::vector<std::uint8_t>& no_normal) {
+  std::vector<CellDeviation> per_cell(cells.size());
   tbb::parallel_for(size_t{0}, cells.size(), [&](size_t k) {
     const Cell& cell = cells[k];
     const Corner corner = surface.corners()[cell.root];
     const Vec3& origin = surface.bezier().nets[corner.idx].p[0];
     const double scale = std::ldexp(1.0, -cell.level);
-    Deviation d;
+    const Vec3 centre =
+        surface.evaluate(corner, (cell.cell_u + 0.5) * scale, (cell.cell_v + 0.5) * scale).normal;
+    CellDeviation d;
     for (int i = 0; i < kSamples; ++i)
       for (int j = 0; j < kSamples; ++j) {
         const double s = double(i) / (kSamples - 1), t = double(j) / (kSamples - 1);
+        const double u = (cell.cell_u + s) * scale, v = (cell.cell_v + t) * scale;
         const SurfacePoint cell_point = evaluate_polynomial(cell.net, s, t);
-        const SurfacePoint exact =
-            surface.evaluate(corner, (cell.cell_u + s) * scale, (cell.cell_v + t) * scale);
+        const SurfacePoint exact = surface.evaluate(corner, u, v);
         d.position = std::max(d.position, (cell_point.position + origin - exact.position).norm());
+        bool at_point_without_normal = false;
+        for (const auto& [bit, at] : kPatchCorners)
+          if ((no_normal[cell.root] & bit) && u == at[0] && v == at[1])
+            at_point_without_normal = true;
+        if (at_point_without_normal) continue;
         d.normal_deg = std::max(d.normal_deg, angle_deg(cell_point.normal, exact.normal));
+        d.turning_deg = std::max(d.turning_deg, angle_deg(exact.normal, centre));
       }
     per_cell[k] = d;
   });
-  Deviation worst;
-  for (const Deviation& d : per_cell) {
-    worst.position = std::max(worst.position, d.position);
-    worst.normal_deg = std::max(worst.normal_deg, d.normal_deg);
+  return per_cell;
+}
+
+/// The mesh element at a corner of the patch of corner c.
+PointWithoutNormal element_at(const HalfedgeMesh& mesh, Corner c, std::uint8_t at) {
+  using Kind = PointWithoutNormal::Kind;
+  switch (at) {
+    case corner00:
+      return {Kind::vertex, mesh.origin(c).idx};
+    case corner33:
+      return {Kind::face_centre, mesh.face(c).idx};
+    case corner30:
+      return {Kind::edge_middle, HalfedgeMesh::edge(c).idx};
+    default:
+      return {Kind::edge_middle, HalfedgeMesh::edge(mesh.prev(c)).idx};
   }
-  return worst;
+}
+
+/// The extraordinary corners of the roots where the surface has no tangent plane. Halving keeps
+/// a cell's corner and its tangent directions there, so the innermost cell's normal at the point
+/// is the root's at every depth: where it differs from the surface's by more than the tolerance,
+/// no depth brings it closer, and the point is left out of the normal tolerance.
+std::vector<std::uint8_t> corners_without_normal(const HalfedgeMesh& mesh, const Surface& surface,
+                                                 double tolerance_deg,
+                                                 std::vector<PointWithoutNormal>& points) {
+  const auto& corners = surface.corners();
+  std::vector<std::uint8_t> bits(corners.size(), 0);
+  for (size_t r = 0; r < corners.size(); ++r) {
+    const ControlNet& net = surface.bezier().nets[corners[r].idx];
+    for (const auto& [bit, at] : kPatchCorners) {
+      if (!(net.extraordinary & bit)) continue;
+      const double angle = angle_deg(evaluate_polynomial(net, at[0], at[1]).normal,
+                                     surface.evaluate(corners[r], at[0], at[1]).normal);
+      if (!(angle <= tolerance_deg)) {
+        bits[r] |= bit;
+        PointWithoutNormal point = element_at(mesh, corners[r], bit);
+        point.angle_deg = angle;
+        points.push_back(point);
+      }
+    }
+  }
+  return bits;
+}
+
+/// One entry per point, with the largest angle measured around it.
+void merge_points(std::vector<PointWithoutNormal>& points) {
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.kind, a.index, b.angle_deg) < std::tie(b.kind, b.index, a.angle_deg);
+  });
+  points.erase(std::unique(points.begin(), points.end(),
+                           [](const auto& a, const auto& b) {
+                             return a.kind == b.kind && a.index == b.index;
+                           }),
+               points.end());
+}
+
+/// The first root net with a coordinate that is not finite, or -1.
+int first_non_finite_root(const Surface& surface) {
+  const auto& corners = surface.corners();
+  for (size_t r = 0; r < corners.size(); ++r)
+    for (const Vec3& p : surface.bezier().nets[corners[r].idx].p)
+      if (!p.allFinite()) return static_cast<int>(r);
+  return -1;
 }
 
 double bounding_box_diagonal(const Surface& surface) {
@@ -109,6 +198,18 @@ double bounding_box_diagonal(const Surface& surface) {
 }
 
 }  // namespace
+
+std::string describe(const HalfedgeMesh& mesh, const PointWithoutNormal& point) {
+  switch (point.kind) {
+    case PointWithoutNormal::Kind::vertex:
+      return fmt::format("vertex {}", point.index + 1);
+    case PointWithoutNormal::Kind::face_centre:
+      return fmt::format("the centre of face {}", point.index + 1);
+    case PointWithoutNormal::Kind::edge_middle:
+      break;
+  }
+  return fmt::format("the middle of edge {}", edge_name(mesh, Edge(point.index)));
+}
 
 int PatchSet::num_exact() const {
   return static_cast<int>(
@@ -134,8 +235,10 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
   const auto& nets = surface.bezier().nets;
   const bool hierarchical = surface.method() == Method::mdc;
 
-  // The depth: the smallest at which every innermost cell is within both tolerances.
+  // Each extraordinary point's depth: the smallest at which its innermost cell is within both
+  // tolerances. The cells of each root, regular ones exact, the innermost ones not.
   std::vector<Cell> frontier;
+  std::vector<std::vector<Cell>> cells_of_root(corners.size());
   if (hierarchical)
     for (int r = 0; r < static_cast<int>(corners.size()); ++r)
       if (!nets[corners[r].idx].regular()) {
@@ -144,30 +247,63 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
         for (Vec3& p : root.net.p) p -= origin;
         frontier.push_back(root);
       }
+  if (const int r = first_non_finite_root(surface); r >= 0)
+    throw InputError(fmt::format(
+        "the control net of corner {} has coordinates that are not finite numbers; check the "
+        "input's coordinates and the K-gon controls there",
+        corner_name(mesh, corners[r])));
   if (!frontier.empty()) {
+    const std::vector<std::uint8_t> no_normal = corners_without_normal(
+        mesh, surface, options.angle_tolerance_deg, set.points_without_normal);
     const double position_tolerance = options.tolerance * set.model_size;
-    for (int depth = 0;; ++depth) {
-      const Deviation d = measure(surface, frontier);
-      if (d.position <= position_tolerance && d.normal_deg <= options.angle_tolerance_deg) {
-        set.depth = depth;
-        set.max_position_deviation = d.position;
-        set.max_normal_deviation_deg = d.normal_deg;
-        break;
-      }
-      if (depth == options.max_depth)
-        throw UsageError(fmt::format(
-            "the tolerance {} (relative) and {} degrees are not reached in {} splits (deviation "
-            "{:.3g} relative, {:.3g} degrees): ask for a larger tolerance",
-            options.tolerance, options.angle_tolerance_deg, depth, d.position / set.model_size,
-            d.normal_deg));
+    for (int depth = 0; !frontier.empty(); ++depth) {
+      const std::vector<CellDeviation> per_cell = measure(surface, frontier, no_normal);
       std::vector<Cell> next;
-      for (const Cell& cell : frontier)
-        for (Cell& child : split_cell(cell, nullptr)) next.push_back(std::move(child));
+      for (size_t k = 0; k < frontier.size(); ++k) {
+        const CellDeviation& d = per_cell[k];
+        Cell& cell = frontier[k];
+        // Around a point with a tangent plane the normals turn about half as far in a cell half
+        // as large; where they turn beyond the tolerance and nearly as far as one level up (a
+        // fold, a cone), there is no normal to converge to, and the cell is left out of the
+        // normal tolerance.
+        const bool turning = d.turning_deg > options.angle_tolerance_deg &&
+                             d.turning_deg > 0.75 * cell.parent_turning;
+        const bool position_ok = d.position <= position_tolerance;
+        const bool normal_ok = turning || d.normal_deg <= options.angle_tolerance_deg;
+        if (position_ok && normal_ok) {
+          set.depth = std::max(set.depth, depth);
+          set.max_position_deviation = std::max(set.max_position_deviation, d.position);
+          if (turning) {
+            PointWithoutNormal point = element_at(mesh, corners[cell.root], cell.net.extraordinary);
+            point.angle_deg = d.turning_deg;
+            set.points_without_normal.push_back(point);
+          } else {
+            set.max_normal_deviation_deg = std::max(set.max_normal_deviation_deg, d.normal_deg);
+          }
+          cell.exact = false;
+          cells_of_root[cell.root].push_back(cell);
+          continue;
+        }
+        if (depth == options.max_depth)
+          throw UsageError(fmt::format(
+              "the {} is not reached in {} splits near the corner of patch {} (deviation {:.3g} "
+              "relative, {:.3g} degrees): ask for a larger {}",
+              position_ok ? fmt::format("angle tolerance {} degrees", options.angle_tolerance_deg)
+                          : fmt::format("tolerance {} (relative)", options.tolerance),
+              depth, corner_name(mesh, corners[cell.root]), d.position / set.model_size,
+              d.normal_deg, position_ok ? "--angle-tolerance" : "--tolerance"));
+        std::vector<Cell> regular;
+        for (Cell& child : split_cell(cell, &regular)) {
+          child.parent_turning = d.turning_deg;
+          next.push_back(std::move(child));
+        }
+        for (Cell& c : regular) cells_of_root[c.root].push_back(std::move(c));
+      }
       frontier = std::move(next);
     }
+    merge_points(set.points_without_normal);
   }
 
-  // The patches, root by root: regular cells exact, the innermost ones at `depth` inexact.
   for (int r = 0; r < static_cast<int>(corners.size()); ++r) {
     const Corner corner = corners[r];
     const ControlNet& root = nets[corner.idx];
@@ -175,26 +311,31 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
       set.patches.push_back(make_patch(mesh, corner, root, Vec3::Zero(), 0, 0, 0, true));
       continue;
     }
-    const Vec3 origin = root.p[0];
-    Cell top{root, r, 0, 0, 0};
-    for (Vec3& p : top.net.p) p -= origin;
-    std::vector<Cell> open{top};
-    while (!open.empty()) {
-      const Cell cell = open.back();
-      open.pop_back();
-      if (cell.level == set.depth) {
-        set.patches.push_back(make_patch(mesh, corner, cell.net, origin, cell.level, cell.cell_u,
-                                         cell.cell_v, false));
-        continue;
-      }
-      std::vector<Cell> regular;
-      for (Cell& inner : split_cell(cell, &regular)) open.push_back(std::move(inner));
-      for (const Cell& c : regular)
-        set.patches.push_back(
-            make_patch(mesh, corner, c.net, origin, c.level, c.cell_u, c.cell_v, true));
-    }
+    for (const Cell& c : cells_of_root[r])
+      set.patches.push_back(
+          make_patch(mesh, corner, c.net, root.p[0], c.level, c.cell_u, c.cell_v, c.exact));
   }
   return set;
+}
+
+double enclosed_volume(const PatchSet& patches) {
+  // p . (du x dv) has degree 8 in each parameter: 5-point Gauss-Legendre is exact for it.
+  constexpr std::array<double, 5> x{0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
+                                    0.9530899229693320};
+  constexpr std::array<double, 5> w{0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
+                                    0.2393143352496832, 0.1184634425280945};
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, patches.patches.size()), 0.0,
+      [&](const tbb::blocked_range<size_t>& range, double sum) {
+        for (size_t k = range.begin(); k != range.end(); ++k)
+          for (int i = 0; i < 5; ++i)
+            for (int j = 0; j < 5; ++j) {
+              const SurfacePoint p = evaluate_polynomial(patches.patches[k].net, x[i], x[j]);
+              sum += w[i] * w[j] * p.position.dot(p.du.cross(p.dv)) / 3;
+            }
+        return sum;
+      },
+      std::plus<>());
 }
 
 SurfacePoint evaluate_cell(const BezierPatch& patch, double u, double v) {

@@ -3,6 +3,7 @@
 // of modified de Casteljau children (docs/formats.md, "The patch set").
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
@@ -25,6 +26,20 @@ struct BezierPatch {
   bool exact = true;
 };
 
+/// A point where the surface has no tangent plane (a cone point of creases or corners, a
+/// valence-2 vertex, a fold): an extraordinary corner of root patches at which the innermost
+/// cell's normal and the surface's differ by more than the angle tolerance at every depth. The
+/// normal tolerance is not applied at the point itself (it still is around it, and the position
+/// tolerance everywhere).
+struct PointWithoutNormal {
+  enum class Kind { vertex, face_centre, edge_middle } kind = Kind::vertex;
+  int index = 0;         ///< the vertex, face or edge (0-based)
+  double angle_deg = 0;  ///< the largest angle measured at the point
+};
+
+/// "vertex 5", "the centre of face 3", "the middle of edge (2, 7)" (numbered from 1).
+std::string describe(const HalfedgeMesh& mesh, const PointWithoutNormal& point);
+
 struct PatchSetOptions {
   /// Largest distance of an inexact cell from the surface, relative to the model size (the
   /// diagonal of the bounding box of the control points). > 0.
@@ -37,23 +52,31 @@ struct PatchSetOptions {
 
 struct PatchSet {
   Method method = Method::mdc;
-  std::vector<BezierPatch> patches;  ///< root corner order, each root's cells depth first
-  int depth = 0;                     ///< splits at extraordinary points (0: none needed)
-  double model_size = 0;             ///< bounding box diagonal of the control points
+  std::vector<BezierPatch> patches;  ///< root corner order, each root's cells by level
+  int depth = 0;          ///< the most splits any extraordinary point needed (0: none needed)
+  double model_size = 0;  ///< bounding box diagonal of the control points
   double tolerance = 0, angle_tolerance_deg = 0;  ///< as asked
   /// Largest deviation of an inexact cell from Surface::evaluate, measured on a grid of samples
   /// in every innermost cell: distance in model units and normal angle in degrees.
   double max_position_deviation = 0, max_normal_deviation_deg = 0;
+  /// Where the normal tolerance was not applied, one entry per point, sorted by kind and index.
+  std::vector<PointWithoutNormal> points_without_normal;
 
   [[nodiscard]] int num_exact() const;
 };
 
-/// The patches of the surface: for mdc, every extraordinary root split to the smallest depth at
-/// which the innermost cells are within the tolerances; for asc, the roots as they are. Throws
+/// The patches of the surface: for mdc, every extraordinary root split towards each of its
+/// extraordinary corners to the smallest depth at which the innermost cell there is within the
+/// tolerances (each point has its own depth); for asc, the roots as they are. Throws
 /// UsageError for cc (not a set of Bézier patches), a tolerance <= 0 or not finite,
-/// and stitch::Error when max_depth does not reach the tolerance.
+/// and stitch::Error naming the place when max_depth does not reach the tolerance.
 PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
                         const PatchSetOptions& options = {});
+
+/// The volume the patches enclose, by the divergence theorem (a third of the integral of
+/// p . (du x dv)), exact for their polynomials up to round-off; the volume of the solid they
+/// bound when the surface is closed, positive when its normals point out.
+double enclosed_volume(const PatchSet& patches);
 
 /// The plain polynomial of one patch at (u, v) of its own cell, in the root's scale of
 /// derivatives (du, dv multiplied by 2^level) so it can be compared with Surface::evaluate.

@@ -1,7 +1,12 @@
-// The patch set as CAD geometry through OpenCASCADE: one B-spline face per Bézier patch, sewn
-// into shells, a solid where a shell is closed; written and read as STEP (AP214) or IGES.
+// The exact surface as CAD geometry through OpenCASCADE: B-spline faces (tess/bspline_faces.hpp)
+// with the lowest knot multiplicities the surface's continuity allows, named after their control
+// elements, sewn into shells, a solid where a shell is closed; written and read as STEP (AP214)
+// or IGES.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -9,6 +14,7 @@
 // Handle template if its header came after OCCT's.
 // clang-format off
 #include "stitch/mesh/build.hpp"
+#include "stitch/tess/bspline_faces.hpp"
 #include "stitch/tess/patches.hpp"
 #include <TopoDS_Shape.hxx>
 // clang-format on
@@ -29,31 +35,62 @@ inline constexpr const char* kCadUnits = "mm, cm, m, in, ft";
 /// Throws stitch::Error naming the known units when `units` is not one of them.
 void check_units(const std::string& units);
 
+/// A knot is removed (its multiplicity lowered) only where that moves the surface by at most
+/// this, relative to the model size: far below any tolerance of the patch set, far above the
+/// round-off of the poles (about 1e-15 of the model size after a few dozen splits). So a lower
+/// multiplicity means the surface is that much smoother there, measured.
+inline constexpr double kKnotRemovalTolerance = 1e-10;
+
 struct CadOptions {
   std::string units = "mm";
+  FacePacking packing = FacePacking::quads;
+  /// Faces whose normals differ by at most this along a shared edge that is not a sharp edge of
+  /// the mesh meet tangentially: the edge is marked G1 (OpenCASCADE's regularity).
+  double angle_tolerance_deg = 0.1;
   /// Largest gap closed by sewing, in model units; 0 chooses it from the patch set: twice the
   /// measured deviation of its inexact cells, at least 1e-7 of the model size.
   double sewing_tolerance = 0;
+  /// Called with the fraction (0..1) done, from one thread at a time.
+  std::function<void(double)> progress;
 };
 
 struct CadReport {
-  int faces = 0;       ///< B-spline faces, one per patch
+  int faces = 0;       ///< B-spline faces
   int shells = 0;      ///< shells after sewing
   int solids = 0;      ///< closed shells made into solids
   int free_edges = 0;  ///< edges on one face only (0 for a closed input)
   double sewing_tolerance = 0;
+  std::int64_t poles = 0;  ///< of all faces, after the knots were lowered
+  /// Interior knots of all faces by the multiplicity they kept: [0] removed (the pieces on both
+  /// sides are one polynomial), [1] C2, [2] C1, [3] C0 across the knot.
+  std::array<std::int64_t, 4> knots{};
+  int smooth_edges = 0;  ///< shared edges inside the smooth surface (not on a sharp mesh edge)
+  int sharp_edges = 0;   ///< shared edges along infinitely sharp creases
+  int g1_edges = 0;      ///< smooth edges OpenCASCADE marked G1 at the angle tolerance
+  double max_smooth_angle_deg = 0;  ///< largest angle between the faces' normals along them
+  double volume = 0;  ///< of the solids, in model units cubed (0 when no shell is closed)
 };
 
-/// The faces of every patch sewn into shells, each closed shell a solid oriented outward; one
-/// shape (a compound when there is more than one). Throws stitch::Error for a patch OCCT refuses.
-TopoDS_Shape make_shape(const PatchSet& patches, const CadOptions& options = {},
-                        CadReport* report = nullptr);
+/// The faces of the patch set as one shape, sewn, each closed shell a solid oriented outward
+/// (a compound when there is more than one part). Throws stitch::Error for a face OCCT refuses.
+TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
+                        const CadOptions& options = {}, CadReport* report = nullptr);
 
-/// Writes the shape as STEP AP214 or IGES 5.3 by the extension of `path`. Atomic: nothing is
-/// left at `path` unless the whole file was written. Throws stitch::Error (unknown extension or
-/// unit, write failures).
-CadReport write_cad(const std::string& path, const PatchSet& patches,
-                    const CadOptions& options = {});
+/// What a file of the patch set will hold, told before the work: faces, poles (assuming C2
+/// inside the faces, as the modified rule gives) and bytes.
+struct CadEstimate {
+  int faces = 0;
+  std::int64_t poles = 0;
+  std::int64_t bytes = 0;
+};
+CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
+                         FacePacking packing, CadFormat format);
+
+/// Writes the shape as STEP AP214 or IGES 5.3 by the extension of `path`, every face named
+/// (face_name). Atomic: nothing is left at `path` unless the whole file was written. Throws
+/// stitch::Error (unknown extension or unit, write failures).
+CadReport write_cad(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                    const PatchSet& patches, const CadOptions& options = {});
 
 /// The faces of a shape triangulated by OCCT's BRepMesh (chordal deflection `deflection`, in the
 /// shape's units), with the nodes that faces share along their edges welded into one vertex:
@@ -68,5 +105,9 @@ void quiet_opencascade();
 /// Reads a STEP or IGES file (by extension) into one shape, for checks and viewers, with
 /// lengths in millimetres (OCCT's unit). Throws stitch::Error when it cannot be read.
 TopoDS_Shape read_cad(const std::string& path);
+
+/// The names of the faces of a STEP or IGES file, in the file's order (empty strings for
+/// faces without one).
+std::vector<std::string> read_face_names(const std::string& path);
 
 }  // namespace stitch::cad

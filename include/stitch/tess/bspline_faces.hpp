@@ -1,0 +1,71 @@
+// The exact surface as tensor-product B-spline faces, for CAD. The cells under one mesh corner
+// tile its root patch's square dyadically (cell [k, k + 1] / 2^level), so the whole hierarchy of
+// one corner is one bicubic B-spline with knots at the cells' sides; the four corner patches of a
+// quad tile the quad's square the same way (docs/formats.md, "B-spline faces").
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stitch/tess/patches.hpp"
+
+namespace stitch {
+
+enum class FacePacking {
+  quads,    ///< the corner patches of each quad of the mesh in one face; K != 4: K faces
+  corners,  ///< one face per corner patch
+};
+
+/// Where a root patch lies in its face: the face's (s, t) of the root's (u, v) is the quadrant's
+/// rotation of (u, v) * size + origin (size 1 and rotation 0 for a face of one corner patch).
+struct FaceQuadrant {
+  Corner corner;
+  int rotation =
+      0;  ///< quarter turns: 0 (s, t) = (x, y), 1 (1 - y, x), 2 (1 - x, 1 - y), 3 (y, 1 - x)
+  double size = 1;  ///< 1, or 1/2 in a packed quad: x = u / 2, y = v / 2
+};
+
+/// One bicubic B-spline face. Its knots are clamped (multiplicity 4 at 0 and 1) and its interior
+/// knots have multiplicity 3, so the poles are the Bézier nets of the grid's rectangles sharing
+/// their sides: exact for any piecewise polynomial that is continuous. A CAD writer lowers the
+/// multiplicities where the surface is smoother (cad/cad.hpp).
+struct BsplineFace {
+  int face = 0;     ///< the mesh face (0-based)
+  int vertex = -1;  ///< the corner's vertex for a face of one corner patch; -1 for a packed quad
+  std::vector<FaceQuadrant> quadrants;   ///< 1, or 4 in the order of the face's corners
+  std::vector<double> u_knots, v_knots;  ///< distinct, from 0 to 1 (u is s, v is t)
+  std::vector<Vec3> poles;               ///< u major: poles[i * num_v_poles() + j]
+  /// Whether each side lies on a sharp edge of the mesh (a boundary or an infinitely sharp
+  /// crease), where the surface is only continuous. Sides in the order t = 0, s = 1, t = 1, s = 0.
+  std::array<bool, 4> sharp_side{};
+
+  [[nodiscard]] int num_u_poles() const { return 3 * static_cast<int>(u_knots.size()) - 2; }
+  [[nodiscard]] int num_v_poles() const { return 3 * static_cast<int>(v_knots.size()) - 2; }
+  [[nodiscard]] const Vec3& pole(int i, int j) const { return poles[i * num_v_poles() + j]; }
+};
+
+/// A point of a face as a point of the surface: the root patch and its (u, v).
+struct RootPoint {
+  Corner corner;
+  double u = 0, v = 0;
+};
+RootPoint root_point(const BsplineFace& face, double s, double t);
+
+/// The face's name, after its control elements (numbered from 1 as in the input file):
+/// "face F" for a packed quad, "corner V@F" (as `stitch edit` writes corners) for one corner.
+std::string face_name(const HalfedgeMesh& mesh, const BsplineFace& face);
+
+/// The faces' quadrants, sides and knots, without poles: what a writer can tell before the work.
+std::vector<BsplineFace> bspline_face_layout(const HalfedgeMesh& mesh, const Surface& surface,
+                                             const PatchSet& patches, FacePacking packing);
+
+/// The faces of the patch set: for `quads`, one per quad of the mesh and one per corner of every
+/// other face, in face order; for `corners`, one per root patch, in the patch set's order.
+/// `progress` (optional) is told the fraction done.
+std::vector<BsplineFace> bspline_faces(const HalfedgeMesh& mesh, const Surface& surface,
+                                       const PatchSet& patches, FacePacking packing,
+                                       const std::function<void(double)>& progress = {});
+
+}  // namespace stitch
