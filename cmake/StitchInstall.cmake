@@ -8,7 +8,7 @@ set(STITCH_COMPONENTS core)
 install(TARGETS stitch_core EXPORT stitch-core-targets)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/stitch DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The optional components, each a library with its include root beside its sources.
-foreach(component render modeler cad)
+foreach(component render cad output modeler)
   if(TARGET stitch_${component})
     list(APPEND STITCH_COMPONENTS ${component})
     install(TARGETS stitch_${component} EXPORT stitch-${component}-targets)

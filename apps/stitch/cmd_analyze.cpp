@@ -71,7 +71,7 @@ void run_analyze(const AnalyzeArgs& a) {
     stage.begin("analyzing " + to_string(m));
     std::optional<Surface> surface;
     try {
-      surface.emplace(mesh, m, surface_kgon_options(a.kgon, mesh, m, a.in.path, a.progress.quiet));
+      surface.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet).surface);
     } catch (const Error& e) {
       // With --method all, a method that cannot take this mesh is reported, not fatal.
       if (methods.size() == 1) throw;

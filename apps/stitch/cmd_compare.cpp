@@ -257,7 +257,7 @@ void run_compare(const CompareArgs& a) {
     stage.begin("building, rendering and analyzing " + to_string(m));
     std::optional<Surface> surface;
     try {
-      surface.emplace(mesh, m, surface_kgon_options(a.kgon, mesh, m, a.in.path, a.progress.quiet));
+      surface.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet).surface);
     } catch (const Error& e) {
       // Should OpenSubdiv reject the mesh: show the other methods and say why this one is
       // missing.

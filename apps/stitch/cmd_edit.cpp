@@ -54,11 +54,10 @@ bool check_edited_surface(const EditArgs& a, const HalfedgeMesh& mesh, const Tou
   const std::vector<Corner> changed =
       touched.whole ? mesh.patch_corners()
                     : patches_touched(mesh, touched.vertices, touched.edges, touched.faces);
-  // The surface `stitch smooth` makes of the output: tubes that fold get their K-gon controls
-  // chosen as it chooses them.
-  KgonOptions kgons;
-  if (a.unfold_tubes) report_unfolded_tubes(unfold_tubes(mesh, kgons), mesh, a.out, a.quiet);
-  const Surface surface(mesh, Method::mdc, kgons);
+  // The surface `stitch smooth` makes of the output by default.
+  const BuiltSurface built = build_surface(mesh, {Method::mdc, {}, a.unfold_tubes});
+  report_unfolded_tubes(built.tubes, mesh, a.out, a.quiet);
+  const Surface& surface = built.surface;
   LocalCheckOptions options;
   options.resolution = a.check_resolution;
   const LocalCheckReport r = check_patches(mesh, surface, changed, options);
@@ -215,9 +214,11 @@ void add_edit_command(CLI::App& app) {
                   "segments per patch side for --check")
       ->check(CLI::Range(1, limits::max_resolution))
       ->capture_default_str();
-  cmd->add_flag("!--no-unfold-tubes", args->unfold_tubes,
-                "--check the fitted K-gons of every tube, as stitch smooth --no-unfold-tubes "
-                "builds them, instead of the controls stitch smooth chooses where they fold");
+  cmd->add_flag_callback(
+      "--no-unfold-tubes", [args] { args->unfold_tubes = false; },
+      "--check the fitted K-gons of every tube, as stitch smooth "
+      "--no-unfold-tubes builds them, instead of the controls stitch smooth "
+      "chooses where they fold");
   cmd->callback([args, cmd] {
     args->check = args->check || args->strict;
     run_edit(*args, *cmd);

@@ -91,7 +91,7 @@ void run_eval(const EvalArgs& a) {
   const HalfedgeMesh mesh = load_input(a.in);
   const std::vector<Query> queries = read_queries(a.at, mesh);
   const Method method = parse_method(a.method);
-  const Surface surface(mesh, method, surface_kgon_options(a.kgon, mesh, method, a.in.path));
+  const Surface surface = build_cli_surface(a.kgon, mesh, method, a.in.path).surface;
   // Full precision: {} and nlohmann both print the shortest text that reads back exactly.
   if (a.format == "csv") {
     fmt::print(

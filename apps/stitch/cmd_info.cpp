@@ -57,9 +57,8 @@ void run_info(const InfoArgs& a) {
   std::optional<PatchSet> set;
   if (a.patches) {
     const Method method = parse_method(a.method);
-    set = bezier_patches(
-        mesh, Surface(mesh, method, surface_kgon_options(a.kgon, mesh, method, a.in.path)),
-        a.patch_set);
+    set = bezier_patches(mesh, build_cli_surface(a.kgon, mesh, method, a.in.path).surface,
+                         a.patch_set);
   }
 
   if (a.json) {

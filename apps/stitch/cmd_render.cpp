@@ -82,8 +82,9 @@ void run_render(const RenderArgs& a) {
   }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
   const Method method = parse_method(a.method);
-  const KgonOptions kgons = surface_kgon_options(a.kgon, mesh, method, a.in.path, a.progress.quiet);
-  const Surface surface(mesh, method, kgons);
+  const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
+  const Surface& surface = built.surface;
+  const KgonOptions& kgons = built.kgons;
   SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
   stage.end();
   if (checker) {

@@ -1,18 +1,18 @@
-// stitch smooth IN -o OUT: the main job, from a mesh to its tessellated smooth surface.
+// stitch smooth IN -o OUT: the main job, from a mesh to its smooth surface, tessellated or exact,
+// in the format the output's extension names (the library's table of output formats).
 #include <fmt/format.h>
 
 #include <fstream>
 #include <memory>
 
 #include "commands.hpp"
-#include "exact_output.hpp"
 #include "options.hpp"
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/tess/adaptive.hpp"
-#include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
 
 namespace stitch::cli {
@@ -22,19 +22,15 @@ namespace {
 struct SmoothArgs {
   InputOptions in;
   std::string out;
-  std::string method = "mdc";
-  int resolution = 8;
-  /// --tolerance (ExactOutputOptions::tolerance) given for a mesh output: adaptive triangles.
-  bool adaptive = false;
-  bool unwelded = false;
-  bool ascii = false;
-  bool single_precision = false;
-  std::string uv;            ///< smooth, linear or none; empty: smooth when the input has UVs
+  std::string method{method_table().front().name};
+  std::string uv;  ///< a UV mode, or none; empty: the first mode when the input has UVs
+  std::string packing{face_packing_table().front().name};
+  std::string patches;       ///< --patches: Bézier JSON besides the main output
   double max_memory_gb = 0;  ///< 0: the memory the machine has available
   bool check = false;        ///< check the written surface for folds and self-intersections
+  OutputSpec spec;
   ProgressFlags progress;
   KgonCliOptions kgon;
-  ExactOutputOptions exact;
 };
 
 /// The machine's available memory in bytes (MemAvailable), or 0 when it cannot be told.
@@ -48,86 +44,96 @@ std::int64_t available_memory() {
   return 0;
 }
 
+void warn(const std::string& path, const std::string& what) {
+  fmt::print(stderr, "stitch: warning: {}: {}\n", path, what);
+}
+
 /// --check: the triangles as written, checked whole (as stitch check-surface would check the
-/// file); a warning, not a failure: the file is what was asked for. `at` names the tessellation.
-void warn_if_not_clean(StageReporter& stage, const std::string& out, const TriangleSoup& tris,
-                       const std::string& at) {
+/// file); a warning, not a failure: the file is what was asked for.
+void warn_if_not_clean(StageReporter& stage, const SmoothArgs& a, const HalfedgeMesh& mesh,
+                       const Surface& surface) {
   stage.begin("checking the surface");
+  const bool adaptive = a.spec.adaptive_tolerance > 0;
+  // The same tessellation as written (the streamed writer does not keep it).
+  const TriangleSoup tris =
+      adaptive ? triangulate(tessellate_adaptive(mesh, surface, {a.spec.adaptive_tolerance}))
+               : triangulate(tessellate(mesh, surface, {a.spec.resolution, true, false}));
   const SurfaceCheckReport r = check_surface(tris);
   stage.end();
   if (!r.clean())
-    fmt::print(stderr, "stitch: warning: {}: the surface is not clean at {}:\n{}\n", out, at,
-               r.describe(tris));
+    warn(a.out, fmt::format("the surface is not clean at {}:\n{}",
+                            adaptive ? fmt::format("tolerance {}", a.spec.adaptive_tolerance)
+                                     : fmt::format("resolution {}", a.spec.resolution),
+                            r.describe(tris)));
 }
 
 /// Refuses up front, with the estimate and the limit, a run that would not fit in memory.
-void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh) {
+void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh, const OutputFormat& format) {
   const std::int64_t limit =
       a.max_memory_gb > 0 ? static_cast<std::int64_t>(a.max_memory_gb * 1e9) : available_memory();
-  const std::int64_t need = smooth_memory_estimate(mesh, a.resolution, !a.unwelded, a.out);
+  const std::int64_t need = output_memory_estimate(mesh, format, a.spec);
   if (limit > 0 && need > limit)
     throw UsageError(fmt::format(
         "smoothing {} ({} corners) at resolution {}{} needs about {:.2f} GB of memory, more than "
         "the {:.2f} GB {}; {}",
-        a.in.path, static_cast<int>(mesh.patch_corners().size()), a.resolution,
-        a.unwelded ? " unwelded" : "", need / 1e9, limit / 1e9,
+        a.in.path, static_cast<int>(mesh.patch_corners().size()), a.spec.resolution,
+        a.spec.unwelded ? " unwelded" : "", need / 1e9, limit / 1e9,
         a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
-        a.unwelded || file_extension(a.out) == ".stl"
-            ? "write a welded .ply (streamed) or lower --resolution"
-            : "the mesh itself is too large for this machine"));
-}
-
-void warn(const std::string& path, const std::string& what) {
-  fmt::print(stderr, "stitch: warning: {}: {}\n", path, what);
+        format.memory == MemoryModel::streamed && !a.spec.unwelded
+            ? "the mesh itself is too large for this machine"
+            : fmt::format("write a welded {} (streamed) or lower --resolution",
+                          output_formats().front().extensions[0])));
 }
 
 /// The UVs to write, or null with a warning saying why the input's are not written.
 std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& mesh,
                                       const KgonOptions& kgons, const BuildReport& report,
-                                      StageReporter& stage) {
+                                      const OutputFormat& format, StageReporter& stage) {
   if (a.uv == "none") return nullptr;
   if (report.corner_uvs.empty()) {
     if (!a.uv.empty())
       warn(a.in.path, fmt::format("--uv {}: the input has no texture coordinates", a.uv));
     return nullptr;
   }
-  const char* lost = nullptr;
-  if (is_exact_output(a.out))
+  std::string lost;
+  if (format.kind == OutputKind::exact)
     lost = "the exact outputs have no place for texture coordinates";
-  else if (!a.unwelded && !surface_file_takes_uvs(a.out))
-    lost =
-        "a welded .ply, .off or .stl has no place for UVs that differ across a seam (write .obj, "
-        ".glb or .gltf, or --unwelded .ply)";
-  else if (a.adaptive)
+  else if (a.spec.adaptive_tolerance > 0)
     lost = "--tolerance writes no texture coordinates";
+  else if (!format.uvs && !(a.spec.unwelded && format.unwelded))
+    lost = fmt::format(
+        "a welded {} has no place for UVs that differ across a seam (write {}, or --unwelded {})",
+        format.extensions[0], output_extensions(OutputKind::tessellated), format.extensions[0]);
   else if (a.in.fill_holes && report.filled_holes > 0)
     lost = "the faces --fill-holes added have none";
-  if (lost) {
-    warn(a.out, fmt::format("the input's texture coordinates are not written: {}", lost));
+  if (!lost.empty()) {
+    warn(a.out, "the input's texture coordinates are not written: " + lost);
     return nullptr;
   }
   stage.begin("building the UV surface");
-  auto uvs = std::make_unique<UvSurface>(mesh, report.corner_uvs,
-                                         parse_uv_mode(a.uv.empty() ? "smooth" : a.uv), kgons);
+  auto uvs = std::make_unique<UvSurface>(
+      mesh, report.corner_uvs, a.uv.empty() ? uv_mode_table().front().value : parse_uv_mode(a.uv),
+      kgons);
   stage.end();
   for (const std::string& w : uvs->warnings()) warn(a.in.path, w);
   return uvs;
 }
 
-void run_smooth(const SmoothArgs& a) {
-  // Refuse a bad output name before any work, so nothing is computed for nothing.
-  const std::string ext = file_extension(a.out);
-  if (a.unwelded && ext != ".ply")
-    throw UsageError(
-        fmt::format("--unwelded writes PLY (per-sample attributes); '{}' is not .ply", a.out));
-  if (!a.unwelded && ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" &&
-      ext != ".glb" && ext != ".gltf" && !is_exact_output(a.out))
-    throw UsageError(fmt::format("cannot tell the output format of '{}': use {}", a.out,
-                                 smooth_output_extensions()));
-  check_exact_outputs(a.out, a.exact);
-  if (a.adaptive && (a.unwelded || ext == ".glb" || ext == ".gltf"))
-    throw UsageError(fmt::format("--tolerance writes .obj, .ply, .off or .stl, not '{}'{}", a.out,
-                                 a.unwelded ? " --unwelded" : ""));
+void run_smooth(SmoothArgs& a) {
+  // Refuse a bad output request before any work, so nothing is computed for nothing.
+  a.spec.packing = parse_choice(face_packing_table(), a.packing, "face packing");
+  check_output(a.out, a.spec);
+  const OutputFormat& format = output_format(a.out);
+  OutputSpec patches_spec = a.spec;
+  patches_spec.adaptive_tolerance = 0;
+  if (!a.patches.empty()) {
+    // The exact format written without OpenCASCADE: Bézier JSON.
+    const OutputFormat* f = find_output_format(a.patches);
+    if (!f || f->kind != OutputKind::exact || f->needs_cad)
+      throw UsageError(
+          fmt::format("--patches writes Bezier JSON; '{}' is not a Bezier JSON name", a.patches));
+    check_output(a.patches, patches_spec);
+  }
 
   StageReporter stage(a.progress);
   stage.begin("reading " + a.in.path);
@@ -135,71 +141,47 @@ void run_smooth(const SmoothArgs& a) {
   const HalfedgeMesh mesh =
       load_input(a.in, &report, [&stage](double done) { stage.fraction(done); });
   stage.end();
-  check_memory(a, mesh);
+  check_memory(a, mesh, format);
+  const Method method = parse_method(a.method);
   stage.begin(fmt::format("building the {} surface ({} patches)", a.method,
                           static_cast<int>(mesh.patch_corners().size())));
-  const Method method = parse_method(a.method);
-  const KgonOptions kgons = surface_kgon_options(a.kgon, mesh, method, a.in.path, a.progress.quiet);
-  const Surface surface(mesh, method, kgons);
+  const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
   stage.end();
-  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, kgons, report, stage);
-  if (const std::string exact = write_exact_outputs(a.out, mesh, surface, a.exact, stage);
-      !exact.empty()) {
-    fmt::print("wrote {} ({}, method {})\n", a.out, exact, a.method);
-    return;
-  }
-  if (a.adaptive) {
-    stage.begin(fmt::format("tessellating to tolerance {}", a.exact.tolerance));
-    const AdaptiveMesh adaptive = tessellate_adaptive(mesh, surface, {a.exact.tolerance});
+  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, built.kgons, report, format, stage);
+  a.spec.uvs = uvs.get();
+  a.spec.progress = [&stage](double done) { stage.fraction(done); };
+  a.spec.note = [&](const std::string& line) {
+    if (!a.progress.quiet) fmt::print(stderr, "stitch: {}\n", line);
+  };
+  if (!a.patches.empty()) {
+    stage.begin("writing " + a.patches);
+    patches_spec.note = a.spec.note;
+    write_surface(a.patches, mesh, built.surface, patches_spec);
     stage.end();
-    stage.begin("writing " + a.out);
-    SurfaceFileOptions file;
-    file.ascii_ply = a.ascii;
-    file.single_precision = a.single_precision;
-    write_adaptive_mesh(a.out, adaptive, file);
-    stage.end();
-    if (a.check)
-      warn_if_not_clean(stage, a.out, triangulate(adaptive),
-                        fmt::format("tolerance {}", a.exact.tolerance));
-    fmt::print(
-        "wrote {} ({} vertices, {} triangles, method {}, tolerance {}: {} to {} segments per "
-        "patch side)\n",
-        a.out, adaptive.num_vertices(), adaptive.triangles.size(), a.method, a.exact.tolerance,
-        adaptive.min_rate, adaptive.max_rate);
-    return;
   }
-  SurfaceFileCounts written;
-  if (a.unwelded) {
-    stage.begin(fmt::format("tessellating at resolution {}", a.resolution));
-    const TessellatedMesh samples = tessellate(mesh, surface, {a.resolution, false});
-    stage.end();
-    stage.begin("writing " + a.out);
-    write_surface_samples_ply(a.out, samples, uvs.get());
-    written = {samples.num_vertices(), static_cast<std::int64_t>(samples.quads.size()),
-               uvs ? samples.num_vertices() : 0};
-  } else {
-    // Evaluated block by block as it is written: the tessellation is never held whole.
-    stage.begin(fmt::format("tessellating at resolution {} and writing {}", a.resolution, a.out));
-    SurfaceFileOptions file;
-    file.ascii_ply = a.ascii;
-    file.single_precision = a.single_precision;
-    file.progress = [&stage](double done) { stage.fraction(done); };
-    file.uvs = uvs.get();
-    written = write_smooth_surface(a.out, mesh, surface, a.resolution, file);
-  }
+  stage.begin(
+      format.kind == OutputKind::exact ? "writing " + a.out
+      : a.spec.adaptive_tolerance > 0
+          ? fmt::format("tessellating to tolerance {} and writing {}", a.spec.adaptive_tolerance,
+                        a.out)
+          : fmt::format("tessellating at resolution {} and writing {}", a.spec.resolution, a.out));
+  const OutputReport written = write_surface(a.out, mesh, built.surface, a.spec);
   stage.end();
-  if (a.check) {
-    // The same tessellation as written (the streamed writer does not keep it).
-    warn_if_not_clean(stage, a.out,
-                      triangulate(tessellate(mesh, surface, {a.resolution, true, false})),
-                      fmt::format("resolution {}", a.resolution));
+  if (a.check && format.kind == OutputKind::tessellated)
+    warn_if_not_clean(stage, a, mesh, built.surface);
+  fmt::print("wrote {} ({})\n", a.out, written.summary);
+}
+
+/// --help's account of every output format and its memory model, from the table.
+std::string formats_help() {
+  std::string out = "Output formats, by extension (the memory each holds besides the mesh):\n";
+  for (const OutputFormat& f : output_formats()) {
+    std::string exts;
+    for (std::string_view e : f.extensions)
+      if (!e.empty()) exts += (exts.empty() ? "" : " ") + std::string(e);
+    out += fmt::format("  {:<16} {}: {}; {}\n", exts, f.name, f.help, describe(f.memory));
   }
-  fmt::print("wrote {} ({} vertices, {} quads, {} {}, method {}, resolution {}{})\n", a.out,
-             written.vertices, written.quads, static_cast<int>(mesh.patch_corners().size()),
-             a.method == "cc" ? "sub-patches" : "bicubic patches", a.method, a.resolution,
-             written.texcoords > 0 ? fmt::format(", {} texture coordinates ({} UVs)",
-                                                 written.texcoords, to_string(uvs->mode()))
-                                   : std::string());
+  return out;
 }
 
 }  // namespace
@@ -207,28 +189,36 @@ void run_smooth(const SmoothArgs& a) {
 void add_smooth_command(CLI::App& app) {
   auto args = std::make_shared<SmoothArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "smooth", "Turn a closed mesh into its smooth surface, tessellated as a polygon mesh");
+      "smooth",
+      "Turn a mesh (closed or with boundaries) into its smooth surface: a tessellated polygon "
+      "mesh, or the exact patches as Bezier JSON, STEP or IGES");
+  cmd->footer(formats_help());
   add_input_options(cmd, args->in);
-  cmd->add_option("-o,--output", args->out,
-                  "output mesh: .obj, .ply (binary; the fastest and smallest, best for large "
-                  "meshes), .off, .stl, .glb or .gltf (+ .bin); or the exact patches: .json "
-                  "(Bezier JSON), .step/.stp or .igs/.iges (B-spline faces)")
+  cmd->add_option(
+         "-o,--output", args->out,
+         fmt::format("output file; its extension names the format: {}", output_extensions()))
       ->required();
   add_method_option(cmd, args->method, false, &args->in);
-  CLI::Option* resolution =
-      cmd->add_option("--resolution", args->resolution, "segments per patch side")
-          ->check(CLI::Range(1, limits::max_resolution))
-          ->capture_default_str();
-  cmd->add_flag("--unwelded", args->unwelded,
-                "write every patch's own grid as binary PLY with double x y z nx ny nz u v and "
-                "int patch, to check continuity from the file alone");
-  cmd->add_option("--uv", args->uv,
-                  "the input's texture coordinates on the surface: smooth (the default when the "
-                  "input has them: the UV layout smoothed like the mesh, seams kept), linear "
-                  "(bilinear per patch) or none. Written to .obj, .glb/.gltf and --unwelded .ply")
-      ->check(CLI::IsMember({"smooth", "linear", "none"}));
-  cmd->add_flag("--ascii", args->ascii, "write .ply as text instead of binary");
-  cmd->add_flag("--float", args->single_precision,
+  CLI::Option* resolution = cmd->add_option("--resolution", args->spec.resolution,
+                                            "mesh outputs: segments per patch side")
+                                ->check(CLI::Range(1, limits::max_resolution))
+                                ->capture_default_str();
+  cmd->add_flag("--unwelded", args->spec.unwelded,
+                "every patch's own grid, with double x y z nx ny nz u v and int patch, to check "
+                "continuity from the file alone");
+  cmd->add_option(
+         "--uv", args->uv,
+         "the input's texture coordinates on the surface: " + choice_help(uv_mode_table()) +
+             "; none. The first is the default when the input has them; written where "
+             "the format has a place for them")
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names;
+        for (const Choice<UvMode>& c : uv_mode_table()) names.emplace_back(c.name);
+        names.emplace_back("none");
+        return names;
+      }()));
+  cmd->add_flag("--ascii", args->spec.ascii, "write .ply as text instead of binary");
+  cmd->add_flag("--float", args->spec.single_precision,
                 "write .ply positions and normals as 32-bit floats (half the size; the default "
                 "doubles read back exactly)");
   cmd->add_option("--max-memory", args->max_memory_gb,
@@ -237,22 +227,45 @@ void add_smooth_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_flag(
       "--check", args->check,
-      "after writing, check the surface at the written resolution or tolerance for folded, "
-      "self-intersecting and degenerate triangles (as stitch check-surface does) and "
+      "after writing a mesh, check the surface at the written resolution or tolerance for "
+      "folded, self-intersecting and degenerate triangles (as stitch check-surface does) and "
       "warn on stderr; the exit status stays 0");
   add_kgon_options(cmd, args->kgon, &args->in);
-  add_exact_output_options(cmd, args->exact);
-  add_progress_option(cmd, args->progress);
   // One --tolerance, relative to the model size, for both kinds of output: for a mesh output it
   // asks for adaptive triangles instead of a fixed resolution.
-  CLI::Option* tolerance = cmd->get_option("--tolerance");
-  tolerance->description(tolerance->get_description() +
-                         "; for .obj/.ply/.off/.stl: adaptive triangles instead of --resolution, "
-                         "segments per patch side from the control nets' flatness (try 1e-3)");
+  CLI::Option* tolerance = cmd->add_option(
+      "--tolerance", args->spec.patches.tolerance,
+      fmt::format("exact outputs: largest distance of the innermost cells at extraordinary points "
+                  "from the exact surface, relative to the model size (> 0, default {:g}); mesh "
+                  "outputs: adaptive triangles instead of --resolution, segments per patch side "
+                  "from the control nets' flatness (try 1e-3)",
+                  PatchSetOptions{}.tolerance));
+  cmd->add_option("--angle-tolerance", args->spec.patches.angle_tolerance_deg,
+                  fmt::format("exact outputs: largest normal deviation of those cells, degrees "
+                              "(> 0, default {:g})",
+                              PatchSetOptions{}.angle_tolerance_deg));
+  cmd->add_option("--faces", args->packing, "STEP and IGES: " + choice_help(face_packing_table()))
+      ->check(choice_validator(face_packing_table()))
+      ->capture_default_str();
+  cmd->add_option(
+         "--units", args->spec.units,
+         "STEP and IGES: the length unit declared (coordinates are not scaled): " + output_units())
+      ->capture_default_str();
+  cmd->add_flag("--kgons", args->spec.kgons, "Bezier JSON: add every K-gon");
+  cmd->add_option("--patches", args->patches,
+                  "also write the Bezier patches as JSON (docs/formats.md) to this file");
+  add_progress_option(cmd, args->progress);
   cmd->callback([args, resolution, tolerance] {
-    args->adaptive = tolerance->count() > 0 && !is_exact_output(args->out);
-    if (args->adaptive && resolution->count() > 0)
-      throw UsageError("--tolerance and --resolution exclude each other for a mesh output");
+    const OutputFormat& format = output_format(args->out);
+    if (tolerance->count() > 0 && format.kind == OutputKind::tessellated) {
+      if (resolution->count() > 0)
+        throw UsageError("--tolerance and --resolution exclude each other for a mesh output");
+      if (!format.adaptive)
+        throw UsageError(fmt::format(
+            "--tolerance asks a mesh output for adaptive triangles, which {} does not take",
+            format.name));
+      args->spec.adaptive_tolerance = args->spec.patches.tolerance;
+    }
     run_smooth(*args);
   });
 }

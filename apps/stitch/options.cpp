@@ -105,21 +105,17 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                   "a JSON file of per-element K-gon controls (face, vertex or edge: scale, "
                   "rotate, offset, stretch, regularize; docs/modeler.md); they replace those of a "
                   ".stitch input for the same elements");
-  cmd->add_option("--kgon-construction", k.construction,
-                  "openings: faces made by inserting an edge between two faces get a K-gon on "
-                  "the wall of the tube between their openings (docs/method.md); doo-sabin: "
-                  "section 2 of the method as it stands for every face")
-      ->check(CLI::IsMember({"openings", "doo-sabin"}))
+  cmd->add_option("--kgon-construction", k.construction, choice_help(kgon_construction_table()))
+      ->check(choice_validator(kgon_construction_table()))
       ->capture_default_str();
-  cmd->add_flag("!--no-unfold-tubes", k.unfold_tubes,
-                "keep the fitted K-gons of every tube made by inserting an edge between two "
-                "faces; by default, where that surface folds, the face's and the bridge's K-gon "
-                "controls are chosen by a search that checks the surface (docs/method.md)");
-  cmd->add_option("--boundary", k.boundary,
-                  "edge-and-corner: boundary vertices with one face are corners the surface "
-                  "passes through (OpenSubdiv's default); edge-only: they lie on the smooth "
-                  "boundary curve")
-      ->check(CLI::IsMember({"edge-and-corner", "edge-only"}))
+  cmd->add_flag_callback(
+      "--no-unfold-tubes", [&k] { k.unfold_tubes = false; },
+      "keep the fitted K-gons of every tube made by inserting an edge between "
+      "two faces; by default, where that surface folds, the face's and the "
+      "bridge's K-gon controls are chosen by a search that checks the surface "
+      "(docs/method.md)");
+  cmd->add_option("--boundary", k.boundary, choice_help(boundary_table()))
+      ->check(choice_validator(boundary_table()))
       ->capture_default_str();
   cmd->add_option("--sharp-from", k.sharp_from,
                   "crease and corner tags of at least this sharpness are infinitely sharp for mdc "
@@ -139,22 +135,21 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
   if (use_flag(k.scale_option)) o.global.scale = k.scale;
   if (use_flag(k.rotate_option)) o.global.rotate_deg = k.rotate_deg;
   if (use_flag(k.regularize_option)) o.global.regularize = k.regularize;
-  o.construction =
-      k.construction == "doo-sabin" ? KgonConstruction::doo_sabin : KgonConstruction::openings;
+  o.construction = parse_choice(kgon_construction_table(), k.construction, "K-gon construction");
   o.sharp_from = k.sharp_from;
-  o.boundary = k.boundary == "edge-only" ? BoundaryInterpolation::edge_only
-                                         : BoundaryInterpolation::edge_and_corner;
+  o.boundary = parse_choice(boundary_table(), k.boundary, "boundary rule");
   return o;
 }
 
-KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
-                                 const std::string& where, bool quiet) {
-  KgonOptions o = to_kgon_options(k);
-  if (!k.unfold_tubes) return o;
-  UnfoldTubesOptions unfold;
-  unfold.method = method;
-  report_unfolded_tubes(unfold_tubes(mesh, o, unfold), mesh, where, quiet);
-  return o;
+SurfaceSpec surface_spec(const KgonCliOptions& k, Method method) {
+  return {method, to_kgon_options(k), k.unfold_tubes};
+}
+
+BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
+                               const std::string& where, bool quiet) {
+  BuiltSurface built = build_surface(mesh, surface_spec(k, method));
+  report_unfolded_tubes(built.tubes, mesh, where, quiet);
+  return built;
 }
 
 void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
@@ -170,16 +165,14 @@ void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const Halfed
 }
 
 void add_method_option(CLI::App* cmd, std::string& method, bool allow_all, InputOptions* in) {
-  CLI::Option* opt = cmd->add_option(
-      "--method", method,
-      std::string("mdc: modified de Casteljau (the paper's), asc: AS&C baseline (the same "
-                  "patches as plain polynomials), cc: Catmull-Clark through OpenSubdiv") +
-          (allow_all ? ", all: every method" : "") +
-          "; a .stitch input's own method replaces the default");
-  if (allow_all)
-    opt->check(CLI::IsMember({"mdc", "asc", "cc", "all"}));
-  else
-    opt->check(CLI::IsMember({"mdc", "asc", "cc"}));
+  CLI::Option* opt =
+      cmd->add_option("--method", method,
+                      choice_help(method_table()) + (allow_all ? "; all: every method" : "") +
+                          "; a .stitch input's own method replaces the default");
+  std::vector<std::string> names;
+  for (const Choice<Method>& c : method_table()) names.emplace_back(c.name);
+  if (allow_all) names.emplace_back("all");
+  opt->check(CLI::IsMember(names));
   opt->capture_default_str();
   if (in) {
     in->method = &method;

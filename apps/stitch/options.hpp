@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/kgon/kgon.hpp"
@@ -42,8 +43,8 @@ struct KgonCliOptions {
   double scale = 1.0;
   double rotate_deg = 0.0;
   bool regularize = false;
-  std::string construction = "openings";
-  std::string boundary = "edge-and-corner";
+  std::string construction{kgon_construction_table().front().name};
+  std::string boundary{boundary_table().front().name};
   double sharp_from = KgonOptions{}.sharp_from;
   std::string controls_path;  ///< --kgon-controls
   bool unfold_tubes = true;   ///< --no-unfold-tubes turns it off
@@ -59,13 +60,14 @@ struct KgonCliOptions {
 /// With `in`, a .stitch input's K-gon controls reach `k` through load_input.
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in = nullptr);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
-/// The K-gon options a surface of `mesh` is built with: to_kgon_options and, unless
-/// --no-unfold-tubes was given or the method is cc (which has no K-gons), controls for the tubes
-/// whose fitted placement folds (unfold_tubes.hpp). Each such tube is reported on stderr against
+/// The request the options make: the method, to_kgon_options, and unless --no-unfold-tubes the
+/// tube policy.
+SurfaceSpec surface_spec(const KgonCliOptions& k, Method method);
+/// build_surface of that request, each tube unfold_tubes found reported on stderr against
 /// `where` (the input): what was chosen as a note (not under `quiet`), a tube that still folds
 /// as a warning.
-KgonOptions surface_kgon_options(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
-                                 const std::string& where, bool quiet = false);
+BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
+                               const std::string& where, bool quiet = false);
 /// Reports unfold_tubes' results for `mesh` on stderr, as surface_kgon_options does.
 void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
                            const std::string& where, bool quiet);
@@ -73,6 +75,13 @@ void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const Halfed
 /// A CLI11 check for a finite number from lo to hi (CLI::Range and CLI::PositiveNumber let NaN
 /// through, and a number too large to use would turn the output into NaN).
 CLI::Validator finite_range(double lo, double hi);
+/// A CLI11 check that the value is a name of the table.
+template <class T>
+CLI::Validator choice_validator(ChoiceTable<T> table) {
+  std::vector<std::string> names;
+  for (const Choice<T>& c : table) names.emplace_back(c.name);
+  return CLI::IsMember(names);
+}
 /// --zoom of render and compare, in patch sizes.
 inline constexpr double kMinZoom = 1e-3, kMaxZoom = 1e3;
 

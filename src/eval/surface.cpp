@@ -7,23 +7,21 @@
 
 namespace stitch {
 
+ChoiceTable<Method> method_table() {
+  static constexpr Choice<Method> kMethods[] = {
+      {"mdc", Method::mdc, "modified de Casteljau (the paper's)"},
+      {"asc", Method::asc, "AS&C baseline (the same patches as plain polynomials)"},
+      {"cc", Method::cc, "Catmull-Clark limit surface through OpenSubdiv"},
+  };
+  return kMethods;
+}
+
 std::string to_string(Method m) {
-  switch (m) {
-    case Method::mdc:
-      return "mdc";
-    case Method::asc:
-      return "asc";
-    case Method::cc:
-      return "cc";
-  }
-  return "?";
+  return std::string(choice_name(method_table(), m));
 }
 
 Method parse_method(const std::string& s) {
-  if (s == "mdc") return Method::mdc;
-  if (s == "asc") return Method::asc;
-  if (s == "cc") return Method::cc;
-  throw UsageError("unknown method '" + s + "' (expected mdc, asc or cc)");
+  return parse_choice(method_table(), s, "method");
 }
 
 Surface::Surface(const HalfedgeMesh& mesh, Method method, const KgonOptions& kgon_options)

@@ -11,14 +11,20 @@
 
 namespace stitch {
 
+ChoiceTable<UvMode> uv_mode_table() {
+  static constexpr Choice<UvMode> kModes[] = {
+      {"smooth", UvMode::smooth, "the UV layout smoothed like the mesh, seams kept"},
+      {"linear", UvMode::linear, "bilinear per patch"},
+  };
+  return kModes;
+}
+
 std::string to_string(UvMode mode) {
-  return mode == UvMode::smooth ? "smooth" : "linear";
+  return std::string(choice_name(uv_mode_table(), mode));
 }
 
 UvMode parse_uv_mode(const std::string& text) {
-  if (text == "smooth") return UvMode::smooth;
-  if (text == "linear") return UvMode::linear;
-  throw UsageError(fmt::format("unknown UV mode '{}' (smooth or linear)", text));
+  return parse_choice(uv_mode_table(), text, "UV mode");
 }
 
 /// The UV layout as a mesh of its own and its surface; the mesh is kept because the surface is

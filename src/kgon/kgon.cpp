@@ -17,6 +17,28 @@
 
 namespace stitch {
 
+ChoiceTable<KgonConstruction> kgon_construction_table() {
+  static constexpr Choice<KgonConstruction> kConstructions[] = {
+      {"openings", KgonConstruction::openings,
+       "faces made by inserting an edge between two faces get a K-gon on the wall of the tube "
+       "between their openings (docs/method.md)"},
+      {"doo-sabin", KgonConstruction::doo_sabin,
+       "section 2 of the method as it stands for every face"},
+  };
+  return kConstructions;
+}
+
+ChoiceTable<BoundaryInterpolation> boundary_table() {
+  static constexpr Choice<BoundaryInterpolation> kRules[] = {
+      {"edge-and-corner", BoundaryInterpolation::edge_and_corner,
+       "boundary vertices with one face are corners the surface passes through (OpenSubdiv's "
+       "default)"},
+      {"edge-only", BoundaryInterpolation::edge_only,
+       "boundary vertices with one face lie on the smooth boundary curve"},
+  };
+  return kRules;
+}
+
 std::vector<double> doo_sabin_weights(int n) {
   std::vector<double> a(n);
   a[0] = 0.25 + 5.0 / (4.0 * n);

@@ -20,9 +20,6 @@ namespace stitch {
 
 namespace {
 
-constexpr std::array<const char*, 6> kModeNames{"shaded", "zebra",   "isophote",
-                                                "levels", "patches", "checker"};
-
 struct SurfaceVertex {
   float position[3];
   float normal[3];
@@ -154,16 +151,26 @@ void set_uniform(GLuint program, const char* name, float v) {
 
 }  // namespace
 
+ChoiceTable<ShadingMode> shading_mode_table() {
+  static constexpr Choice<ShadingMode> kModes[] = {
+      {"shaded", ShadingMode::shaded, "Blinn-Phong from the exact normals"},
+      {"zebra", ShadingMode::zebra,
+       "reflection lines of parallel stripes: kinks show breaks in G1"},
+      {"isophote", ShadingMode::isophote, "bands of constant angle between normal and light"},
+      {"levels", ShadingMode::levels, "colour by the hierarchy level a sample came from"},
+      {"patches", ShadingMode::patches, "colour by patch"},
+      {"checker", ShadingMode::checker,
+       "shaded, on a checkerboard over the texture coordinates' unit square"},
+  };
+  return kModes;
+}
+
 ShadingMode parse_shading_mode(const std::string& name) {
-  for (size_t i = 0; i < kModeNames.size(); ++i) {
-    if (name == kModeNames[i]) return static_cast<ShadingMode>(i);
-  }
-  throw UsageError("unknown mode '" + name +
-                   "' (expected shaded, zebra, isophote, levels, patches or checker)");
+  return parse_choice(shading_mode_table(), name, "mode");
 }
 
 std::string to_string(ShadingMode mode) {
-  return kModeNames[static_cast<size_t>(mode)];
+  return std::string(choice_name(shading_mode_table(), mode));
 }
 
 std::vector<PatchRange> patch_vertex_ranges(const TessellatedMesh& surface) {

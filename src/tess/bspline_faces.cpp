@@ -219,6 +219,16 @@ std::vector<BsplineFace> layout(const HalfedgeMesh& mesh, const Surface& surface
 }
 }  // namespace
 
+ChoiceTable<FacePacking> face_packing_table() {
+  static constexpr Choice<FacePacking> kPackings[] = {
+      {"quads", FacePacking::quads,
+       "one face per quad of the mesh (its four corner patches), one per corner of any other "
+       "face"},
+      {"corners", FacePacking::corners, "one face per corner patch"},
+  };
+  return kPackings;
+}
+
 RootPoint root_point(const BsplineFace& face, double s, double t) {
   size_t q = 0;
   if (face.quadrants.size() == 4) q = s < 0.5 ? (t < 0.5 ? 0 : 3) : (t < 0.5 ? 1 : 2);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "stitch/choices.hpp"
 #include "stitch/eval/bezier_surface.hpp"
 #include "stitch/eval/catmull_clark.hpp"
 
@@ -16,8 +17,10 @@ enum class Method {
   cc,   ///< Catmull-Clark limit surface through OpenSubdiv
 };
 
+/// The methods by name (mdc first: the default), for every front end's options and menus.
+ChoiceTable<Method> method_table();
 std::string to_string(Method m);
-/// Parses "mdc", "asc" or "cc"; throws UsageError otherwise.
+/// Parses a name of method_table(); throws UsageError naming the known ones otherwise.
 Method parse_method(const std::string& s);
 
 /// Patches are indexed by corner for every method; evaluate(c, u, v) uses the conventions of

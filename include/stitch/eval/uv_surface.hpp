@@ -26,8 +26,10 @@ enum class UvMode {
   linear,
 };
 
+/// The UV modes by name (smooth first: the default).
+ChoiceTable<UvMode> uv_mode_table();
 std::string to_string(UvMode mode);
-/// Parses "smooth" or "linear"; throws UsageError otherwise.
+/// Parses a name of uv_mode_table(); throws UsageError naming the known ones otherwise.
 UvMode parse_uv_mode(const std::string& text);
 
 class UvSurface {

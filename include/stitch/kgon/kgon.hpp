@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "stitch/choices.hpp"
 #include "stitch/kgon/kgon_control.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
@@ -28,6 +29,11 @@ enum class KgonConstruction {
   /// Faces where that placement does not apply keep section 2's K-gon.
   openings,
 };
+
+/// The constructions by name (openings first: the default).
+ChoiceTable<KgonConstruction> kgon_construction_table();
+/// The boundary rules by name (edge-and-corner first: the default).
+ChoiceTable<BoundaryInterpolation> boundary_table();
 
 struct KgonOptions {
   KgonConstruction construction = KgonConstruction::openings;

@@ -17,6 +17,8 @@ enum class FacePacking {
   quads,    ///< the corner patches of each quad of the mesh in one face; K != 4: K faces
   corners,  ///< one face per corner patch
 };
+/// The packings by name (quads first: the default).
+ChoiceTable<FacePacking> face_packing_table();
 
 /// Where a root patch lies in its face: the face's (s, t) of the root's (u, v) is the quadrant's
 /// rotation of (u, v) * size + origin (size 1 and rotation 0 for a face of one corner patch).

@@ -6,8 +6,12 @@
 
 namespace stitch {
 
+/// Segments per patch side when nobody asks for another number: smooth silhouettes at screen
+/// size, 64 samples per patch.
+inline constexpr int kDefaultResolution = 8;
+
 struct TessellationOptions {
-  int resolution = 8;  ///< segments per patch side, >= 1
+  int resolution = kDefaultResolution;  ///< segments per patch side, >= 1
   bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
   /// Fill TessellatedMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
   bool sample_attributes = true;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "stitch/choices.hpp"
 #include "stitch/render/camera.hpp"
 #include "stitch/render/overlays.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
@@ -33,8 +34,10 @@ enum class ShadingMode {
   checker,
 };
 
-/// Parses "shaded", "zebra", "isophote", "levels", "patches", "checker"; throws
-/// UsageError.
+/// The shading modes by name (shaded first: the default), for `render --mode`, the modeler's
+/// menu and its `mode` line.
+ChoiceTable<ShadingMode> shading_mode_table();
+/// Parses a name of shading_mode_table(); throws UsageError naming the known ones.
 ShadingMode parse_shading_mode(const std::string& name);
 std::string to_string(ShadingMode mode);
 

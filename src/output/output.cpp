@@ -1,0 +1,394 @@
+// stitch's headers before OCCT's (OCCT defines a macro Handle, see cad.hpp)
+// clang-format off
+#include "stitch/output/output.hpp"
+
+#include "stitch/error.hpp"
+#include "stitch/mesh/io.hpp"
+#include "stitch/tess/adaptive.hpp"
+#include "stitch/tess/bezier_json.hpp"
+#include "stitch/tess/export.hpp"
+#if STITCH_WITH_CAD
+#include "stitch/cad/cad.hpp"
+#endif
+// clang-format on
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace stitch {
+
+namespace {
+
+/// What every tessellated file reports: its counts, the patches, the method and the sampling.
+std::string mesh_summary(const HalfedgeMesh& mesh, const Surface& surface, const OutputSpec& spec,
+                         std::int64_t vertices, std::int64_t quads, std::int64_t texcoords) {
+  return fmt::format("{} vertices, {} quads, {} {}, method {}, resolution {}{}", vertices, quads,
+                     static_cast<int>(mesh.patch_corners().size()),
+                     surface.method() == Method::cc ? "sub-patches" : "bicubic patches",
+                     to_string(surface.method()), spec.resolution,
+                     texcoords > 0 ? fmt::format(", {} texture coordinates ({} UVs)", texcoords,
+                                                 to_string(spec.uvs->mode()))
+                                   : std::string());
+}
+
+SurfaceFileOptions file_options(const OutputSpec& spec, const OutputFormat& format) {
+  SurfaceFileOptions file;
+  file.ascii_ply = spec.ascii;
+  file.single_precision = spec.single_precision;
+  file.progress = spec.progress;
+  file.uvs = format.uvs ? spec.uvs : nullptr;
+  return file;
+}
+
+/// The tessellated formats: uniform and streamed (welded), per patch (unwelded), or adaptive.
+OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                        const OutputSpec& spec, const OutputFormat& format) {
+  OutputReport r;
+  if (spec.adaptive_tolerance > 0) {
+    const AdaptiveMesh adaptive = tessellate_adaptive(mesh, surface, {spec.adaptive_tolerance});
+    write_adaptive_mesh(path, adaptive, file_options(spec, format));
+    r.vertices = adaptive.num_vertices();
+    r.faces = static_cast<std::int64_t>(adaptive.triangles.size());
+    r.summary = fmt::format(
+        "{} vertices, {} triangles, method {}, tolerance {}: {} to {} segments per patch side",
+        r.vertices, r.faces, to_string(surface.method()), spec.adaptive_tolerance,
+        adaptive.min_rate, adaptive.max_rate);
+    return r;
+  }
+  if (spec.unwelded) {
+    const TessellatedMesh samples = tessellate(mesh, surface, {spec.resolution, false});
+    write_surface_samples_ply(path, samples, spec.uvs);
+    r.vertices = samples.num_vertices();
+    r.faces = static_cast<std::int64_t>(samples.quads.size());
+    r.texcoords = spec.uvs ? r.vertices : 0;
+  } else {
+    const SurfaceFileCounts c =
+        write_smooth_surface(path, mesh, surface, spec.resolution, file_options(spec, format));
+    r.vertices = c.vertices;
+    r.faces = c.quads;
+    r.texcoords = c.texcoords;
+  }
+  r.summary = mesh_summary(mesh, surface, spec, r.vertices, r.faces, r.texcoords);
+  return r;
+}
+
+/// The patch set for an exact format, with its depth and deviations told as notes.
+PatchSet patch_set(const HalfedgeMesh& mesh, const Surface& surface, const OutputSpec& spec) {
+  PatchSet set = bezier_patches(mesh, surface, spec.patches);
+  if (!spec.note) return set;
+  spec.note(fmt::format(
+      "{} Bezier patches ({} exact, {} innermost cells at extraordinary points), depth {}",
+      set.patches.size(), set.num_exact(), set.patches.size() - set.num_exact(), set.depth));
+  spec.note(fmt::format(
+      "largest deviation from exact evaluation: {:.3g} ({:.3g} of the model size {:.6g}; asked "
+      "{:.3g}), normal {:.3g} degrees (asked {:.3g})",
+      set.max_position_deviation,
+      set.model_size > 0 ? set.max_position_deviation / set.model_size : 0.0, set.model_size,
+      set.tolerance, set.max_normal_deviation_deg, set.angle_tolerance_deg));
+  if (!set.points_without_normal.empty()) {
+    constexpr size_t kNamed = 8;
+    std::string where;
+    for (size_t i = 0; i < set.points_without_normal.size() && i < kNamed; ++i)
+      where += fmt::format("{}{} ({:.3g} degrees)", i ? ", " : "",
+                           describe(mesh, set.points_without_normal[i]),
+                           set.points_without_normal[i].angle_deg);
+    if (set.points_without_normal.size() > kNamed)
+      where += fmt::format(", ... ({} more)", set.points_without_normal.size() - kNamed);
+    spec.note(fmt::format(
+        "the angle tolerance is not applied at {} point(s) where the surface has no tangent "
+        "plane (cone points of creases and corners, valence-2 vertices, folds): {}",
+        set.points_without_normal.size(), where));
+  }
+  return set;
+}
+
+OutputReport write_bezier(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                          const OutputSpec& spec, const OutputFormat&) {
+  const PatchSet set = patch_set(mesh, surface, spec);
+  write_bezier_json(path, set, spec.kgons ? &surface.bezier().kgons : nullptr);
+  OutputReport r;
+  r.faces = static_cast<std::int64_t>(set.patches.size());
+  r.summary = fmt::format("{} Bezier patches, depth {}, method {}", set.patches.size(), set.depth,
+                          to_string(surface.method()));
+  return r;
+}
+
+OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
+                            const Surface& surface, const OutputSpec& spec,
+                            const OutputFormat& format) {
+#if STITCH_WITH_CAD
+  const PatchSet set = patch_set(mesh, surface, spec);
+  const cad::CadEstimate e =
+      cad::estimate_cad(mesh, surface, set, spec.packing, *cad::cad_format(path));
+  if (spec.note)
+    spec.note(fmt::format("writing {} {} ({} B-spline faces, about {} poles and {:.1f} MB)", path,
+                          format.name, e.faces, e.poles, e.bytes / 1e6));
+  cad::quiet_opencascade();
+  cad::CadOptions options;
+  options.units = spec.units;
+  options.packing = spec.packing;
+  options.angle_tolerance_deg = spec.patches.angle_tolerance_deg;
+  options.progress = spec.progress;
+  const cad::CadReport c = cad::write_cad(path, mesh, surface, set, options);
+  OutputReport r;
+  r.faces = c.faces;
+  r.summary = fmt::format(
+      "{} B-spline faces ({}), {} poles, knots {} removed/{} C2/{} C1/{} C0, {} shell(s), {} "
+      "solid(s){}, {} free edges, {} smooth edges ({} G1, largest angle {:.3g} degrees), {} "
+      "sharp edges, units {}, method {}",
+      c.faces, choice_name(face_packing_table(), spec.packing), c.poles, c.knots[0], c.knots[1],
+      c.knots[2], c.knots[3], c.shells, c.solids,
+      c.volume > 0 ? fmt::format(", volume {:.9g}", c.volume) : std::string(), c.free_edges,
+      c.smooth_edges, c.g1_edges, c.max_smooth_angle_deg, c.sharp_edges, spec.units,
+      to_string(surface.method()));
+  return r;
+#else
+  (void)mesh, (void)surface, (void)spec, (void)format;
+  throw OutputError(fmt::format(
+      "cannot write '{}': this stitch was built without OpenCASCADE (STITCH_BUILD_CAD=OFF)", path));
+#endif
+}
+
+bool ends_with(std::string_view text, std::string_view end) {
+  if (end.size() > text.size()) return false;
+  return std::equal(end.rbegin(), end.rend(), text.rbegin(), [](char a, char b) {
+    return a == static_cast<char>(std::tolower(static_cast<unsigned char>(b)));
+  });
+}
+
+}  // namespace
+
+std::span<const OutputFormat> output_formats() {
+  using K = OutputKind;
+  using M = MemoryModel;
+  static const OutputFormat kFormats[] = {
+      {"binary PLY",
+       {".ply", ""},
+       K::tessellated,
+       true,
+       false,
+       true,
+       true,
+       false,
+       M::streamed,
+       "double x y z nx ny nz (or text, or floats); the fastest and smallest; unwelded: every "
+       "patch's own grid with its (u, v), patch and texture coordinates",
+       write_mesh},
+      {"Wavefront OBJ",
+       {".obj", ""},
+       K::tessellated,
+       true,
+       true,
+       false,
+       true,
+       false,
+       M::streamed,
+       "positions, normals and texture coordinates (seams kept)",
+       write_mesh},
+      {"OFF",
+       {".off", ""},
+       K::tessellated,
+       false,
+       false,
+       false,
+       true,
+       false,
+       M::streamed,
+       "positions and faces only",
+       write_mesh},
+      {"binary STL",
+       {".stl", ""},
+       K::tessellated,
+       false,
+       false,
+       false,
+       true,
+       false,
+       M::positions,
+       "triangles with facet normals",
+       write_mesh},
+      {"glTF 2.0 binary",
+       {".glb", ""},
+       K::tessellated,
+       true,
+       true,
+       false,
+       false,
+       false,
+       M::whole,
+       "positions, normals, TEXCOORD_0 (vertices split at seams)",
+       write_mesh},
+      {"glTF 2.0",
+       {".gltf", ""},
+       K::tessellated,
+       true,
+       true,
+       false,
+       false,
+       false,
+       M::whole,
+       "as .glb, with the buffer in a .bin beside it",
+       write_mesh},
+      {"Bezier JSON",
+       {".bez.json", ".json"},
+       K::exact,
+       false,
+       false,
+       false,
+       false,
+       false,
+       M::patch_set,
+       "the patches of the hierarchy as data (docs/formats.md)",
+       write_bezier},
+      {"STEP AP214",
+       {".step", ".stp"},
+       K::exact,
+       false,
+       false,
+       false,
+       false,
+       true,
+       M::cad_model,
+       "B-spline faces named after their control faces, sewn into shells and solids",
+       write_cad_file},
+      {"IGES 5.3",
+       {".igs", ".iges"},
+       K::exact,
+       false,
+       false,
+       false,
+       false,
+       true,
+       M::cad_model,
+       "B-spline faces named after their control faces, sewn into shells and solids",
+       write_cad_file},
+  };
+  return kFormats;
+}
+
+const OutputFormat* find_output_format(std::string_view path,
+                                       std::span<const OutputFormat> formats) {
+  // The longest extension that matches, so that x.bez.json is Bézier JSON, not plain .json.
+  const OutputFormat* best = nullptr;
+  size_t best_length = 0;
+  for (const OutputFormat& f : formats)
+    for (std::string_view ext : f.extensions)
+      if (!ext.empty() && ext.size() > best_length && ends_with(path, ext)) {
+        best = &f;
+        best_length = ext.size();
+      }
+  return best;
+}
+
+const OutputFormat& output_format(const std::string& path, std::span<const OutputFormat> formats) {
+  if (const OutputFormat* f = find_output_format(path, formats)) return *f;
+  throw UsageError(fmt::format("cannot tell the output format of '{}': use {}", path,
+                               output_extensions(std::nullopt, formats)));
+}
+
+std::string output_extensions(std::optional<OutputKind> kind,
+                              std::span<const OutputFormat> formats) {
+  std::string out;
+  for (const OutputFormat& f : formats) {
+    if (kind && f.kind != *kind) continue;
+    for (std::string_view ext : f.extensions)
+      if (!ext.empty()) out += (out.empty() ? "" : ", ") + std::string(ext);
+  }
+  return out;
+}
+
+std::string output_units() {
+#if STITCH_WITH_CAD
+  return cad::kCadUnits;
+#else
+  return "";
+#endif
+}
+
+std::string_view describe(MemoryModel memory) {
+  switch (memory) {
+    case MemoryModel::streamed:
+      return "written block by block as it is evaluated: memory does not grow with the resolution";
+    case MemoryModel::positions:
+      return "holds every position of the tessellation (the format repeats them per triangle)";
+    case MemoryModel::whole:
+      return "holds the whole tessellation and the file's buffer";
+    case MemoryModel::patch_set:
+      return "holds the patches of the hierarchy";
+    case MemoryModel::cad_model:
+      return "holds the patches and OpenCASCADE's model of the file";
+  }
+  return "";
+}
+
+void check_output(const std::string& path, const OutputSpec& spec,
+                  std::span<const OutputFormat> formats) {
+  const OutputFormat& format = output_format(path, formats);
+  const auto takers = [&](bool OutputFormat::*trait) {
+    std::string out;
+    for (const OutputFormat& f : formats)
+      if (f.*trait)
+        out += fmt::format("{}{} ({})", out.empty() ? "" : ", ", f.name, f.extensions[0]);
+    return out;
+  };
+  if (spec.unwelded && !format.unwelded)
+    throw UsageError(fmt::format("unwelded samples are written to {} only; '{}' is not",
+                                 takers(&OutputFormat::unwelded), path));
+  if (spec.adaptive_tolerance > 0 && !format.adaptive)
+    throw UsageError(fmt::format("adaptive triangles are written to {} only, not '{}'",
+                                 takers(&OutputFormat::adaptive), path));
+  if (spec.adaptive_tolerance > 0 && spec.unwelded)
+    throw UsageError("adaptive triangles are welded; they cannot be written unwelded");
+  if (format.kind == OutputKind::exact) {
+    for (const double t : {spec.patches.tolerance, spec.patches.angle_tolerance_deg})
+      if (!(t > 0) || !std::isfinite(t))
+        throw UsageError(
+            fmt::format("the tolerances of '{}' must be numbers > 0 (got {})", path, t));
+  }
+  if (format.needs_cad) {
+#if STITCH_WITH_CAD
+    cad::check_units(spec.units);
+#else
+    throw OutputError(fmt::format(
+        "cannot write '{}': this stitch was built without OpenCASCADE (STITCH_BUILD_CAD=OFF)",
+        path));
+#endif
+  }
+}
+
+OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
+                           const Surface& surface, const OutputSpec& spec,
+                           std::span<const OutputFormat> formats) {
+  check_output(path, spec, formats);
+  const OutputFormat& format = output_format(path, formats);
+  if (format.kind == OutputKind::exact && surface.method() == Method::cc)
+    throw UsageError(fmt::format(
+        "cannot write '{}': the {} surface is not a set of Bezier patches; use {} or {}", path,
+        to_string(Method::cc), to_string(Method::mdc), to_string(Method::asc)));
+  return format.write(path, mesh, surface, spec, format);
+}
+
+std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat& format,
+                                    const OutputSpec& spec) {
+  // Measured peak resident size of `stitch smooth` to binary PLY divided by the corners: 806
+  // bytes at 100k and 1M faces (mesh, K-gons, 16-point nets, the input file's text); rounded up.
+  constexpr std::int64_t kBytesPerCorner = 1024;
+  const auto corners = static_cast<std::int64_t>(mesh.num_halfedges());
+  const std::int64_t n = spec.resolution;
+  std::int64_t bytes = kBytesPerCorner * corners;
+  if (format.kind == OutputKind::exact || spec.adaptive_tolerance > 0) return bytes;
+  if (spec.unwelded)  // positions, normals, uv, patch and level per sample, 4 ints per quad
+    return bytes + corners * ((n + 1) * (n + 1) * 72 + n * n * 16);
+  switch (format.memory) {
+    case MemoryModel::whole:  // the tessellation, then its buffer: positions, normals, quads
+      return bytes + corners * n * n * (48 + 16) * 2;
+    case MemoryModel::positions:  // every position (about n^2 per corner)
+      return bytes + corners * n * n * 24;
+    default:
+      return bytes;
+  }
+}
+
+}  // namespace stitch
