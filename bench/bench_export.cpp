@@ -1,7 +1,9 @@
-// Exporting a model of about 10k faces (bench_meshes.hpp's tori) to each output format: the
-// exact patches (expansion, Bézier JSON, STEP, IGES) and the tessellation (glTF binary).
-// Each benchmark times the whole export from a built Surface; files go to the system's
-// temporary folder and are removed. Run alone with --benchmark_filter=Export.
+// Exporting the exact surface through write_surface, as `stitch smooth -o x.step` does: the
+// bundled cube, OpenSubdiv's catmark_smoothtris0 (80 triangles), a triangle torus of about 1k
+// faces and a quad torus of about 10k, to Bézier JSON, STEP and IGES, and the quad torus to .glb
+// for comparison. Each benchmark times one whole export from a built Surface (the patch set,
+// the faces, the file); counters give the faces written and the file's size. Files go to the
+// system's temporary folder and are removed. Run alone with --benchmark_filter=Export.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -9,67 +11,55 @@
 
 #include "bench_meshes.hpp"
 #include "stitch/eval/surface.hpp"
-#include "stitch/tess/bezier_json.hpp"
-#include "stitch/tess/export.hpp"
-#include "stitch/tess/patches.hpp"
-#if STITCH_WITH_CAD
-#include "stitch/cad/cad.hpp"
-#endif
+#include "stitch/mesh/io.hpp"
+#include "stitch/output/output.hpp"
 
 namespace {
 
 using namespace stitch;
 using namespace stitch::bench;
 
-enum Format : int { patches = 0, json = 1, glb = 2, step = 3, iges = 4 };
+enum Input : int { cube = 0, smoothtris = 1, triangles_1k = 2, quads_10k = 3 };
+constexpr const char* kExtensions[] = {".bez.json", ".step", ".igs", ".glb"};
 
-const char* format_name(int f) {
-  constexpr const char* names[] = {"patches only", ".bez.json", ".glb (resolution 8)", ".step",
-                                   ".igs"};
-  return names[f];
+const HalfedgeMesh& input(int which) {
+  static const HalfedgeMesh cube_mesh = read_mesh(STITCH_EXAMPLES_DIR "/cube.obj");
+  static const HalfedgeMesh tris_mesh =
+      read_mesh(STITCH_OPENSUBDIV_SHAPES_DIR "/catmark_smoothtris0.obj");
+  switch (which) {
+    case cube:
+      return cube_mesh;
+    case smoothtris:
+      return tris_mesh;
+    case triangles_1k:
+      return bench_mesh(triangle_torus, 1000);
+    default:
+      return bench_mesh(quad_torus, 10000);
+  }
 }
 
 void BM_Export(benchmark::State& state) {
-  const auto kind = static_cast<MeshKind>(state.range(0));
-  const int format = static_cast<int>(state.range(1));
-  const HalfedgeMesh& mesh = bench_mesh(kind, 10000);
+  const int which = static_cast<int>(state.range(0));
+  const std::string extension = kExtensions[state.range(1)];
+  const HalfedgeMesh& mesh = input(which);
   const Surface surface(mesh, Method::mdc);
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("stitch-bench-export" + std::string(format == json   ? ".json"
-                                                                 : format == glb  ? ".glb"
-                                                                 : format == step ? ".step"
-                                                                                  : ".igs")))
-                               .string();
-  size_t count = 0;
-  for (auto _ : state) {
-    if (format == glb) {
-      write_smooth_surface(path, mesh, surface, 8);
-      continue;
-    }
-    const PatchSet set = bezier_patches(mesh, surface);
-    count = set.patches.size();
-    state.counters["depth"] = set.depth;
-    if (format == json) write_bezier_json(path, set);
-#if STITCH_WITH_CAD
-    if (format == step || format == iges) {
-      cad::quiet_opencascade();
-      cad::write_cad(path, mesh, surface, set);
-    }
-#endif
-  }
-  if (format != patches && std::filesystem::exists(path))
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("stitch-bench-export" + extension)).string();
+  OutputReport report;
+  for (auto _ : state) report = write_surface(path, mesh, surface);
+  state.counters["faces"] = static_cast<double>(report.faces);
+  if (std::filesystem::exists(path))
     state.counters["MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
   std::filesystem::remove(path);
-  if (count > 0) state.counters["patches"] = static_cast<double>(count);
-  state.SetLabel(mesh_label(kind, mesh) + ", " + format_name(format));
+  const char* names[] = {"cube.obj", "catmark_smoothtris0", "triangle torus", "quad torus"};
+  state.SetLabel(std::string(names[which]) + " (" + std::to_string(mesh.num_faces()) + " faces), " +
+                 extension);
 }
 
 void export_args(benchmark::internal::Benchmark* b) {
-  for (int kind : {quad_torus, mixed_torus})
-    // STEP and IGES of the mixed torus (some 780k faces) take far longer than the rest
-    // together: they are timed on the quad torus only.
-    for (int f = patches; f <= (STITCH_WITH_CAD && kind == quad_torus ? iges : glb); ++f)
-      b->Args({kind, f});
+  for (int which : {cube, smoothtris, triangles_1k, quads_10k})
+    for (int f = 0; f < 3; ++f) b->Args({which, f});
+  b->Args({quads_10k, 3});
 }
 
 BENCHMARK(BM_Export)

@@ -12,6 +12,7 @@ packages=(
   libocct-modeling-data-dev libocct-foundation-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   xvfb xauth gnuplot-nox
+  freecad-python3
 )
 packages+=("$@")
 missing=()

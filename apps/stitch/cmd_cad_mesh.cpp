@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 // after stitch's headers (OCCT defines a macro Handle, see cad.hpp)
@@ -37,7 +38,8 @@ void add_cad_mesh_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "cad-mesh", "Triangulate a STEP or IGES file with OpenCASCADE (to view what CAD reads)");
   cmd->add_option("input", args->in, "input .step, .stp, .igs or .iges")->required();
-  cmd->add_option("-o,--output", args->out, "output mesh: .obj, .off, .ply or .stl")->required();
+  cmd->add_option("-o,--output", args->out, "output mesh: " + extension_list(kMeshWriteExtensions))
+      ->required();
   cmd->add_option("--deflection", args->deflection,
                   "largest distance of the triangles from the faces, in the file's units (mm)")
       ->capture_default_str();

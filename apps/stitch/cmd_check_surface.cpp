@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "stitch/analysis/surface_check.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 
@@ -79,9 +80,11 @@ void add_check_surface_command(CLI::App& app) {
   auto args = std::make_shared<CheckSurfaceArgs>();
   auto* cmd = app.add_subcommand(
       "check-surface",
-      "report self-intersecting, folded and degenerate triangles of a surface mesh (polygons are "
-      "fanned into triangles); exit status 1 when there are any");
-  cmd->add_option("MESH", args->path, "surface mesh (.obj, .off, .ply)")->required();
+      "report self-intersecting, folded and degenerate triangles of a surface mesh (quads are "
+      "split along their shorter diagonal, other polygons fanned); exit status 1 when there are "
+      "any");
+  cmd->add_option("MESH", args->path, "surface mesh (" + extension_list(kMeshReadExtensions) + ")")
+      ->required();
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--fold-angle", args->options.fold_angle_deg,
                   "adjacent triangles fold when their normals differ by more than this, degrees")

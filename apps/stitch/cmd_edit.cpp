@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "stitch/analysis/local_check.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/mesh_journal.hpp"
@@ -193,7 +194,8 @@ void add_edit_command(CLI::App& app) {
       "edit", fmt::format("apply topology operations ({}); vertices and faces are numbered from "
                           "1 in file order; see docs/editing.md",
                           synopses));
-  cmd->add_option("IN", args->in, "input mesh (.obj, .off, .ply)")->required();
+  cmd->add_option("IN", args->in, "input mesh (" + extension_list(kMeshReadExtensions) + ")")
+      ->required();
   cmd->add_option("-o,--output", args->out, "output mesh, compacted (renumbered without gaps)")
       ->required();
   cmd->add_option("--op", "one operation, e.g. \"insert-edge 1@1 7@2\" (repeatable)")

@@ -18,7 +18,7 @@ namespace {
 struct EvalArgs {
   InputOptions in;
   std::string at;
-  std::string method = "mdc";
+  std::string method{method_table().front().name};
   std::string format = "csv";
   KgonCliOptions kgon;
 };

@@ -19,7 +19,7 @@ struct InfoArgs {
   InputOptions in;
   bool json = false;
   bool patches = false;
-  std::string method = "mdc";
+  std::string method{method_table().front().name};
   PatchSetOptions patch_set;
   KgonCliOptions kgon;
 };

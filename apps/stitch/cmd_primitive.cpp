@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/primitives.hpp"
@@ -38,7 +39,9 @@ void add_primitive_command(CLI::App& app) {
                   "prism, torus")
       ->required();
   cmd->add_option("PARAMS", args->params, "prism: N sides; torus: M N segments");
-  cmd->add_option("-o,--output", args->out, "output mesh (.obj, .off, .ply, .stl)")->required();
+  cmd->add_option("-o,--output", args->out,
+                  "output mesh (" + extension_list(kMeshWriteExtensions) + ")")
+      ->required();
   cmd->callback([args] { run_primitive(*args); });
 }
 

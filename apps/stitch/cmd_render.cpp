@@ -15,6 +15,7 @@
 #include "stitch/render/image.hpp"
 #include "stitch/render/options.hpp"
 #include "stitch/render/scene.hpp"
+#include "stitch/tess/tessellate.hpp"
 
 namespace stitch::cli {
 
@@ -23,15 +24,15 @@ namespace {
 struct RenderArgs {
   InputOptions in;
   std::string out;
-  std::string method = "mdc";
-  std::string mode = "shaded";
+  std::string method{method_table().front().name};
+  std::string mode{shading_mode_table().front().name};
   std::string show;
   std::string size = "800x600";
   std::string view;
   std::string eye, target;
   bool focus_ev = false;
   double zoom = 0.6;
-  int resolution = 8;
+  int resolution = kDefaultResolution;
   int stripes = 24;
   int checks = 8;
   std::string uv;  ///< with --mode checker: smooth (when empty) or linear
@@ -132,11 +133,8 @@ void add_render_command(CLI::App& app) {
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")->required();
   add_method_option(cmd, args->method, false, &args->in);
-  cmd->add_option("--mode", args->mode,
-                  "shaded, zebra (reflection lines), isophote, levels (hierarchy level of the "
-                  "sub-patch), patches or checker (shaded, on a checkerboard through the input's "
-                  "texture coordinates)")
-      ->check(CLI::IsMember({"shaded", "zebra", "isophote", "levels", "patches", "checker"}))
+  cmd->add_option("--mode", args->mode, choice_help(shading_mode_table()))
+      ->check(choice_validator(shading_mode_table()))
       ->capture_default_str();
   cmd->add_option("--show", args->show,
                   "overlays, comma-separated: mesh (input wireframe), kgons, nets (4x4 control "

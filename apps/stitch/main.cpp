@@ -8,8 +8,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "stitch: smooth surfaces of hierarchically organized bicubic Bezier patches from any closed "
-      "orientable polygon mesh (modified de Casteljau subdivision)"};
+      "stitch: smooth surfaces of hierarchically organized bicubic Bezier patches from any "
+      "orientable polygon mesh, closed or with boundaries (modified de Casteljau subdivision)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "stitch 0.1.0");
   stitch::cli::add_smooth_command(app);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
@@ -17,9 +18,10 @@ namespace stitch::cli {
 
 void add_input_options(CLI::App* cmd, InputOptions& in) {
   cmd->add_option("IN", in.path,
-                  "input mesh (.obj, .off, .ply, .stl, .gltf, .glb): orientable and manifold, "
-                  "closed or with boundaries; or a stitch-modeler project (.stitch): its mesh, "
-                  "K-gon controls and method")
+                  "input mesh (" + extension_list(kMeshReadExtensions) +
+                      "): orientable and manifold, "
+                      "closed or with boundaries; or a stitch-modeler project (.stitch): its mesh, "
+                      "K-gon controls and method")
       ->required();
   cmd->add_flag("--fill-holes", in.fill_holes,
                 "close every boundary loop with one face instead of keeping it as a boundary");
@@ -117,10 +119,12 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
   cmd->add_option("--boundary", k.boundary, choice_help(boundary_table()))
       ->check(choice_validator(boundary_table()))
       ->capture_default_str();
-  cmd->add_option("--sharp-from", k.sharp_from,
-                  "crease and corner tags of at least this sharpness are infinitely sharp for mdc "
-                  "and asc, smaller ones smooth (the K-gon construction has no levels to round a "
-                  "crease over); cc honours every value")
+  cmd->add_option(
+         "--sharp-from", k.sharp_from,
+         fmt::format("crease and corner tags of at least this sharpness are infinitely "
+                     "sharp for {} and {}, smaller ones smooth (the K-gon construction "
+                     "has no levels to round a crease over); {} honours every value",
+                     to_string(Method::mdc), to_string(Method::asc), to_string(Method::cc)))
       ->check(finite_range(0, 10))
       ->capture_default_str();
 }

@@ -364,17 +364,13 @@ CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const
   return e;
 }
 
-CadReport write_cad(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
-                    const PatchSet& patches, const CadOptions& options) {
-  const std::optional<CadFormat> format = cad_format(path);
-  if (!format)
-    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                 file_extension(path), kCadExtensions));
+CadReport write_cad(const std::string& path, CadFormat format, const HalfedgeMesh& mesh,
+                    const Surface& surface, const PatchSet& patches, const CadOptions& options) {
   const Unit& unit = find_unit(options.units);
   CadReport report;
   const NamedShape named = build_shape(mesh, surface, patches, options, report);
   const TopoDS_Shape& shape = named.shape;
-  if (*format == CadFormat::step) {
+  if (format == CadFormat::step) {
     STEPControl_Writer writer;
     // The shape's length unit (the model's local unit) is the written one, so the coordinates
     // go out unscaled under that unit's name. OCCT 7.6 takes the written unit from its

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mesh/opensubdiv_topology.hpp"
+#include "stitch/eval/surface.hpp"
 #include "stitch/topology/remesh.hpp"
 
 namespace stitch {
@@ -233,11 +234,16 @@ std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
   return {};
 }
 
+/// "cc (Catmull-Clark ...) cannot handle WHAT; use mdc or asc", the names from the table.
+std::string refusal(const std::string& what) {
+  const Choice<Method>& cc = choice_of(method_table(), Method::cc);
+  return fmt::format("{} ({}) cannot handle {}; use {} or {}", cc.name, cc.help, what,
+                     to_string(Method::mdc), to_string(Method::asc));
+}
+
 [[noreturn]] void throw_no_limit_surface(Face f) {
-  throw InputError(fmt::format(
-      "cc (Catmull-Clark through OpenSubdiv) cannot handle face {}: OpenSubdiv gives it no limit "
-      "surface; use mdc or asc",
-      f.idx + 1));
+  throw InputError(
+      refusal(fmt::format("face {}: OpenSubdiv gives it no limit surface", f.idx + 1)));
 }
 
 }  // namespace
@@ -268,18 +274,15 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, BoundaryInter
 CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_taken,
                                          BoundaryInterpolation boundary)
     : impl_(std::make_unique<Impl>()) {
-  if (mesh.surface_faces().empty()) throw InputError("cc: the mesh has no faces outside holes");
+  if (mesh.surface_faces().empty())
+    throw InputError(refusal("this mesh: it has no faces outside holes"));
   // A vertex where boundary loops meet stays so under refinement: refused here, where the
   // vertex still has the number the user knows.
   for (Vertex v : mesh.vertices()) {
     try {
       (void)surface_ring(mesh, v);
     } catch (const Error& e) {
-      throw_with_message(
-          e,
-          fmt::format(
-              "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: {}; use mdc or asc",
-              e.what()));
+      throw_with_message(e, refusal(fmt::format("this mesh: {}", e.what())));
     }
   }
   if (!topology_needing_a_step(mesh).empty()) {
@@ -293,28 +296,24 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   options.validateFullTopology = true;
   const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
   if (!refiner || !topo.problems.empty()) {
-    throw InputError(fmt::format(
-        "cc (Catmull-Clark through OpenSubdiv) cannot handle this mesh: OpenSubdiv refused its "
-        "topology{}{}",
-        topo.problems.empty() ? "" : ": ", topo.problems.empty() ? "" : topo.problems.front()));
+    throw InputError(refusal(fmt::format("this mesh: OpenSubdiv refused its topology{}{}",
+                                         topo.problems.empty() ? "" : ": ",
+                                         topo.problems.empty() ? "" : topo.problems.front())));
   }
   // OpenSubdiv accepts some topology only by tagging it non-manifold (then sharpened) or as a
   // hole: the result would not be the Catmull-Clark limit surface of the mesh's surface.
   const Osd::Far::TopologyLevel& level = refiner->GetLevel(0);
   for (int v = 0; v < level.GetNumVertices(); ++v) {
     if (level.IsVertexNonManifold(v)) {
-      throw InputError(fmt::format(
-          "cc (Catmull-Clark through OpenSubdiv) cannot handle vertex {}: OpenSubdiv treats its "
-          "neighbourhood as non-manifold; use mdc or asc",
-          topo.vertices[v].idx + 1));
+      throw InputError(
+          refusal(fmt::format("vertex {}: OpenSubdiv treats its neighbourhood as non-manifold",
+                              topo.vertices[v].idx + 1)));
     }
   }
   for (int f = 0; f < level.GetNumFaces(); ++f) {
     if (level.IsFaceHole(f)) {
-      throw InputError(fmt::format(
-          "cc (Catmull-Clark through OpenSubdiv) cannot handle face {} of degree {}: OpenSubdiv "
-          "makes it a hole; use mdc or asc",
-          topo.faces[f].idx + 1, mesh.degree(topo.faces[f])));
+      throw InputError(refusal(fmt::format("face {} of degree {}: OpenSubdiv makes it a hole",
+                                           topo.faces[f].idx + 1, mesh.degree(topo.faces[f]))));
     }
   }
 
@@ -397,8 +396,9 @@ CatmullClarkSurface& CatmullClarkSurface::operator=(CatmullClarkSurface&&) noexc
 SurfacePoint CatmullClarkSurface::evaluate(Corner c, double u, double v) const {
   const Impl& impl = *impl_;
   if (!impl.live(c)) {
-    throw InputError(fmt::format(
-        "cc: half-edge {} (0-based) is not a live corner of the mesh outside holes", c.idx));
+    throw InputError(
+        fmt::format("{}: half-edge {} (0-based) is not a live corner of the mesh outside holes",
+                    to_string(Method::cc), c.idx));
   }
   if (impl.refined) return evaluate_refined_quad(impl.quad_corners[c.idx], u, v);
   const int f = impl.corner_face[c.idx];

@@ -115,13 +115,12 @@ OutputReport write_bezier(const std::string& path, const HalfedgeMesh& mesh, con
   return r;
 }
 
+#if STITCH_WITH_CAD
 OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
                             const Surface& surface, const OutputSpec& spec,
-                            const OutputFormat& format) {
-#if STITCH_WITH_CAD
+                            const OutputFormat& format, cad::CadFormat cad_format) {
   const PatchSet set = patch_set(mesh, surface, spec);
-  const cad::CadEstimate e =
-      cad::estimate_cad(mesh, surface, set, spec.packing, *cad::cad_format(path));
+  const cad::CadEstimate e = cad::estimate_cad(mesh, surface, set, spec.packing, cad_format);
   if (spec.note)
     spec.note(fmt::format("writing {} {} ({} B-spline faces, about {} poles and {:.1f} MB)", path,
                           format.name, e.faces, e.poles, e.bytes / 1e6));
@@ -131,7 +130,7 @@ OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
   options.packing = spec.packing;
   options.angle_tolerance_deg = spec.patches.angle_tolerance_deg;
   options.progress = spec.progress;
-  const cad::CadReport c = cad::write_cad(path, mesh, surface, set, options);
+  const cad::CadReport c = cad::write_cad(path, cad_format, mesh, surface, set, options);
   OutputReport r;
   r.faces = c.faces;
   r.summary = fmt::format(
@@ -144,12 +143,26 @@ OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
       c.smooth_edges, c.g1_edges, c.max_smooth_angle_deg, c.sharp_edges, spec.units,
       to_string(surface.method()));
   return r;
+}
+
+OutputReport write_step(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                        const OutputSpec& spec, const OutputFormat& format) {
+  return write_cad_file(path, mesh, surface, spec, format, cad::CadFormat::step);
+}
+
+OutputReport write_iges(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
+                        const OutputSpec& spec, const OutputFormat& format) {
+  return write_cad_file(path, mesh, surface, spec, format, cad::CadFormat::iges);
+}
 #else
-  (void)mesh, (void)surface, (void)spec, (void)format;
+/// check_output refuses STEP and IGES before any work in a build without OpenCASCADE.
+OutputReport write_step(const std::string& path, const HalfedgeMesh&, const Surface&,
+                        const OutputSpec&, const OutputFormat&) {
   throw OutputError(fmt::format(
       "cannot write '{}': this stitch was built without OpenCASCADE (STITCH_BUILD_CAD=OFF)", path));
-#endif
 }
+constexpr auto write_iges = write_step;
+#endif
 
 bool ends_with(std::string_view text, std::string_view end) {
   if (end.size() > text.size()) return false;
@@ -252,7 +265,7 @@ std::span<const OutputFormat> output_formats() {
        true,
        M::cad_model,
        "B-spline faces named after their control faces, sewn into shells and solids",
-       write_cad_file},
+       write_step},
       {"IGES 5.3",
        {".igs", ".iges"},
        K::exact,
@@ -263,7 +276,7 @@ std::span<const OutputFormat> output_formats() {
        true,
        M::cad_model,
        "B-spline faces named after their control faces, sewn into shells and solids",
-       write_cad_file},
+       write_iges},
   };
   return kFormats;
 }

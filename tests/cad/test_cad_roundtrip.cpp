@@ -132,7 +132,8 @@ TEST_P(CadRoundTrip, ValidClosedSolidNamedFacesWithinToleranceAndTheTessellatedV
   const std::string path = folder.file("surface" + extension);
   cad::CadOptions options;
   options.packing = c.packing;
-  const cad::CadReport report = cad::write_cad(path, e.mesh, e.surface, e.set, options);
+  const cad::CadReport report =
+      cad::write_cad(path, *cad::cad_format(path), e.mesh, e.surface, e.set, options);
   EXPECT_EQ(report.faces, c.faces);
   EXPECT_EQ(report.free_edges, 0);
   EXPECT_EQ(report.solids, 1);
@@ -230,7 +231,7 @@ TEST(CadUnits, DeclaredNotScaled) {
       const std::string path = folder.file(std::string("t_") + unit + ext);
       cad::CadOptions options;
       options.units = unit;
-      cad::write_cad(path, e.mesh, e.surface, e.set, options);
+      cad::write_cad(path, *cad::cad_format(path), e.mesh, e.surface, e.set, options);
       const TopoDS_Shape shape = cad::read_cad(path);
       double nearest = std::numeric_limits<double>::infinity();
       for (TopExp_Explorer it(shape, TopAbs_VERTEX); it.More(); it.Next()) {
@@ -242,16 +243,19 @@ TEST(CadUnits, DeclaredNotScaled) {
   }
   cad::CadOptions furlong;
   furlong.units = "furlong";
-  EXPECT_THROW(cad::write_cad(folder.file("t.step"), e.mesh, e.surface, e.set, furlong), Error);
-  EXPECT_THROW(cad::write_cad(folder.file("t.brep"), e.mesh, e.surface, e.set), Error);
+  EXPECT_THROW(cad::write_cad(folder.file("t.step"), cad::CadFormat::step, e.mesh, e.surface, e.set,
+                              furlong),
+               Error);
+  EXPECT_FALSE(cad::cad_format(folder.file("t.brep")));
 }
 
 TEST(CadWrite, FullDiskLeavesNothing) {
   TempFolder folder;
   const Exact e = exact_of(test::example_path("tetrahedron.obj"), Method::asc);
   std::filesystem::create_symlink("/dev/full", folder.file("full.step"));
-  const std::string message =
-      test::error_of([&] { cad::write_cad(folder.file("full.step"), e.mesh, e.surface, e.set); });
+  const std::string message = test::error_of([&] {
+    cad::write_cad(folder.file("full.step"), cad::CadFormat::step, e.mesh, e.surface, e.set);
+  });
   EXPECT_NE(message.find("disk full"), std::string::npos) << message;
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"full.step"});
 }
@@ -281,7 +285,7 @@ TEST_P(EveryShapeExports, StepIgesAndBezierJson) {
   for (const char* ext : {".step", ".igs"}) {
     SCOPED_TRACE(ext);
     const std::string out = folder.file(std::string("s") + ext);
-    const cad::CadReport report = cad::write_cad(out, mesh, surface, set);
+    const cad::CadReport report = cad::write_cad(out, *cad::cad_format(out), mesh, surface, set);
     EXPECT_EQ(report.faces,
               static_cast<int>(bspline_face_layout(mesh, surface, set, FacePacking::quads).size()));
     // Reading a file back costs about as much as writing it; the largest (the 360-valent

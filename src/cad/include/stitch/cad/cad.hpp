@@ -23,10 +23,11 @@ namespace stitch::cad {
 
 enum class CadFormat { step, iges };
 
-/// The extensions write_cad takes, for messages.
+/// The extensions read_cad reads, for messages (writers are chosen by the output table,
+/// stitch/output/output.hpp).
 inline constexpr const char* kCadExtensions = ".step, .stp, .igs, .iges";
 
-/// The format an output path asks for by its extension; nullopt for any other extension.
+/// The format a CAD file is read as, by its extension; nullopt for any other extension.
 std::optional<CadFormat> cad_format(const std::string& path);
 
 /// Length units a file can declare: "mm", "cm", "m", "in", "ft". The coordinates are written
@@ -86,11 +87,12 @@ struct CadEstimate {
 CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
                          FacePacking packing, CadFormat format);
 
-/// Writes the shape as STEP AP214 or IGES 5.3 by the extension of `path`, every face named
-/// (face_name). Atomic: nothing is left at `path` unless the whole file was written. Throws
-/// stitch::Error (unknown extension or unit, write failures).
-CadReport write_cad(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
-                    const PatchSet& patches, const CadOptions& options = {});
+/// Writes the shape as STEP AP214 or IGES 5.3, every face named (face_name). Atomic: nothing is
+/// left at `path` unless the whole file was written. Throws stitch::Error (unknown unit, write
+/// failures).
+CadReport write_cad(const std::string& path, CadFormat format, const HalfedgeMesh& mesh,
+                    const Surface& surface, const PatchSet& patches,
+                    const CadOptions& options = {});
 
 /// The faces of a shape triangulated by OCCT's BRepMesh (chordal deflection `deflection`, in the
 /// shape's units), with the nodes that faces share along their edges welded into one vertex:
