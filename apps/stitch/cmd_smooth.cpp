@@ -150,9 +150,7 @@ void run_smooth(SmoothArgs& a) {
   const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, built.kgons, report, format, stage);
   a.spec.uvs = uvs.get();
   a.spec.progress = [&stage](double done) { stage.fraction(done); };
-  a.spec.note = [&](const std::string& line) {
-    if (!a.progress.quiet) fmt::print(stderr, "stitch: {}\n", line);
-  };
+  a.spec.note = [&stage](const std::string& line) { stage.note(line); };
   if (!a.patches.empty()) {
     stage.begin("writing " + a.patches);
     patches_spec.note = a.spec.note;

@@ -190,13 +190,27 @@ bool stderr_is_terminal() {
 
 StageReporter::StageReporter(const ProgressFlags& flags)
     : enabled_(!flags.quiet && (flags.progress || stderr_is_terminal())),
-      terminal_(enabled_ && stderr_is_terminal()) {}
+      terminal_(enabled_ && stderr_is_terminal()),
+      quiet_(flags.quiet) {}
 
 void StageReporter::begin(const std::string& stage) {
   start_ = std::chrono::steady_clock::now();
   stage_ = stage;
   percent_ = -1;
+  open_ = enabled_;
   if (enabled_) fmt::print(stderr, "stitch: {}...", stage);
+}
+
+void StageReporter::note(const std::string& line) {
+  if (quiet_) return;
+  // On a terminal the stage's line is erased and drawn again below the note; in a log the note
+  // starts a line of its own.
+  if (open_) fmt::print(stderr, "{}", terminal_ ? "\r\x1b[K" : "\n");
+  fmt::print(stderr, "stitch: {}\n", line);
+  if (open_) {
+    fmt::print(stderr, "stitch: {}...", stage_);
+    if (percent_ >= 0) fmt::print(stderr, " {:3d}%", percent_);
+  }
 }
 
 void StageReporter::fraction(double done) {
@@ -210,6 +224,7 @@ void StageReporter::fraction(double done) {
 }
 
 void StageReporter::end() {
+  open_ = false;
   if (!enabled_) return;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (percent_ >= 0)

@@ -105,11 +105,16 @@ class StageReporter {
   void begin(const std::string& stage);
   /// How much of the current stage is done (0..1). Call from one thread at a time.
   void fraction(double done);
+  /// A line about the work in the current stage ("stitch: LINE" on stderr, not under --quiet),
+  /// on a line of its own; the stage's line is shown again after it.
+  void note(const std::string& line);
   void end();
 
  private:
   bool enabled_;
   bool terminal_;
+  bool quiet_;
+  bool open_ = false;  ///< a stage's line is on the screen, not yet ended
   int percent_ = -1;
   std::string stage_;
   std::chrono::steady_clock::time_point start_;

@@ -5,6 +5,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -256,6 +257,9 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
     const std::vector<std::uint8_t> no_normal = corners_without_normal(
         mesh, surface, options.angle_tolerance_deg, set.points_without_normal);
     const double position_tolerance = options.tolerance * set.model_size;
+    // Progress by points settled: each extraordinary corner of a root is one chain of cells.
+    size_t chains = 0, settled = 0;
+    for (const Cell& root : frontier) chains += std::popcount(unsigned(root.net.extraordinary));
     for (int depth = 0; !frontier.empty(); ++depth) {
       const std::vector<CellDeviation> per_cell = measure(surface, frontier, no_normal);
       std::vector<Cell> next;
@@ -281,6 +285,7 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
             set.max_normal_deviation_deg = std::max(set.max_normal_deviation_deg, d.normal_deg);
           }
           cell.exact = false;
+          settled += depth == 0 ? std::popcount(unsigned(cell.net.extraordinary)) : 1;
           cells_of_root[cell.root].push_back(cell);
           continue;
         }
@@ -300,6 +305,7 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
         for (Cell& c : regular) cells_of_root[c.root].push_back(std::move(c));
       }
       frontier = std::move(next);
+      if (options.progress) options.progress(double(settled) / double(chains));
     }
     merge_points(set.points_without_normal);
   }

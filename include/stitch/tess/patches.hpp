@@ -3,6 +3,7 @@
 // of modified de Casteljau children (docs/formats.md, "The patch set").
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct PatchSetOptions {
   double angle_tolerance_deg = 0.1;
   /// Depth at which a tolerance that cannot be reached is refused.
   int max_depth = 30;
+  /// Told the fraction (0..1) of the extraordinary points whose depth is settled, from one
+  /// thread at a time; none when empty.
+  std::function<void(double)> progress;
 };
 
 struct PatchSet {

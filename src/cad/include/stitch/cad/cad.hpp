@@ -78,11 +78,13 @@ TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const 
                         const CadOptions& options = {}, CadReport* report = nullptr);
 
 /// What a file of the patch set will hold, told before the work: faces, poles (assuming C2
-/// inside the faces, as the modified rule gives) and bytes.
+/// inside the faces, as the modified rule gives), bytes, and the seconds writing it takes on a
+/// 2-core machine (docs/performance.md, "Exporting the exact surface").
 struct CadEstimate {
   int faces = 0;
   std::int64_t poles = 0;
   std::int64_t bytes = 0;
+  double seconds = 0;
 };
 CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
                          FacePacking packing, CadFormat format);
