@@ -8,6 +8,7 @@
 #include <string>
 
 #include "stitch/kgon/kgon.hpp"
+#include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch::python {
@@ -18,13 +19,32 @@ namespace py = pybind11;
 /// (or a numpy view of the vertices) keeps the mesh it was made from, whatever happens later.
 struct MeshHandle {
   std::shared_ptr<const HalfedgeMesh> mesh;
+  /// The texture coordinates read with it (null: none). They live beside the mesh, as in the
+  /// library: edits do not carry them, so an edited mesh has none.
+  std::shared_ptr<const CornerUvs> uvs = nullptr;
 };
 
-/// The K-gon controls of stitch.Surface's and stitch.IncrementalSurface's keyword arguments
-/// (the command line's --kgon-scale, --kgon-rotate, --regularize, --kgon-construction),
-/// range-checked.
-KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
-                         const std::string& construction);
+/// The K-gon keyword arguments of stitch.Surface and stitch.IncrementalSurface (the command
+/// line's --kgon-scale, --kgon-rotate, --regularize, --kgon-construction, --boundary,
+/// --sharp-from), range-checked, the names parsed with the library's tables.
+struct KgonKeywords {
+  double scale = 1;
+  double rotate_deg = 0;
+  bool regularize = false;
+  std::string construction;
+  std::string boundary;
+  double sharp_from = KgonOptions{}.sharp_from;
+};
+KgonOptions kgon_options(const KgonKeywords& k);
+/// The keywords' help, their names listed from the tables.
+std::string kgon_keywords_help();
+
+/// The corner (patch) that a Python argument names: its index (a half-edge of `mesh`, the
+/// numbers of Surface.patches) or its name "V@F" (parse_corner). Raises ValueError otherwise.
+Corner corner_arg(const HalfedgeMesh& mesh, py::handle corner);
+/// The corner of 0-based `vertex` on 0-based `face`, as "V@F#k" would name it (k = occurrence,
+/// 0 when the vertex is on the face once).
+Corner corner_of(const HalfedgeMesh& mesh, int face, int vertex, int occurrence);
 
 /// Raises ValueError unless 1 <= resolution <= limits::max_resolution and a tessellation of
 /// `mesh` at that resolution, (resolution + 1)^2 samples per half-edge, can number its samples

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/tess/incremental_surface.hpp"
+#include "stitch/tess/tessellate.hpp"
 
 namespace stitch::python {
 
@@ -22,14 +23,12 @@ struct IncrementalHandle {
 
 std::unique_ptr<IncrementalHandle> make_incremental(const MeshHandle& mesh,
                                                     const std::string& method, int resolution,
-                                                    double kgon_scale, double kgon_rotate,
-                                                    bool regularize,
-                                                    const std::string& construction) {
+                                                    const KgonKeywords& kgons) {
   const Method m = parse_method(method);
   check_tessellation_size(*mesh.mesh, resolution);
   auto h = std::make_unique<IncrementalHandle>();
   h->mesh = mesh.mesh;
-  h->options = kgon_options(kgon_scale, kgon_rotate, regularize, construction);
+  h->options = kgon_options(kgons);
   limits::check_extent(*h->mesh);  // as stitch.Surface: no normals to build a surface from
   h->surface.rebuild(*h->mesh, h->options, m, resolution);
   return h;
@@ -56,6 +55,10 @@ int update_positions(IncrementalHandle& h, py::handle vertices) {
 }  // namespace
 
 void bind_incremental_surface(py::module_& m) {
+  const std::string init_doc = fmt::format(
+      "method ({}) and K-gon controls as stitch.Surface; every patch sampled on a "
+      "(resolution + 1)^2 grid. {}",
+      choice_names(method_table()), kgon_keywords_help());
   py::class_<IncrementalHandle>(
       m, "IncrementalSurface",
       "A smooth surface kept up to date as the mesh's vertices move, its connectivity fixed (a "
@@ -63,12 +66,20 @@ void bind_incremental_surface(py::module_& m) {
       "the samples of the patches whose nets changed, and keeps the layout. Tubes keep their "
       "fitted K-gons: the search stitch.Surface runs where they fold (unfold_tubes) is not run "
       "here, so a surface that folds shows it.")
-      .def(py::init(&make_incremental), py::arg("mesh"), py::arg("method") = "mdc",
-           py::arg("resolution") = 8, py::kw_only(), py::arg("kgon_scale") = 1.0,
+      .def(py::init([](const MeshHandle& mesh, const std::string& method, int resolution,
+                       double kgon_scale, double kgon_rotate, bool regularize,
+                       const std::string& construction, const std::string& boundary,
+                       double sharp_from) {
+             return make_incremental(
+                 mesh, method, resolution,
+                 {kgon_scale, kgon_rotate, regularize, construction, boundary, sharp_from});
+           }),
+           py::arg("mesh"), py::arg("method") = std::string(method_table().front().name),
+           py::arg("resolution") = kDefaultResolution, py::kw_only(), py::arg("kgon_scale") = 1.0,
            py::arg("kgon_rotate") = 0.0, py::arg("regularize") = false,
-           py::arg("kgon_construction") = "openings",
-           "method and K-gon controls as stitch.Surface; every patch sampled on a "
-           "(resolution + 1)^2 grid.")
+           py::arg("kgon_construction") = std::string(kgon_construction_table().front().name),
+           py::arg("boundary") = std::string(boundary_table().front().name),
+           py::arg("sharp_from") = KgonOptions{}.sharp_from, init_doc.c_str())
       .def("update_positions", &update_positions, py::arg("vertices"),
            "New positions for every vertex, an (n, 3) array in the order of mesh.vertices. "
            "Returns how many patches were evaluated again (those whose control nets changed). "

@@ -8,6 +8,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/topology/operation.hpp"
@@ -55,8 +56,17 @@ MeshHandle read(const std::string& path, bool fill_holes) {
         read_mesh(path, build_options(fill_holes), &report, &warnings));
   }
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+  std::shared_ptr<const CornerUvs> uvs;
+  if (!report.corner_uvs.empty()) {
+    // A UV surface needs every patch's corners to have UVs, which filled holes lack.
+    if (fill_holes && report.filled_holes > 0)
+      warnings.emplace_back(
+          "its texture coordinates are not kept: the faces fill_holes added have none");
+    else
+      uvs = std::make_shared<const CornerUvs>(std::move(report.corner_uvs));
+  }
   warn(warnings);
-  return {std::move(mesh)};
+  return {std::move(mesh), std::move(uvs)};
 }
 
 std::string_view trimmed(std::string_view s) {
@@ -97,6 +107,10 @@ std::vector<std::string> edit(MeshHandle& self, const std::vector<std::string>& 
     edited->garbage_collection();
   }
   self.mesh = std::move(edited);
+  if (self.uvs) {
+    self.uvs.reset();  // the operators do not carry texture coordinates (as `stitch edit`)
+    warn({"the mesh's texture coordinates are not kept by edits"});
+  }
   return summaries;
 }
 
@@ -132,7 +146,30 @@ py::dict topology(std::shared_ptr<const HalfedgeMesh> mesh) {
 
 }  // namespace
 
+Corner corner_arg(const HalfedgeMesh& mesh, py::handle corner) {
+  if (py::isinstance<py::str>(corner)) return parse_corner(mesh, corner.cast<std::string>());
+  int h = -1;
+  if (to_int(corner, h) != IntStatus::ok || h < 0 || h >= mesh.halfedge_capacity() ||
+      mesh.is_deleted(Halfedge(h)) || mesh.is_hole(Halfedge(h)))
+    throw py::value_error(fmt::format("{} is not a patch (a corner: 0 to {}, or a name \"V@F\")",
+                                      py::repr(corner).cast<std::string>(),
+                                      mesh.halfedge_capacity() - 1));
+  return Corner(h);
+}
+
+Corner corner_of(const HalfedgeMesh& mesh, int face, int vertex, int occurrence) {
+  // Through the name, so the checks and messages are those of "V@F#k" (numbered from 1).
+  return parse_corner(mesh, corner_name(vertex, face, occurrence));
+}
+
 void bind_mesh(py::module_& m) {
+  const std::string read_doc = fmt::format(
+      "Reads {} with every check of the command line; warnings (dropped unused vertices, "
+      "filled holes) become Python UserWarnings. The texture coordinates of the file, if any, "
+      "stay with the mesh (has_uvs) until it is edited, for Surface.export(uv=...).",
+      extension_list(kMeshReadExtensions));
+  const std::string write_doc = fmt::format("Writes the mesh by extension ({}), atomically.",
+                                            extension_list(kMeshWriteExtensions));
   py::class_<MeshHandle>(m, "Mesh",
                          "A closed, oriented, manifold polygon mesh (faces of any degree). "
                          "Immutable except through edit().")
@@ -151,6 +188,34 @@ void bind_mesh(py::module_& m) {
           "num_patches",
           [](const MeshHandle& h) { return static_cast<int>(h.mesh->patch_corners().size()); },
           "one patch per corner (half-edge)")
+      .def(
+          "corner_name",
+          [](const MeshHandle& h, py::handle corner) {
+            return corner_name(*h.mesh, corner_arg(*h.mesh, corner));
+          },
+          py::arg("corner"),
+          "The name \"V@F\" of a corner (a patch number of Surface.patches): vertex V on face "
+          "F, numbered from 1 as in edit(), or \"V@F#k\" when V appears on F more than once. "
+          "The name `stitch eval`, Bezier JSON and the faces of STEP and IGES files use.")
+      .def(
+          "corner",
+          [](const MeshHandle& h, const std::string& name) {
+            return corner_arg(*h.mesh, py::str(name)).idx;
+          },
+          py::arg("name"), "The corner (patch number) named \"V@F\" or \"V@F#k\".")
+      .def(
+          "corner_of",
+          [](const MeshHandle& h, int face, int vertex, int occurrence) {
+            return corner_of(*h.mesh, face, vertex, occurrence).idx;
+          },
+          py::kw_only(), py::arg("face"), py::arg("vertex"), py::arg("occurrence") = 0,
+          "The corner (patch number) of vertex `vertex` on face `face`, both 0-based as in "
+          "`faces` and `vertices` (so corner_of(face=f, vertex=v) is corner(f\"{v+1}@{f+1}\")). "
+          "occurrence: k >= 1 picks the k-th appearance of a vertex that appears on the face "
+          "more than once.")
+      .def_property_readonly(
+          "has_uvs", [](const MeshHandle& h) { return h.uvs != nullptr; },
+          "whether the mesh has the texture coordinates of the file it was read from")
       .def_property_readonly("euler", [](const MeshHandle& h) { return euler(*h.mesh); })
       .def_property_readonly(
           "genus", [](const MeshHandle& h) { return stats(h.mesh).genus; },
@@ -210,15 +275,14 @@ void bind_mesh(py::module_& m) {
             py::gil_scoped_release release;
             write_mesh(path, *mesh);
           },
-          py::arg("path"), "Writes the mesh by extension (.obj, .off, .ply, .stl), atomically.")
+          py::arg("path"), write_doc.c_str())
       .def("__repr__", [](const MeshHandle& h) {
         return fmt::format("<stitch.Mesh V {} E {} F {}, Euler {}>", h.mesh->num_vertices(),
                            h.mesh->num_edges(), topology_stats(*h.mesh).faces, euler(*h.mesh));
       });
 
   m.def("read", &read, py::arg("path"), py::kw_only(), py::arg("fill_holes") = false,
-        "Reads .obj, .off or .ply with every check of the command line; warnings (dropped "
-        "unused vertices, filled holes) become Python UserWarnings.");
+        read_doc.c_str());
   m.def(
       "primitive",
       [](const std::string& name, const py::args& params) {

@@ -1,55 +1,55 @@
-// stitch.Surface: the smooth surface of a mesh for one method, with tessellation, exact
-// evaluation, continuity analysis and export; stitch.Tessellation owns tessellate()'s buffers.
+// stitch.Surface: the smooth surface of a mesh for one method, built through the library's recipe
+// (build_surface), with tessellation, exact evaluation, continuity analysis and export to every
+// format of the output table; stitch.Tessellation owns tessellate()'s buffers.
 #include <fmt/format.h>
+#include <pybind11/stl.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/analysis/continuity.hpp"
-#include "stitch/analysis/unfold_tubes.hpp"
-#include "stitch/eval/surface.hpp"
+#include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/limits.hpp"
-#include "stitch/tess/export.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
 
 namespace stitch::python {
 
 namespace {
 
-/// The surface with the mesh snapshot it was built from (tessellation and analysis need both).
+/// The surface with the mesh snapshot it was built from (tessellation, analysis and export need
+/// both) and what build_surface chose.
 struct SurfaceHandle {
   std::shared_ptr<const HalfedgeMesh> mesh;
-  std::shared_ptr<const Surface> surface;
-  /// What unfold_tubes found (nothing when it was off or no tube folded).
-  std::vector<TubeUnfolding> unfolded;
+  std::shared_ptr<const CornerUvs> uvs;  ///< the mesh's texture coordinates (null: none)
+  /// The surface, the K-gon options it was built with and what unfold_tubes found (nothing when
+  /// it was off or no tube folded).
+  std::shared_ptr<const BuiltSurface> built;
+  [[nodiscard]] const Surface& surface() const { return built->surface; }
 };
 
-SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method, double kgon_scale,
-                           double kgon_rotate, bool regularize, const std::string& construction,
-                           bool unfold) {
-  const Method m = parse_method(method);
-  KgonOptions options = kgon_options(kgon_scale, kgon_rotate, regularize, construction);
+SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method,
+                           const KgonKeywords& kgons, bool unfold) {
+  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold};
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
-  std::shared_ptr<const HalfedgeMesh> snapshot = mesh.mesh;
+  const MeshHandle snapshot = mesh;
   py::gil_scoped_release release;
-  std::vector<TubeUnfolding> unfolded;
-  if (unfold) {
-    UnfoldTubesOptions o;
-    o.method = m;
-    unfolded = unfold_tubes(*snapshot, options, o);
-  }
-  auto surface = std::make_shared<const Surface>(*snapshot, m, options);
-  return {std::move(snapshot), std::move(surface), std::move(unfolded)};
+  auto built = std::make_shared<const BuiltSurface>(build_surface(*snapshot.mesh, spec));
+  return {snapshot.mesh, snapshot.uvs, std::move(built)};
 }
 
 py::list unfolded_tubes(const SurfaceHandle& s) {
   py::list out;
-  for (const TubeUnfolding& t : s.unfolded) {
+  for (const TubeUnfolding& t : s.built->tubes) {
     py::dict d;
     d["face"] = t.face.idx;
     d["bridge"] = t.bridge.idx;
@@ -79,7 +79,7 @@ TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution,
 
 TessellatedMesh run_tessellate(const SurfaceHandle& s, const TessellationOptions& options) {
   py::gil_scoped_release release;
-  return tessellate(*s.mesh, *s.surface, options);
+  return tessellate(*s.mesh, s.surface(), options);
 }
 
 /// The C++ call alone, in seconds, for bench/bench_python.py to compare with.
@@ -87,13 +87,26 @@ double time_tessellate(const SurfaceHandle& s, int resolution, bool welded) {
   const TessellationOptions options = tessellation_options(s, resolution, welded);
   py::gil_scoped_release release;
   const auto start = std::chrono::steady_clock::now();
-  const TessellatedMesh result = tessellate(*s.mesh, *s.surface, options);
+  const TessellatedMesh result = tessellate(*s.mesh, s.surface(), options);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// `patches` with corner names ("V@F") replaced by their numbers, so evaluate takes either.
+py::object patch_numbers(const HalfedgeMesh& mesh, py::handle patches) {
+  if (py::isinstance<py::str>(patches)) return py::int_(corner_arg(mesh, patches).idx);
+  const py::array a = py::array::ensure(patches);
+  if (!a || (a.dtype().kind() != 'U' && a.dtype().kind() != 'O'))
+    return py::reinterpret_borrow<py::object>(patches);
+  py::array_t<std::int64_t> numbers(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
+  const py::list flat = a.attr("ravel")().attr("tolist")();
+  std::int64_t* out = numbers.mutable_data();
+  for (size_t i = 0; i < flat.size(); ++i) out[i] = corner_arg(mesh, flat[i]).idx;
+  return numbers;
 }
 
 py::object evaluate(const SurfaceHandle& s, py::handle patches, py::handle u, py::handle v) {
   const py::list args = py::module_::import("numpy").attr("broadcast_arrays")(
-      checked_kind(patches, "iu", "patches"), checked_kind(u, "fiu", "u"),
+      checked_kind(patch_numbers(*s.mesh, patches), "iu", "patches"), checked_kind(u, "fiu", "u"),
       checked_kind(v, "fiu", "v"));
   const auto p = checked_array<std::int64_t>(args[0], "iu", "patches");
   const auto pu = checked_array<double>(args[1], "fiu", "u");
@@ -130,7 +143,7 @@ py::object evaluate(const SurfaceHandle& s, py::handle patches, py::handle u, py
     tbb::parallel_for(tbb::blocked_range<py::ssize_t>(0, n, 256), [&](const auto& range) {
       for (py::ssize_t i = range.begin(); i < range.end(); ++i) {
         const SurfacePoint sp =
-            s.surface->evaluate(Corner(static_cast<int>(patch[i])), us[i], vs[i]);
+            s.surface().evaluate(Corner(static_cast<int>(patch[i])), us[i], vs[i]);
         const Vec3* values[] = {&sp.position, &sp.du, &sp.dv, &sp.normal};
         for (int a = 0; a < 4; ++a)
           for (int k = 0; k < 3; ++k) out[a][3 * i + k] = (*values[a])[k];
@@ -152,7 +165,7 @@ py::dict analyze(const SurfaceHandle& s, int samples_per_side) {
   ContinuityReport r;
   {
     py::gil_scoped_release release;
-    r = analyze_continuity(*s.mesh, *s.surface, options);
+    r = analyze_continuity(*s.mesh, s.surface(), options);
   }
   // The keys of `stitch analyze --json`, so scripts can move between the two.
   auto stats = [](const JumpStats& j) {
@@ -180,17 +193,122 @@ py::dict analyze(const SurfaceHandle& s, int samples_per_side) {
   return d;
 }
 
-void export_surface(const SurfaceHandle& s, const std::string& path, int resolution, bool welded,
-                    bool ascii_ply) {
-  const TessellationOptions options = tessellation_options(s, resolution, welded);
-  py::gil_scoped_release release;
-  if (welded) {
-    SurfaceFileOptions file;
-    file.ascii_ply = ascii_ply;
-    write_smooth_surface(path, *s.mesh, *s.surface, options.resolution, file);
-  } else {
-    write_surface_samples_ply(path, tessellate(*s.mesh, *s.surface, options));
+/// Whether a file of `format` written with `spec` has a place for texture coordinates (the
+/// table's `uvs`, or the unwelded samples of a format that takes them), so no UV surface is built
+/// for a file that would not carry it.
+bool takes_uvs(const OutputFormat& format, const OutputSpec& spec) {
+  return format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0 &&
+         (format.uvs || (spec.unwelded && format.unwelded));
+}
+
+/// The keyword arguments of Surface.export, named after `stitch smooth`'s options.
+struct ExportKeywords {
+  std::optional<int> resolution;
+  std::optional<double> tolerance, angle_tolerance;
+  std::string faces, units;
+  bool unwelded = false, ascii = false, single_precision = false, kgons = false;
+  std::optional<std::string> uv;
+  std::optional<bool> welded, ascii_ply;  ///< the names of the first export()
+};
+
+OutputSpec output_spec(const SurfaceHandle& s, const std::string& path, const ExportKeywords& k) {
+  OutputSpec spec;
+  if (k.welded.value_or(false) && k.unwelded)
+    throw py::value_error("welded=True and unwelded=True contradict each other");
+  spec.unwelded = k.unwelded || (k.welded && !*k.welded);
+  spec.ascii = k.ascii || k.ascii_ply.value_or(false);
+  spec.single_precision = k.single_precision;
+  spec.kgons = k.kgons;
+  spec.units = k.units;
+  spec.packing = parse_choice(face_packing_table(), k.faces, "face packing");
+  const OutputFormat& format = output_format(path);
+  if (k.resolution) spec.resolution = *k.resolution;
+  // One tolerance for both kinds of output, as `stitch smooth --tolerance`: the exact outputs'
+  // cells, or adaptive triangles instead of a fixed resolution for a mesh.
+  if (k.tolerance) {
+    if (!(*k.tolerance > 0) || !std::isfinite(*k.tolerance))
+      throw UsageError(fmt::format("tolerance must be a number > 0, not {}", *k.tolerance));
+    spec.patches.tolerance = *k.tolerance;
+    if (format.kind == OutputKind::tessellated) {
+      if (k.resolution)
+        throw UsageError("tolerance and resolution exclude each other for a mesh output");
+      spec.adaptive_tolerance = *k.tolerance;
+    }
   }
+  if (k.angle_tolerance) spec.patches.angle_tolerance_deg = *k.angle_tolerance;
+  if (format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0)
+    check_tessellation_size(*s.mesh, spec.resolution);
+  check_output(path, spec);
+  return spec;
+}
+
+py::dict export_surface(const SurfaceHandle& s, const std::string& path, const ExportKeywords& k) {
+  OutputSpec spec = output_spec(s, path, k);
+  const OutputFormat& format = output_format(path);
+  const bool none = k.uv && *k.uv == "none";
+  const bool asked = k.uv && !none;
+  const UvMode mode = asked ? parse_uv_mode(*k.uv) : uv_mode_table().front().value;
+  std::vector<std::string> warnings, notes;
+  spec.note = [&notes](const std::string& line) { notes.push_back(line); };
+  OutputReport report;
+  {
+    py::gil_scoped_release release;
+    std::unique_ptr<UvSurface> uvs;
+    if (s.uvs && !none && takes_uvs(format, spec)) {
+      uvs = std::make_unique<UvSurface>(*s.mesh, *s.uvs, mode, s.built->kgons);
+      warnings = uvs->warnings();
+      spec.uvs = uvs.get();
+    }
+    report = write_surface(path, *s.mesh, s.surface(), spec);
+  }
+  if (asked && report.texcoords == 0)
+    warnings.push_back(
+        s.uvs ? fmt::format("uv='{}': no texture coordinates were written to '{}': {} has no "
+                            "place for them {}(see stitch.output_formats())",
+                            *k.uv, path, format.name,
+                            spec.adaptive_tolerance > 0 ? "with a tolerance " : "")
+              : fmt::format("uv='{}': the mesh has no texture coordinates", *k.uv));
+  for (const std::string& w : warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  py::dict d;
+  d["summary"] = report.summary;
+  d["format"] = format.name;
+  d["vertices"] = report.vertices;
+  d["faces"] = report.faces;
+  d["texcoords"] = report.texcoords;
+  d["notes"] = notes;
+  return d;
+}
+
+/// The table of output formats, one dict per row.
+py::list output_format_rows() {
+  py::list rows;
+  for (const OutputFormat& f : output_formats()) {
+    py::list extensions;
+    for (std::string_view e : f.extensions)
+      if (!e.empty()) extensions.append(py::str(e.data(), e.size()));
+    bool available = true;
+    try {
+      check_output(std::string("file") + std::string(f.extensions[0]), {});
+    } catch (const OutputError&) {
+      available = false;  // a build without OpenCASCADE
+    }
+    py::dict d;
+    d["name"] = py::str(f.name.data(), f.name.size());
+    d["extensions"] = extensions;
+    d["kind"] = f.kind == OutputKind::exact ? "exact" : "tessellated";
+    d["normals"] = f.normals;
+    d["uvs"] = f.uvs;
+    d["unwelded"] = f.unwelded;
+    d["adaptive"] = f.adaptive;
+    d["needs_cad"] = f.needs_cad;
+    d["available"] = available;
+    const std::string_view memory = describe(f.memory);
+    d["memory"] = py::str(memory.data(), memory.size());
+    d["help"] = py::str(f.help.data(), f.help.size());
+    rows.append(std::move(d));
+  }
+  return rows;
 }
 
 const TessellatedMesh& samples(const py::object& self) {
@@ -214,21 +332,29 @@ void check_tessellation_size(const HalfedgeMesh& mesh, int resolution) {
                     resolution, samples, mesh.halfedge_capacity(), INT_MAX));
 }
 
-KgonOptions kgon_options(double scale, double rotate_deg, bool regularize,
-                         const std::string& construction) {
-  limits::check_range(scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
-  limits::check_range(rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
+KgonOptions kgon_options(const KgonKeywords& k) {
+  limits::check_range(k.scale, limits::min_kgon_scale, limits::max_kgon_scale, "kgon_scale");
+  limits::check_range(k.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                       "kgon_rotate");
+  // The range of `stitch --sharp-from`: OpenSubdiv's sharpness tops out at 10 (infinitely sharp).
+  limits::check_range(k.sharp_from, 0, 10, "sharp_from");
   KgonOptions o;
-  o.global.scale = scale;
-  o.global.rotate_deg = rotate_deg;
-  o.global.regularize = regularize;
-  if (construction == "doo-sabin")
-    o.construction = KgonConstruction::doo_sabin;
-  else if (construction != "openings")
-    throw py::value_error(
-        fmt::format("kgon_construction must be 'openings' or 'doo-sabin', not '{}'", construction));
+  o.global.scale = k.scale;
+  o.global.rotate_deg = k.rotate_deg;
+  o.global.regularize = k.regularize;
+  o.construction = parse_choice(kgon_construction_table(), k.construction, "kgon_construction");
+  o.boundary = parse_choice(boundary_table(), k.boundary, "boundary");
+  o.sharp_from = k.sharp_from;
   return o;
+}
+
+std::string kgon_keywords_help() {
+  return fmt::format(
+      "kgon_scale, kgon_rotate (degrees), regularize: applied to every K-gon with K != 4, as "
+      "stitch's --kgon-scale, --kgon-rotate and --regularize. kgon_construction: {}. boundary: "
+      "{}. sharp_from: crease and corner tags of at least this sharpness (0 to 10) are "
+      "infinitely sharp for the K-gon methods, smaller ones smooth.",
+      choice_help(kgon_construction_table()), choice_help(boundary_table()));
 }
 
 void bind_surface(py::module_& m) {
@@ -265,18 +391,47 @@ void bind_surface(py::module_& m) {
                            t.quads.size());
       });
 
+  const std::string method_default{method_table().front().name};
+  const std::string init_doc = fmt::format(
+      "The smooth surface of the mesh, built as `stitch smooth` builds it (the library's "
+      "build_surface), so the same request gives the same surface. method: {}. {} "
+      "unfold_tubes: where the surface over a face made by inserting an edge between two faces "
+      "folds, choose that face's and its bridge's K-gon controls by a search that checks the "
+      "surface, as stitch does unless --no-unfold-tubes (see unfolded_tubes). The surface keeps "
+      "the mesh as it was (later edits do not change it).",
+      choice_help(method_table()), kgon_keywords_help());
+  const std::string export_doc = fmt::format(
+      "Writes the surface as `stitch smooth -o path` does, in the format the extension names: "
+      "{} (stitch.output_formats() describes each). Returns a dict: summary (the line stitch "
+      "prints), format, vertices, faces (quads or triangles of a mesh, patches of Bezier JSON, "
+      "B-spline faces of STEP and IGES), texcoords, notes (the patch set's depth and "
+      "deviation). Mesh outputs: resolution (segments per patch side, default {}), or "
+      "tolerance for adaptive triangles instead (relative to the model size); unwelded: every "
+      "patch's own grid with (u, v) and patch (.ply); ascii, float: .ply as text, or with "
+      "32-bit positions and normals; uv: the texture coordinates of a mesh read with them: {}; "
+      "'none' (default: the first, where the format has a place for them). Exact outputs: "
+      "tolerance (default {:g}, relative to the model size) and angle_tolerance (degrees, "
+      "default {:g}) of the innermost cells at extraordinary points; faces (STEP, IGES): {}; "
+      "units (STEP, IGES, declared, coordinates are not scaled): {}; kgons (Bezier JSON): add "
+      "every K-gon. welded=False and ascii_ply=True are the older names of unwelded and ascii.",
+      output_extensions(), kDefaultResolution, choice_help(uv_mode_table()),
+      PatchSetOptions{}.tolerance, PatchSetOptions{}.angle_tolerance_deg,
+      choice_help(face_packing_table()), output_units());
+
   py::class_<SurfaceHandle>(m, "Surface", "The smooth surface of a mesh: one patch per corner.")
-      .def(py::init(&make_surface), py::arg("mesh"), py::arg("method") = "mdc", py::kw_only(),
+      .def(py::init([](const MeshHandle& mesh, const std::string& method, double kgon_scale,
+                       double kgon_rotate, bool regularize, const std::string& construction,
+                       bool unfold, const std::string& boundary, double sharp_from) {
+             return make_surface(
+                 mesh, method,
+                 {kgon_scale, kgon_rotate, regularize, construction, boundary, sharp_from}, unfold);
+           }),
+           py::arg("mesh"), py::arg("method") = method_default, py::kw_only(),
            py::arg("kgon_scale") = 1.0, py::arg("kgon_rotate") = 0.0, py::arg("regularize") = false,
-           py::arg("kgon_construction") = "openings", py::arg("unfold_tubes") = true,
-           "method: 'mdc' (modified de Casteljau, the paper's), 'asc' (AS&C baseline) or 'cc' "
-           "(Catmull-Clark through OpenSubdiv). The K-gon controls apply to every K-gon with "
-           "K != 4, as stitch's --kgon-scale, --kgon-rotate (degrees), --regularize and "
-           "--kgon-construction. unfold_tubes: where the surface over a face made by inserting "
-           "an edge between two faces folds, choose that face's and its bridge's K-gon "
-           "controls by a search that checks the surface, as stitch does unless "
-           "--no-unfold-tubes (see unfolded_tubes). The surface keeps the mesh as it was "
-           "(later edits do not change it).")
+           py::arg("kgon_construction") = std::string(kgon_construction_table().front().name),
+           py::arg("unfold_tubes") = true,
+           py::arg("boundary") = std::string(boundary_table().front().name),
+           py::arg("sharp_from") = KgonOptions{}.sharp_from, init_doc.c_str())
       .def_property_readonly("unfolded_tubes", &unfolded_tubes,
                              "One dict per tube whose fitted K-gons folded: face and bridge "
                              "(0-based face and edge indices), fitted_folds and "
@@ -287,44 +442,96 @@ void bind_surface(py::module_& m) {
                              "by the descent past the grid of settings), axis_open (the line "
                              "through the openings' centres misses the tube)")
       .def_property_readonly("method",
-                             [](const SurfaceHandle& s) { return to_string(s.surface->method()); })
-      .def_property_readonly("mesh", [](const SurfaceHandle& s) { return MeshHandle{s.mesh}; })
+                             [](const SurfaceHandle& s) { return to_string(s.surface().method()); })
+      .def_property_readonly("mesh",
+                             [](const SurfaceHandle& s) {
+                               return MeshHandle{s.mesh, s.uvs};
+                             })
       .def_property_readonly(
           "patches",
           [](const py::object& self) {
-            const auto& corners = self.cast<const SurfaceHandle&>().surface->corners();
+            const auto& corners = self.cast<const SurfaceHandle&>().surface().corners();
             static_assert(sizeof(Corner) == sizeof(int));
             return view(reinterpret_cast<const int*>(corners.data()),
                         {static_cast<py::ssize_t>(corners.size())}, self);
           },
-          "(p,) int32: the patch numbers (the mesh's live half-edges)")
+          "(p,) int32: the patch numbers. A patch is a corner of the mesh (a vertex on a "
+          "face), numbered by its half-edge: 0 to p - 1 in half-edge order for a closed mesh, "
+          "with gaps where a boundary's half-edges are (they have no patch). The numbers of "
+          "evaluate, Tessellation.patches, unwelded .ply and `stitch eval`; corner_name(p) "
+          "gives the name \"V@F\" of Bezier JSON, STEP and edit operations, patch(name) and "
+          "patch_of(face=, vertex=) the number back.")
+      .def(
+          "corner_name",
+          [](const SurfaceHandle& s, py::handle patch) {
+            return corner_name(*s.mesh, corner_arg(*s.mesh, patch));
+          },
+          py::arg("patch"),
+          "The name \"V@F\" of a patch: its corner, vertex V on face F, numbered from 1 as in "
+          "Mesh.edit (\"V@F#k\" when V appears on F more than once), as `stitch eval`, Bezier "
+          "JSON and the faces of STEP and IGES files name it.")
+      .def(
+          "patch",
+          [](const SurfaceHandle& s, const std::string& name) {
+            return corner_arg(*s.mesh, py::str(name)).idx;
+          },
+          py::arg("name"), "The patch number of the corner named \"V@F\" (or \"V@F#k\").")
+      .def(
+          "patch_of",
+          [](const SurfaceHandle& s, int face, int vertex, int occurrence) {
+            return corner_of(*s.mesh, face, vertex, occurrence).idx;
+          },
+          py::kw_only(), py::arg("face"), py::arg("vertex"), py::arg("occurrence") = 0,
+          "The patch number of vertex `vertex` on face `face`, both 0-based like mesh.faces "
+          "and mesh.vertices (the name is f\"{vertex + 1}@{face + 1}\"). occurrence: k >= 1 "
+          "picks the k-th appearance of a vertex that appears on the face more than once.")
       .def(
           "tessellate",
           [](const SurfaceHandle& s, int resolution, bool welded) {
             return py::cast(run_tessellate(s, tessellation_options(s, resolution, welded)));
           },
-          py::arg("resolution") = 8, py::arg("welded") = true,
+          py::arg("resolution") = kDefaultResolution, py::arg("welded") = true,
           "Samples every patch on a (resolution + 1)^2 grid. welded: one watertight mesh "
           "sharing samples on patch boundaries; otherwise every patch's own grid.")
       .def("evaluate", &evaluate, py::arg("patches"), py::arg("u"), py::arg("v"),
            "Exact evaluation at (patch, u, v), vectorised: the arguments broadcast against each "
-           "other. Returns a namespace of position, du, dv, normal (shape + (3,), float64) and "
-           "level (int32).")
+           "other. A patch is its number (see patches) or its name \"V@F\"; an array of names "
+           "works too. Returns a namespace of position, du, dv, normal (shape + (3,), float64) "
+           "and level (int32).")
       .def("analyze", &analyze, py::kw_only(), py::arg("samples_per_side") = 8,
            "Continuity measured (normal jumps across patch boundaries, G1 at extraordinary "
            "points), as a dict with the keys of `stitch analyze --json`.")
-      .def("export", &export_surface, py::arg("path"), py::kw_only(), py::arg("resolution") = 8,
-           py::arg("welded") = true, py::arg("ascii_ply") = false,
-           "Tessellates and writes as `stitch smooth -o` does. Welded: by extension, "
-           "evaluated block by block as it is written (memory does not grow with the "
-           "resolution). Unwelded: binary .ply with every sample's position, normal, (u, v) and "
-           "patch.")
+      .def(
+          "export",
+          [](const SurfaceHandle& s, const std::string& path, std::optional<int> resolution,
+             std::optional<double> tolerance, std::optional<double> angle_tolerance,
+             const std::string& faces, const std::string& units, bool unwelded, bool ascii,
+             bool single_precision, bool kgons, std::optional<std::string> uv,
+             std::optional<bool> welded, std::optional<bool> ascii_ply) {
+            return export_surface(
+                s, path,
+                {resolution, tolerance, angle_tolerance, faces, units, unwelded, ascii,
+                 single_precision, kgons, std::move(uv), welded, ascii_ply});
+          },
+          py::arg("path"), py::kw_only(), py::arg("resolution") = py::none(),
+          py::arg("tolerance") = py::none(), py::arg("angle_tolerance") = py::none(),
+          py::arg("faces") = std::string(face_packing_table().front().name),
+          py::arg("units") = OutputSpec{}.units, py::arg("unwelded") = false,
+          py::arg("ascii") = false, py::arg("float") = false, py::arg("kgons") = false,
+          py::arg("uv") = py::none(), py::arg("welded") = py::none(),
+          py::arg("ascii_ply") = py::none(), export_doc.c_str())
       .def("_time_tessellate", &time_tessellate, py::arg("resolution"), py::arg("welded") = true,
            "Seconds the C++ tessellate() call takes, result discarded (for benchmarks).")
       .def("__repr__", [](const SurfaceHandle& s) {
-        return fmt::format("<stitch.Surface {}, {} patches>", to_string(s.surface->method()),
-                           s.surface->corners().size());
+        return fmt::format("<stitch.Surface {}, {} patches>", to_string(s.surface().method()),
+                           s.surface().corners().size());
       });
+
+  m.def("output_formats", &output_format_rows,
+        "The formats Surface.export writes, one dict per row of the library's table (as "
+        "`stitch smooth --help` lists them): name, extensions, kind ('tessellated' or 'exact'), "
+        "normals, uvs, unwelded, adaptive (what the format takes), needs_cad (written through "
+        "OpenCASCADE), available (this build writes it), memory (what the writer holds), help.");
 }
 
 }  // namespace stitch::python

@@ -177,6 +177,7 @@ TEST(BezierJson, ReadsBackBitForBit) {
     EXPECT_EQ(a.corner, b.corner);
     EXPECT_EQ(a.face, b.face);
     EXPECT_EQ(a.vertex, b.vertex);
+    EXPECT_EQ(a.occurrence, b.occurrence);
     EXPECT_EQ(a.level, b.level);
     EXPECT_EQ(a.cell_u, b.cell_u);
     EXPECT_EQ(a.cell_v, b.cell_v);
@@ -190,6 +191,27 @@ TEST(BezierJson, ReadsBackBitForBit) {
   const nlohmann::json doc = nlohmann::json::parse(testing::read_file(path));
   EXPECT_EQ(doc["version"], kBezierJsonVersion);
   EXPECT_EQ(doc["kgons"]["face"].size(), size_t(mesh.num_faces()));
+  // Each patch names its corner as operations and STEP do; the 10-sided face has V@F#k names.
+  int repeated = 0;
+  for (size_t i = 0; i < set.patches.size(); ++i) {
+    const std::string name = doc["patches"][i]["corner_name"];
+    EXPECT_EQ(name, corner_name(mesh, set.patches[i].corner));
+    EXPECT_EQ(parse_corner(mesh, name), set.patches[i].corner);
+    repeated += name.find('#') != std::string::npos;
+  }
+  EXPECT_GT(repeated, 0);
+  // Files without the names (written before they were added) read the same.
+  nlohmann::json unnamed = doc;
+  for (auto& p : unnamed["patches"]) p.erase("corner_name");
+  const PatchSet old = read_bezier_json(folder.write("old.bez.json", unnamed.dump()));
+  ASSERT_EQ(old.patches.size(), set.patches.size());
+  EXPECT_EQ(old.patches.back().net.p, set.patches.back().net.p);
+  nlohmann::json wrong = doc;
+  wrong["patches"][0]["corner_name"] = "9@9";
+  EXPECT_NE(test::error_of([&] {
+              read_bezier_json(folder.write("wrong.bez.json", wrong.dump()));
+            }).find("corner_name"),
+            std::string::npos);
 }
 
 TEST(BezierJson, RefusesOtherJsonNamingWhatIsWrong) {
@@ -393,24 +415,30 @@ TEST(CliEval, PrintsExactEvaluationAtFullPrecision) {
   const std::string in = test::example_path("cube_hole.obj");
   const HalfedgeMesh mesh = read_mesh(in);
   const Surface surface(mesh, Method::mdc);
-  // Patch 0 by number, and the corner of vertex 1 on face 2 by name, near and at the vertex.
-  folder.write("at.txt", "# patch u v, or face vertex u v\n0 0.25 0.75\n2 1 1e-9 0.3\n2 1 0 0\n");
+  // Patch 0 by number, and the corner of vertex 1 on face 2 as face and vertex, near and at the
+  // vertex, and by its name V@F.
+  folder.write(
+      "at.txt",
+      "# patch u v, or face vertex u v\n0 0.25 0.75\n2 1 1e-9 0.3\n2 1 0 0\n1@2 0 0 # by name\n");
   const auto csv = stitch_cli(folder, "eval '" + in + "' --at at.txt");
   ASSERT_EQ(csv.status, 0) << csv.err;
   std::vector<std::string> rows;
   std::stringstream lines(csv.out);
   for (std::string row; std::getline(lines, row);) rows.push_back(row);
-  ASSERT_EQ(rows.size(), 4u) << csv.out;
-  const std::array<std::pair<Corner, std::array<double, 2>>, 3> expected{
+  ASSERT_EQ(rows.size(), 5u) << csv.out;
+  const std::array<std::pair<Corner, std::array<double, 2>>, 4> expected{
       {{Corner(0), {0.25, 0.75}},
        {parse_corner(mesh, "1@2"), {1e-9, 0.3}},
+       {parse_corner(mesh, "1@2"), {0, 0}},
        {parse_corner(mesh, "1@2"), {0, 0}}}};
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     const auto [corner, uv] = expected[i];
     const SurfacePoint p = surface.evaluate(corner, uv[0], uv[1]);
     const std::vector<double> got = csv_numbers(rows[i + 1]);
-    ASSERT_EQ(got.size(), 19u);
+    ASSERT_EQ(got.size(), 20u);
     EXPECT_EQ(got[1], corner.idx);
+    // The last column names the corner as Bezier JSON, STEP and Python do.
+    EXPECT_EQ(rows[i + 1].substr(rows[i + 1].rfind(',') + 1), corner_name(mesh, corner));
     // Shortest round-trip text: the very doubles of the library, bit for bit.
     for (int k = 0; k < 3; ++k) {
       EXPECT_EQ(got[6 + k], p.position[k]);

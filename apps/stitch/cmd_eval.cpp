@@ -38,8 +38,9 @@ double parameter(std::string_view token, const std::string& where) {
   return x;
 }
 
-/// `patch u v` (patch = corner number, 0-based, as in --unwelded PLY) or `face vertex u v`
-/// (1-based, as everywhere on the command line); blank lines and # comments are skipped.
+/// `patch u v` (patch = corner number, 0-based, as in --unwelded PLY, or the corner's name V@F),
+/// or `face vertex u v` (1-based, as everywhere on the command line); blank lines and # comments
+/// are skipped.
 std::vector<Query> read_queries(const std::string& path, const HalfedgeMesh& mesh) {
   const std::string text = read_regular_file(path);
   std::vector<Query> queries;
@@ -48,17 +49,21 @@ std::vector<Query> read_queries(const std::string& path, const HalfedgeMesh& mes
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
-    std::string_view line(text.data() + pos, end - pos);
+    const std::string_view line(text.data() + pos, end - pos);
     pos = end + 1;
     ++line_number;
-    if (const size_t hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    const std::vector<std::string_view> words = split_words(line);
+    const std::vector<std::string_view> words = split_words(without_comment(line));
     if (words.empty()) continue;
     const std::string where = fmt::format("{}, line {}", path, line_number);
     Query q;
     q.line = line_number;
-    if (words.size() == 3) {
+    if (words.size() == 3 && words[0].find('@') != std::string_view::npos) {
+      try {
+        q.corner = parse_corner(mesh, words[0]);
+      } catch (const Error& e) {
+        throw_with_message(e, fmt::format("{}: {}", where, e.what()));
+      }
+    } else if (words.size() == 3) {
       int h = -1;
       const auto [p, ec] = std::from_chars(words[0].data(), words[0].data() + words[0].size(), h);
       if (ec != std::errc() || p != words[0].data() + words[0].size() || h < 0 ||
@@ -96,13 +101,14 @@ void run_eval(const EvalArgs& a) {
   if (a.format == "csv") {
     fmt::print(
         "line,patch,face,vertex,u,v,x,y,z,du_x,du_y,du_z,dv_x,dv_y,dv_z,normal_x,normal_y,"
-        "normal_z,level\n");
+        "normal_z,level,corner\n");
     for (const Query& q : queries) {
       const SurfacePoint p = surface.evaluate(q.corner, q.u, q.v);
-      fmt::print("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", q.line, q.corner.idx,
-                 mesh.face(q.corner).idx + 1, mesh.origin(q.corner).idx + 1, q.u, q.v,
+      fmt::print("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", q.line,
+                 q.corner.idx, mesh.face(q.corner).idx + 1, mesh.origin(q.corner).idx + 1, q.u, q.v,
                  p.position.x(), p.position.y(), p.position.z(), p.du.x(), p.du.y(), p.du.z(),
-                 p.dv.x(), p.dv.y(), p.dv.z(), p.normal.x(), p.normal.y(), p.normal.z(), p.level);
+                 p.dv.x(), p.dv.y(), p.dv.z(), p.normal.x(), p.normal.y(), p.normal.z(), p.level,
+                 corner_name(mesh, q.corner));
     }
     return;
   }
@@ -112,6 +118,7 @@ void run_eval(const EvalArgs& a) {
     const SurfacePoint p = surface.evaluate(q.corner, q.u, q.v);
     points.push_back({{"line", q.line},
                       {"patch", q.corner.idx},
+                      {"corner", corner_name(mesh, q.corner)},
                       {"face", mesh.face(q.corner).idx + 1},
                       {"vertex", mesh.origin(q.corner).idx + 1},
                       {"u", q.u},
@@ -136,7 +143,9 @@ void add_eval_command(CLI::App& app) {
   add_input_options(cmd, args->in);
   cmd->add_option("--at", args->at,
                   "file of points, one per line: 'patch u v' (patch = corner number from 0, as "
-                  "in --unwelded PLY) or 'face vertex u v' (1-based); u, v from 0 to 1")
+                  "in --unwelded PLY, or the corner's name V@F as in Bezier JSON and STEP) or "
+                  "'face vertex u v' (1-based); u, v from 0 to 1; the output names each corner "
+                  "V@F")
       ->required();
   add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--format", args->format, "csv or json")->capture_default_str();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "stitch/mesh/io.hpp"
+#include "stitch/topology/operation.hpp"
 
 namespace stitch {
 
@@ -44,6 +45,7 @@ json to_json(const PatchSet& set, const KgonSet* kgons) {
     json points = json::array();
     for (const Vec3& p : patch.net.p) points.push_back(point(p));
     patches.push_back({{"corner", patch.corner.idx},
+                       {"corner_name", corner_name(patch.vertex, patch.face, patch.occurrence)},
                        {"face", patch.face + 1},
                        {"vertex", patch.vertex + 1},
                        {"level", patch.level},
@@ -159,6 +161,18 @@ PatchSet read_bezier_json(const std::string& path) {
     patch.corner = Corner(r.integer(r.member(p, "corner", where), where + " corner", 0));
     patch.face = r.integer(r.member(p, "face", where), where + " face", 1) - 1;
     patch.vertex = r.integer(r.member(p, "vertex", where), where + " vertex", 1) - 1;
+    // Optional (files written before it was added have none): V@F#k gives the occurrence.
+    if (p.contains("corner_name")) {
+      const json& name = p["corner_name"];
+      if (!name.is_string()) throw r.error(where, "corner_name is not a string");
+      const std::string text = name.get<std::string>();
+      if (const size_t hash = text.find('#'); hash != std::string::npos)
+        patch.occurrence = r.integer(json::parse(text.substr(hash + 1), nullptr, false),
+                                     where + " corner_name", 1);
+      if (text != corner_name(patch.vertex, patch.face, patch.occurrence))
+        throw r.error(where, fmt::format("corner_name \"{}\" is not vertex {} on face {}", text,
+                                         patch.vertex + 1, patch.face + 1));
+    }
     patch.level = r.integer(r.member(p, "level", where), where + " level", 0);
     const json& cell = r.member(p, "cell", where);
     if (!cell.is_array() || cell.size() != 2) throw r.error(where, "cell is not [u, v]");

@@ -46,6 +46,7 @@ BezierPatch make_patch(const HalfedgeMesh& mesh, Corner corner, const ControlNet
   patch.corner = corner;
   patch.face = mesh.face(corner).idx;
   patch.vertex = mesh.origin(corner).idx;
+  patch.occurrence = corner_occurrence(mesh, corner);
   patch.level = level;
   patch.cell_u = cell_u;
   patch.cell_v = cell_v;

@@ -352,15 +352,6 @@ OperationReport report_of(const HalfedgeMesh& mesh, std::string what, Census cen
   return report;
 }
 
-/// A line without its `# comment`. '#' also marks an occurrence in a corner (V@F#k): only a '#'
-/// at the start or after a blank starts a comment.
-std::string_view without_comment(std::string_view line) {
-  for (size_t i = 0; i < line.size(); ++i)
-    if (line[i] == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))))
-      return line.substr(0, i);
-  return line;
-}
-
 /// Prefixes the operation's name to a message that does not start with it yet (the parser's).
 [[noreturn]] void rethrow_named(std::string_view name) {
   try {
@@ -373,6 +364,13 @@ std::string_view without_comment(std::string_view line) {
 }
 
 }  // namespace
+
+std::string_view without_comment(std::string_view line) {
+  for (size_t i = 0; i < line.size(); ++i)
+    if (line[i] == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))))
+      return line.substr(0, i);
+  return line;
+}
 
 std::span<const OperationInfo> operation_table() {
   return kTable;
@@ -543,17 +541,24 @@ Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text) {
   return found[occurrence == 0 ? 0 : occurrence - 1];
 }
 
-std::string corner_name(const HalfedgeMesh& mesh, Corner c) {
+int corner_occurrence(const HalfedgeMesh& mesh, Corner c) {
   const Vertex v = mesh.origin(c);
-  const Face f = mesh.face(c);
   int count = 0, occurrence = 0;
-  for (Halfedge h : mesh.face_loop(f))
+  for (Halfedge h : mesh.face_loop(mesh.face(c)))
     if (mesh.origin(h) == v) {
       ++count;
       if (h == c) occurrence = count;
     }
-  if (count > 1) return fmt::format("{}@{}#{}", number(v), number(f), occurrence);
-  return fmt::format("{}@{}", number(v), number(f));
+  return count > 1 ? occurrence : 0;
+}
+
+std::string corner_name(int vertex, int face, int occurrence) {
+  if (occurrence > 0) return fmt::format("{}@{}#{}", vertex + 1, face + 1, occurrence);
+  return fmt::format("{}@{}", vertex + 1, face + 1);
+}
+
+std::string corner_name(const HalfedgeMesh& mesh, Corner c) {
+  return corner_name(mesh.origin(c).idx, mesh.face(c).idx, corner_occurrence(mesh, c));
 }
 
 Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_view w_text) {

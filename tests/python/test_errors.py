@@ -101,11 +101,15 @@ def test_bad_primitives(name, params):
 
 
 @pytest.mark.parametrize("kwargs,message", [
-    (dict(method="loop"), "unknown method 'loop' \\(expected mdc, asc or cc\\)"),
+    # Names are parsed with the library's tables, which list the known ones.
+    (dict(method="loop"), "unknown method 'loop' \\(known: mdc, asc, cc\\)"),
     (dict(kgon_scale=0), "kgon_scale must be a number from 1e-06 to 1e\\+06, not 0"),
     (dict(kgon_scale=math.nan), "kgon_scale must be a number from .*, not nan"),
     (dict(kgon_rotate=math.inf), "kgon_rotate must be a number from -3600 to 3600, not inf"),
-    (dict(kgon_construction="exact"), "kgon_construction must be 'openings' or 'doo-sabin'"),
+    (dict(kgon_construction="exact"),
+     "unknown kgon_construction 'exact' \\(known: openings, doo-sabin\\)"),
+    (dict(boundary="soft"), "unknown boundary 'soft' \\(known: edge-and-corner, edge-only\\)"),
+    (dict(sharp_from=11), "sharp_from must be a number from 0 to 10, not 11"),
 ])
 def test_bad_surface_options(kwargs, message):
     with pytest.raises(ValueError, match=message):
@@ -143,8 +147,13 @@ def test_bad_analysis(surface):
 
 
 def test_bad_export(surface, tmp_path):
-    with pytest.raises(stitch.StitchError, match="unknown extension '.xyz'"):
+    with pytest.raises(stitch.UsageError, match="cannot tell the output format of .*out.xyz"):
         surface.export(str(tmp_path / "out.xyz"), resolution=2)
-    with pytest.raises(stitch.StitchError, match="samples are written as .ply only"):
+    with pytest.raises(stitch.UsageError,
+                       match=r"unwelded samples are written to binary PLY \(.ply\) only"):
         surface.export(str(tmp_path / "out.obj"), resolution=2, welded=False)
+    with pytest.raises(ValueError, match="resolution must be 1 to 1024"):
+        surface.export(str(tmp_path / "out.obj"), resolution=0)
+    with pytest.raises(ValueError, match="contradict"):
+        surface.export(str(tmp_path / "out.ply"), welded=True, unwelded=True)
     assert list(tmp_path.iterdir()) == []  # nothing half-written

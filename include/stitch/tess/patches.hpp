@@ -19,6 +19,8 @@ struct BezierPatch {
   Corner corner;   ///< the root patch: the mesh corner (half-edge) it lies in
   int face = 0;    ///< face of that corner (0-based index)
   int vertex = 0;  ///< vertex of that corner (0-based index)
+  /// The k of the corner's name `V@F#k` (corner_name), 0 when the vertex appears on the face once.
+  int occurrence = 0;
   int level = 0;   ///< modified de Casteljau splits from the root (0: the root itself)
   int cell_u = 0;  ///< the cell covers u in [cell_u, cell_u + 1] / 2^level of the root
   int cell_v = 0;  ///< and v in [cell_v, cell_v + 1] / 2^level

@@ -40,6 +40,9 @@ enum class Census { full, counts_only };
 
 /// The words of a line, split at white space.
 std::vector<std::string_view> split_words(std::string_view line);
+/// A line without its `# comment`. '#' also marks an occurrence in a corner (V@F#k): only a '#'
+/// at the start or after a blank starts a comment.
+std::string_view without_comment(std::string_view line);
 
 /// The typed operations, one per operator: what `stitch edit`, scripts, the modeler and Python
 /// apply. Elements are the mesh's handles; parse_operation resolves a line's 1-based numbers.
@@ -156,8 +159,15 @@ OperationReport apply_operation(HalfedgeMesh& mesh, std::string_view line,
 Corner parse_corner(const HalfedgeMesh& mesh, std::string_view text);
 
 /// Corner c as parse_corner reads it: `V@F`, or `V@F#k` when vertex V appears on face F more
-/// than once (k counts its appearances along the face from the face's first corner).
+/// than once (k counts its appearances along the face from the face's first corner). The one name
+/// of a corner, and so of its patch, everywhere: operations, `stitch eval`, Bézier JSON, the
+/// faces of STEP and IGES files, Python.
 std::string corner_name(const HalfedgeMesh& mesh, Corner c);
+/// The k of corner c's name `V@F#k`; 0 when its vertex appears on its face once (no `#k`).
+int corner_occurrence(const HalfedgeMesh& mesh, Corner c);
+/// The name of the corner of `vertex` on `face` (0-based indices) with that occurrence (0: the
+/// vertex appears on the face once), for data that keeps the three numbers without the mesh.
+std::string corner_name(int vertex, int face, int occurrence);
 
 /// Resolves an edge given as its two end vertices `V W`, or `V W@F` to pick the one on face F's
 /// loop when several edges join V and W, or `V W@F#k` for the k-th time F's loop runs from V to
