@@ -193,14 +193,6 @@ py::dict analyze(const SurfaceHandle& s, int samples_per_side) {
   return d;
 }
 
-/// Whether a file of `format` written with `spec` has a place for texture coordinates (the
-/// table's `uvs`, or the unwelded samples of a format that takes them), so no UV surface is built
-/// for a file that would not carry it.
-bool takes_uvs(const OutputFormat& format, const OutputSpec& spec) {
-  return format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0 &&
-         (format.uvs || (spec.unwelded && format.unwelded));
-}
-
 /// The keyword arguments of Surface.export, named after `stitch smooth`'s options.
 struct ExportKeywords {
   std::optional<int> resolution;
@@ -225,16 +217,7 @@ OutputSpec output_spec(const SurfaceHandle& s, const std::string& path, const Ex
   if (k.resolution) spec.resolution = *k.resolution;
   // One tolerance for both kinds of output, as `stitch smooth --tolerance`: the exact outputs'
   // cells, or adaptive triangles instead of a fixed resolution for a mesh.
-  if (k.tolerance) {
-    if (!(*k.tolerance > 0) || !std::isfinite(*k.tolerance))
-      throw UsageError(fmt::format("tolerance must be a number > 0, not {}", *k.tolerance));
-    spec.patches.tolerance = *k.tolerance;
-    if (format.kind == OutputKind::tessellated) {
-      if (k.resolution)
-        throw UsageError("tolerance and resolution exclude each other for a mesh output");
-      spec.adaptive_tolerance = *k.tolerance;
-    }
-  }
+  if (k.tolerance) set_tolerance(spec, format, *k.tolerance, k.resolution.has_value());
   if (k.angle_tolerance) spec.patches.angle_tolerance_deg = *k.angle_tolerance;
   if (format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0)
     check_tessellation_size(*s.mesh, spec.resolution);
@@ -254,7 +237,7 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
   {
     py::gil_scoped_release release;
     std::unique_ptr<UvSurface> uvs;
-    if (s.uvs && !none && takes_uvs(format, spec)) {
+    if (s.uvs && !none && writes_uvs(format, spec)) {
       uvs = std::make_unique<UvSurface>(*s.mesh, *s.uvs, mode, s.built->kgons);
       warnings = uvs->warnings();
       spec.uvs = uvs.get();

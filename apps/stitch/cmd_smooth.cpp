@@ -100,7 +100,7 @@ std::unique_ptr<UvSurface> uv_surface(const SmoothArgs& a, const HalfedgeMesh& m
     lost = "the exact outputs have no place for texture coordinates";
   else if (a.spec.adaptive_tolerance > 0)
     lost = "--tolerance writes no texture coordinates";
-  else if (!format.uvs && !(a.spec.unwelded && format.unwelded))
+  else if (!writes_uvs(format, a.spec))
     lost = fmt::format(
         "a welded {} has no place for UVs that differ across a seam (write {}, or --unwelded {})",
         format.extensions[0], output_extensions(OutputKind::tessellated), format.extensions[0]);
@@ -254,16 +254,9 @@ void add_smooth_command(CLI::App& app) {
                   "also write the Bezier patches as JSON (docs/formats.md) to this file");
   add_progress_option(cmd, args->progress);
   cmd->callback([args, resolution, tolerance] {
-    const OutputFormat& format = output_format(args->out);
-    if (tolerance->count() > 0 && format.kind == OutputKind::tessellated) {
-      if (resolution->count() > 0)
-        throw UsageError("--tolerance and --resolution exclude each other for a mesh output");
-      if (!format.adaptive)
-        throw UsageError(fmt::format(
-            "--tolerance asks a mesh output for adaptive triangles, which {} does not take",
-            format.name));
-      args->spec.adaptive_tolerance = args->spec.patches.tolerance;
-    }
+    if (tolerance->count() > 0)
+      set_tolerance(args->spec, output_format(args->out), args->spec.patches.tolerance,
+                    resolution->count() > 0);
     run_smooth(*args);
   });
 }

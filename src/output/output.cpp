@@ -78,9 +78,9 @@ OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const
 /// is the first `share` of the whole.
 PatchSet patch_set(const HalfedgeMesh& mesh, const Surface& surface, const OutputSpec& spec,
                    double share) {
-  PatchSetOptions options = spec.patches;
-  if (spec.progress) options.progress = [&](double done) { spec.progress(share * done); };
-  PatchSet set = bezier_patches(mesh, surface, options);
+  PatchSet set = bezier_patches(mesh, surface, spec.patches, [&](double done) {
+    if (spec.progress) spec.progress(share * done);
+  });
   if (!spec.note) return set;
   spec.note(fmt::format(
       "{} Bezier patches ({} exact, {} innermost cells at extraordinary points), depth {}",
@@ -344,6 +344,26 @@ std::string_view describe(MemoryModel memory) {
       return "holds the patches and OpenCASCADE's model of the file";
   }
   return "";
+}
+
+void set_tolerance(OutputSpec& spec, const OutputFormat& format, double tolerance,
+                   bool resolution_given) {
+  if (!(tolerance > 0) || !std::isfinite(tolerance))
+    throw UsageError(fmt::format("the tolerance must be a number > 0, not {}", tolerance));
+  spec.patches.tolerance = tolerance;
+  if (format.kind != OutputKind::tessellated) return;
+  if (resolution_given)
+    throw UsageError("a tolerance and a resolution exclude each other for a mesh output");
+  if (!format.adaptive)
+    throw UsageError(fmt::format(
+        "a tolerance asks a mesh output for adaptive triangles, which {} does not take",
+        format.name));
+  spec.adaptive_tolerance = tolerance;
+}
+
+bool writes_uvs(const OutputFormat& format, const OutputSpec& spec) {
+  return format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0 &&
+         (format.uvs || (spec.unwelded && format.unwelded));
 }
 
 void check_output(const std::string& path, const OutputSpec& spec,

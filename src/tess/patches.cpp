@@ -219,7 +219,8 @@ int PatchSet::num_exact() const {
 }
 
 PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
-                        const PatchSetOptions& options) {
+                        const PatchSetOptions& options,
+                        const std::function<void(double)>& progress) {
   if (surface.method() == Method::cc)
     throw UsageError(
         "the Catmull-Clark surface (--method cc) is not a set of Bezier patches; use mdc or asc");
@@ -306,7 +307,7 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
         for (Cell& c : regular) cells_of_root[c.root].push_back(std::move(c));
       }
       frontier = std::move(next);
-      if (options.progress) options.progress(double(settled) / double(chains));
+      if (progress) progress(double(settled) / double(chains));
     }
     merge_points(set.points_without_normal);
   }

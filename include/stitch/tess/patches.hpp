@@ -51,9 +51,6 @@ struct PatchSetOptions {
   double angle_tolerance_deg = 0.1;
   /// Depth at which a tolerance that cannot be reached is refused.
   int max_depth = 30;
-  /// Told the fraction (0..1) of the extraordinary points whose depth is settled, from one
-  /// thread at a time; none when empty.
-  std::function<void(double)> progress;
 };
 
 struct PatchSet {
@@ -76,8 +73,11 @@ struct PatchSet {
 /// tolerances (each point has its own depth); for asc, the roots as they are. Throws
 /// UsageError for cc (not a set of Bézier patches), a tolerance <= 0 or not finite,
 /// and stitch::Error naming the place when max_depth does not reach the tolerance.
+/// `progress` (optional) is told the fraction (0..1) of the extraordinary points whose depth is
+/// settled, from one thread at a time.
 PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
-                        const PatchSetOptions& options = {});
+                        const PatchSetOptions& options = {},
+                        const std::function<void(double)>& progress = {});
 
 /// The volume the patches enclose, by the divergence theorem (a third of the integral of
 /// p . (du x dv)), exact for their polynomials up to round-off; the volume of the solid they

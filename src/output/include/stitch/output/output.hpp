@@ -103,6 +103,18 @@ std::string output_units();
 /// One line for --help: what each memory model means.
 std::string_view describe(MemoryModel memory);
 
+/// One tolerance for both kinds of output, as `stitch smooth --tolerance` and Python's
+/// `export(tolerance=...)` take it: for an exact format the cells' position tolerance; for a mesh
+/// format adaptive triangles instead of a fixed resolution, which it refuses together with an
+/// explicit resolution or for a format that takes no adaptive triangles. Throws UsageError.
+void set_tolerance(OutputSpec& spec, const OutputFormat& format, double tolerance,
+                   bool resolution_given);
+
+/// Whether a file of `format` written with `spec` has a place for texture coordinates (the row's
+/// `uvs`, or the unwelded samples of a format that takes them), so that no UV surface is built
+/// for a file that would not carry it.
+bool writes_uvs(const OutputFormat& format, const OutputSpec& spec);
+
 /// Refuses, before any work, a request that would fail later: an unknown extension, an option
 /// the format does not take (unwelded, adaptive), a unit STEP and IGES do not know, an exact
 /// format in a build without OpenCASCADE. Throws UsageError or OutputError.
