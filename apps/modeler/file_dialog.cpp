@@ -195,9 +195,7 @@ void draw_dialog(App& app, OpenFileDialog& d) {
   const auto& recent = app.files.recent.paths();
   std::vector<const std::string*> matching;
   for (const std::string& p : recent)
-    if (b.showing_all_files() || std::find(b.extensions().begin(), b.extensions().end(),
-                                           file_extension(p)) != b.extensions().end())
-      matching.push_back(&p);
+    if (b.showing_all_files() || has_extension(p, b.extensions())) matching.push_back(&p);
   if (!matching.empty() && ui.header("Recent files", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (const std::string* p : matching) {
       const std::string label = elided(*p, ems(30));
@@ -246,7 +244,9 @@ void request_file_dialog(App& app, FileAction action, fs::path folder) {
   // Save as starts from the document's own name.
   if (action == FileAction::save_as && !s.path.empty())
     d.browser.set_name(fs::path(s.path).filename().string());
-  if (action == FileAction::export_surface) d.browser.set_name("smooth.ply");
+  // Export proposes the first output format (the dialog's first extension).
+  if (action == FileAction::export_surface)
+    d.browser.set_name("smooth" + d.browser.extensions().front());
   copy_name(d);
   app.files.pending = std::move(d);
 }

@@ -46,15 +46,16 @@ void open_document(App& app, const Options& o) {
     return;
   }
   const std::string autosave = autosave_path(o.file);
+  // The status says what was opened, and which tubes' controls were chosen.
   if (!autosave_is_newer(autosave, o.file)) {
-    open_file(s, o.file);
+    app.status = open_file(s, o.file);
   } else if (o.recover) {
     open_file(s, autosave);
     s.path = o.file;
     s.document.mark_modified();
     app.status = "recovered " + autosave;
   } else {
-    open_file(s, o.file);
+    app.status = open_file(s, o.file);
     if (o.script.empty() && !o.exit_after) {
       app.autosave.offer_pending = true;
       app.autosave.offered_path = autosave;
@@ -63,6 +64,9 @@ void open_document(App& app, const Options& o) {
                 << "; run with --recover to load it\n";
     }
   }
+  // Printed as the `open` line prints it.
+  if (const auto& u = s.tube_unfoldings(); !u.empty())
+    app.hooks.print(describe_unfoldings(s.document.mesh(), u));
 }
 
 /// The modeler in its window: the document, the script, the screenshot, then the loop.

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "commands.hpp"
 #include "file_dialog.hpp"
@@ -21,11 +23,31 @@ namespace {
 constexpr const char* kPickKinds[] = {"vertex", "edge", "face", "corner"};
 constexpr const char* kDragTools[] = {"view plane", "x", "y", "z"};
 constexpr const char* kKgonKinds[] = {"face", "vertex", "edge"};
-constexpr const char* kMethods[] = {"mdc", "asc", "cc"};
-constexpr const char* kSplits[] = {"off", "mdc", "asc", "cc"};
-constexpr const char* kModes[] = {"shaded", "zebra", "isophote", "levels", "patches", "input"};
 constexpr const char* kOverlays[] = {"mesh", "kgons", "nets", "tess"};
 constexpr const char* kViews[] = {"front", "back", "left", "right", "top", "bottom", "iso"};
+
+/// A combo over the names of `table` showing the row of `current`; the row chosen, if one was.
+template <class T>
+const Choice<T>* choice_combo(Widgets& ui, const char* label, ChoiceTable<T> table,
+                              const T& current) {
+  // ImGui takes C strings; the table's names are views.
+  std::vector<std::string> names;
+  int index = 0;
+  for (const Choice<T>& c : table) {
+    if (c.value == current) index = int(names.size());
+    names.emplace_back(c.name);
+  }
+  std::vector<const char*> items;
+  for (const std::string& n : names) items.push_back(n.c_str());
+  if (!ui.combo(label, &index, items.data(), int(items.size()))) return nullptr;
+  return &table[index];
+}
+
+/// `command NAME`, for the row a combo chose.
+template <class T>
+std::string line_of(std::string_view command, const Choice<T>& row) {
+  return fmt::format("{} {}", command, row.name);
+}
 
 void picking_section(App& app, Widgets& ui) {
   const Session& s = app.session;
@@ -247,17 +269,15 @@ void display_panel(App& app, Widgets& ui, const ScreenRect& area) {
   const Session& s = app.session;
   place_panel(area, 1);
   ImGui::Begin("Display", nullptr, kPanelFlags);
-  int method = int(s.display.method);
-  if (ui.combo("method", &method, kMethods, 3))
-    run_line(app, std::string("method ") + kMethods[method]);
-  int split = s.display.split ? int(*s.display.split) + 1 : 0;
-  if (ui.combo("split with", &split, kSplits, 4))
-    run_line(app, std::string("split ") + kSplits[split]);
+  if (const auto* row = choice_combo(ui, "method", method_table(), s.display.method))
+    run_line(app, line_of("method", *row));
+  if (const auto* row = choice_combo(ui, "split with", split_table(), s.display.split))
+    run_line(app, line_of("split", *row));
   int resolution = s.display.resolution;
   if (ui.slider("resolution", &resolution, 1, 32) && resolution != s.display.resolution)
     run_line(app, fmt::format("resolution {}", resolution));
-  int mode = s.display.input_polygons ? 5 : int(s.display.mode);
-  if (ui.combo("mode", &mode, kModes, 6)) run_line(app, std::string("mode ") + kModes[mode]);
+  if (const auto* row = choice_combo(ui, "mode", display_mode_table(), display_mode(s.display)))
+    run_line(app, line_of("mode", *row));
   for (int o = 0; o < num_overlays; ++o) {
     bool on = s.display.overlays[o];
     if (o) ImGui::SameLine();

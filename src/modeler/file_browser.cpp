@@ -11,8 +11,8 @@
 #include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/project/project_file.hpp"
-#include "stitch/tess/export.hpp"
 
 namespace stitch::modeler {
 
@@ -38,12 +38,6 @@ std::string lower(std::string_view text) {
   return out;
 }
 
-bool has_extension(const std::string& name, const std::vector<std::string>& extensions) {
-  if (extensions.empty()) return true;
-  const std::string ext = file_extension(name);
-  return std::find(extensions.begin(), extensions.end(), ext) != extensions.end();
-}
-
 bool name_before(const FileEntry& a, const FileEntry& b) {
   if (a.is_folder != b.is_folder) return a.is_folder;
   const std::string la = lower(a.name), lb = lower(b.name);
@@ -59,8 +53,18 @@ std::vector<std::string> save_extensions() {
   return joined(kProjectExtensions, kMeshWriteExtensions);
 }
 std::vector<std::string> export_extensions() {
-  // .json: the Bézier patches (session.hpp, `export`).
-  return joined(kSurfaceMeshExtensions, std::array<std::string_view, 1>{".json"});
+  std::vector<std::string_view> all;
+  for (const OutputFormat& f : output_formats())
+    for (std::string_view e : f.extensions)
+      if (!e.empty()) all.push_back(e);
+  return joined(all);
+}
+
+bool has_extension(std::string_view name, const std::vector<std::string>& extensions) {
+  const std::string lowered = lower(name);
+  return extensions.empty() ||
+         std::any_of(extensions.begin(), extensions.end(),
+                     [&](const std::string& e) { return lowered.ends_with(e); });
 }
 
 std::vector<FileEntry> list_folder(const fs::path& folder,

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
@@ -37,7 +38,46 @@ json section(const ProjectFile& file, const char* name) {
   return json::parse(it->second);
 }
 
+/// The rows of a library's table, as rows of a modeler's table of a wider type.
+template <class T, class Library>
+std::vector<Choice<T>> rows_of(ChoiceTable<Library> library) {
+  std::vector<Choice<T>> rows;
+  for (const Choice<Library>& c : library) rows.push_back({c.name, c.value, c.help});
+  return rows;
+}
+
 }  // namespace
+
+ChoiceTable<DisplayMode> display_mode_table() {
+  static const std::vector<Choice<DisplayMode>> table = [] {
+    std::vector<Choice<DisplayMode>> rows = rows_of<DisplayMode>(shading_mode_table());
+    // The modeler's own mode: the renderer has none for the input polygons, the modeler draws
+    // them itself.
+    rows.push_back({"input", std::nullopt, "the input polygons instead of the smooth surface"});
+    return rows;
+  }();
+  return table;
+}
+
+DisplayMode display_mode(const DisplaySettings& display) {
+  return display.input_polygons ? DisplayMode() : DisplayMode(display.mode);
+}
+
+void set_display_mode(DisplaySettings& display, DisplayMode mode) {
+  display.input_polygons = !mode;
+  if (mode) display.mode = *mode;
+}
+
+ChoiceTable<std::optional<Method>> split_table() {
+  static const std::vector<Choice<std::optional<Method>>> table = [] {
+    // The modeler's own choice first: no second view.
+    std::vector<Choice<std::optional<Method>>> rows{{"off", std::nullopt, "one view"}};
+    const auto methods = rows_of<std::optional<Method>>(method_table());
+    rows.insert(rows.end(), methods.begin(), methods.end());
+    return rows;
+  }();
+  return table;
+}
 
 bool is_project_path(const std::string& path) {
   return stitch::is_project_path(path);

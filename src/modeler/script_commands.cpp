@@ -11,7 +11,7 @@
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/modeler/session.hpp"
-#include "stitch/tess/export.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace stitch::modeler {
@@ -43,7 +43,7 @@ int integer(const std::string& text, const std::string& what) {
   return v;
 }
 
-void expect(const std::vector<std::string>& w, size_t min, size_t max, const char* usage) {
+void expect(const std::vector<std::string>& w, size_t min, size_t max, std::string_view usage) {
   if (w.size() - 1 < min || w.size() - 1 > max) throw UsageError(fmt::format("usage: {}", usage));
 }
 
@@ -78,6 +78,12 @@ Vec3 offset_from(const std::string& text) {
   const Vec3 p = vector_at(parts, 0);
   limits::check_coordinates(p, "the offset");
   return p;
+}
+
+/// "NAME a|b|c": the synopsis of a line that takes one name of `table`.
+template <class T>
+std::string choice_synopsis(std::string_view name, ChoiceTable<T> table) {
+  return std::string(name) + " " + choice_names(table, "|");
 }
 
 /// Prints `text` where the application shows reports, and returns it as the line's message.
@@ -238,7 +244,7 @@ ScriptResult run_undo_redo(Session& s, const ScriptLine& line, const ScriptHooks
 }
 
 ScriptResult run_method(Session& s, const ScriptLine& line, const ScriptHooks&) {
-  expect(line.words, 1, 1, "method mdc|asc|cc");
+  expect(line.words, 1, 1, choice_synopsis("method", method_table()));
   const Method method = parse_method(line.words[1]);
   s.last_update = s.surface.set_method(s.document.mesh(), s.document.kgon_options(), method);
   s.display.method = method;
@@ -256,18 +262,8 @@ ScriptResult run_resolution(Session& s, const ScriptLine& line, const ScriptHook
 }
 
 ScriptResult run_mode(Session& s, const ScriptLine& line, const ScriptHooks&) {
-  expect(line.words, 1, 1, "mode shaded|zebra|isophote|levels|patches|input");
-  const std::string& mode = line.words[1];
-  if (mode == "input") {
-    s.display.input_polygons = true;
-    return {};
-  }
-  try {
-    s.display.mode = parse_shading_mode(mode);
-  } catch (const UsageError& e) {
-    throw UsageError(std::string(e.what()) + " (or input)");
-  }
-  s.display.input_polygons = false;
+  expect(line.words, 1, 1, choice_synopsis("mode", display_mode_table()));
+  set_display_mode(s.display, parse_choice(display_mode_table(), line.words[1], "display mode"));
   return {};
 }
 
@@ -287,16 +283,8 @@ ScriptResult run_overlay(Session& s, const ScriptLine& line, const ScriptHooks&)
 }
 
 ScriptResult run_split(Session& s, const ScriptLine& line, const ScriptHooks&) {
-  expect(line.words, 1, 1, "split off|mdc|asc|cc");
-  if (line.words[1] == "off") {
-    s.display.split.reset();
-    return {};
-  }
-  try {
-    s.display.split = parse_method(line.words[1]);
-  } catch (const UsageError& e) {
-    throw UsageError(std::string(e.what()) + " (or off)");
-  }
+  expect(line.words, 1, 1, choice_synopsis("split", split_table()));
+  s.display.split = parse_choice(split_table(), line.words[1], "split view");
   return {};
 }
 
@@ -355,13 +343,17 @@ ScriptResult run_save(Session& s, const ScriptLine& line, const ScriptHooks&) {
   return {false, "saved " + path};
 }
 
-ScriptResult run_export(Session& s, const ScriptLine& line, const ScriptHooks&) {
+/// `export`'s help: the formats of the table of output formats.
+std::string export_help() {
+  return "the smooth surface as shown (method, resolution, K-gon controls), in the format its "
+         "extension names: " +
+         output_extensions();
+}
+
+ScriptResult run_export(Session& s, const ScriptLine& line, const ScriptHooks& hooks) {
   const std::string path = line.rest();
-  if (path.empty())
-    throw UsageError(
-        fmt::format("usage: export PATH (the smooth surface: {}; or .json for the Bezier patches)",
-                    extension_list(kSurfaceMeshExtensions)));
-  return {false, export_surface(s, path)};
+  if (path.empty()) throw UsageError("usage: export PATH: " + export_help());
+  return {false, export_surface(s, path, hooks.print)};
 }
 
 ScriptResult run_append(Session& s, const ScriptLine& line, const ScriptHooks&) {
@@ -379,11 +371,14 @@ ScriptResult run_append(Session& s, const ScriptLine& line, const ScriptHooks&) 
   return {false, append_file(s, path, offset)};
 }
 
-ScriptResult run_open(Session& s, const ScriptLine& line, const ScriptHooks&) {
+ScriptResult run_open(Session& s, const ScriptLine& line, const ScriptHooks& hooks) {
   const std::string path = line.rest();
   if (path.empty()) throw UsageError("usage: open PATH");
-  open_file(s, path);
-  return {false, "opened " + path};
+  ScriptResult result{false, open_file(s, path)};
+  // What the tube policy chose, printed as an operation's unfoldings are.
+  if (const auto& u = s.tube_unfoldings(); !u.empty() && hooks.print)
+    hooks.print(describe_unfoldings(s.document.mesh(), u));
+  return result;
 }
 
 ScriptResult run_info(Session& s, const ScriptLine& line, const ScriptHooks& hooks) {
@@ -494,6 +489,7 @@ ScriptLine read_script_line(std::string_view line) {
 
 std::span<const ScriptCommand> script_command_table() {
   // The order of `help` and of the unknown-command message; docs/modeler.md describes each row.
+  // Built once: some synopses and helps read the library's tables.
   static const std::array<ScriptCommand, 27> table{{
       {"primitive", "primitive NAME [PARAMS]",
        "a new document from a primitive (cube, torus 8 6, ...); undoable", run_primitive},
@@ -510,13 +506,14 @@ std::span<const ScriptCommand> script_command_table() {
        run_kgon},
       {"undo", "undo", "takes the last edit back", run_undo_redo},
       {"redo", "redo", "makes the edit undone last again", run_undo_redo},
-      {"method", "method mdc|asc|cc", "the surface's method", run_method},
+      {"method", choice_synopsis("method", method_table()), "the surface's method", run_method},
       {"resolution", "resolution N", "segments per patch side", run_resolution},
-      {"mode", "mode shaded|zebra|isophote|levels|patches|input",
-       "the shading, or the input polygons", run_mode},
+      {"mode", choice_synopsis("mode", display_mode_table()), "the shading, or the input polygons",
+       run_mode},
       {"overlay", "overlay mesh|kgons|nets|tess|markers on|off", "shows or hides an overlay",
        run_overlay},
-      {"split", "split off|mdc|asc|cc", "a side-by-side view with a second method", run_split},
+      {"split", choice_synopsis("split", split_table()), "a side-by-side view with a second method",
+       run_split},
       {"view", "view front|back|left|right|top|bottom|iso", "a standard view, the model framed",
        run_view},
       {"frame", "frame all|selection", "fits the model or the selection into the view", run_frame},
@@ -526,10 +523,7 @@ std::span<const ScriptCommand> script_command_table() {
        run_screenshot},
       {"save", "save [PATH]",
        "saves the project (.stitch) or the mesh, to PATH or to the document's file", run_save},
-      {"export", "export PATH",
-       "the smooth surface as shown: .obj .ply .off .stl .glb .gltf, or .json for the Bezier "
-       "patches",
-       run_export},
+      {"export", "export PATH", export_help(), run_export},
       {"open", "open PATH", "opens a mesh or a project", run_open},
       {"append", "append PATH [--offset X,Y,Z]",
        "adds a mesh or project as one more component, moved by the offset (one undo step)",

@@ -6,18 +6,34 @@
 #include <chrono>
 
 #include "sort_unique.hpp"
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/project/project_file.hpp"
-#include "stitch/tess/bezier_json.hpp"
-#include "stitch/tess/export.hpp"
-#include "stitch/tess/patches.hpp"
 
 namespace stitch::modeler {
 
-Session::Session(HalfedgeMesh mesh) : document(std::move(mesh)) {
-  rebuild();
+Session::Session(HalfedgeMesh mesh) {
+  load({std::move(mesh), {}});
   view.set_standard(View::iso, mesh_bounds(), view_aspect());
+}
+
+void Session::load(DocumentState state) {
+  // build_surface's recipe, so that a document shows the surface `stitch smooth` writes for it.
+  const auto start = std::chrono::steady_clock::now();
+  SurfaceKgons chosen =
+      surface_kgons(state.mesh, {display.method, std::move(state.kgons), unfold_folding_tubes});
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  document = Document(std::move(state.mesh), std::move(chosen.kgons));
+  selection.reset();
+  rebuild();
+  unfoldings_ = std::move(chosen.tubes);
+  if (!unfoldings_.empty()) {
+    unfold_ms_ = ms;
+    last_update.milliseconds += ms;
+  }
 }
 
 void Session::remember(Change change) {
@@ -149,8 +165,8 @@ void Session::fall_back_from_cc(const std::string& why) {
   // give a face no limit surface); the edit stands and the display switches to the paper's
   // method.
   if (display.method != Method::cc) throw UsageError(why);
-  display.method = Method::mdc;
-  warning = why + "; showing mdc instead";
+  display.method = method_table().front().value;
+  warning = fmt::format("{}; showing {} instead", why, to_string(display.method));
   last_update =
       surface.rebuild(document.mesh(), document.kgon_options(), display.method, display.resolution);
 }
@@ -170,23 +186,26 @@ Project Session::project() const {
   return {document.state(), view, display};
 }
 
-void open_file(Session& session, const std::string& path) {
-  if (is_project_path(path)) {
+std::string open_file(Session& session, const std::string& path) {
+  const bool project = is_project_path(path);
+  DocumentState state;
+  if (project) {
     Project p = load_project(path);
-    session.document = Document(std::move(p.state.mesh), std::move(p.state.kgons));
+    state = std::move(p.state);
     session.view = p.view;
-    session.display = p.display;
+    session.display = p.display;  // the project's method is the request's
   } else {
     BuildOptions build;
     build.allow_two_gons = true;
-    session.document = Document(read_mesh(path, build));
-    session.view.set_standard(View::iso, BoundingBox{});
+    state.mesh = read_mesh(path, build);
   }
   session.path = path;
-  session.selection.reset();
-  session.rebuild();
-  if (!is_project_path(path))
-    session.view.set_standard(View::iso, session.mesh_bounds(), session.view_aspect());
+  session.load(std::move(state));
+  if (!project) session.view.set_standard(View::iso, session.mesh_bounds(), session.view_aspect());
+  std::string message = "opened " + path;
+  if (const auto& u = session.tube_unfoldings(); !u.empty())
+    message += "; " + describe_unfoldings(session.document.mesh(), u);
+  return message;
 }
 
 void save_file(Session& session, const std::string& path) {
@@ -230,21 +249,15 @@ std::string append_file(Session& session, const std::string& path, const Vec3& o
   return message;
 }
 
-std::string export_surface(const Session& session, const std::string& path) {
+std::string export_surface(const Session& session, const std::string& path,
+                           const std::function<void(const std::string&)>& note) {
+  OutputSpec spec;
+  spec.resolution = session.display.resolution;
+  spec.note = note;
+  check_output(path, spec);  // an unknown extension before the surface is built for nothing
   const HalfedgeMesh& mesh = session.document.mesh();
-  const Method method = session.display.method;
-  const Surface surface(mesh, method, session.document.kgon_options());
-  const std::string ext = file_extension(path);
-  if (ext == ".json") {
-    const PatchSet set = bezier_patches(mesh, surface);
-    write_bezier_json(path, set);
-    return fmt::format("exported {} ({} Bezier patches, depth {}, method {})", path,
-                       set.patches.size(), set.depth, to_string(method));
-  }
-  const SurfaceFileCounts counts =
-      write_smooth_surface(path, mesh, surface, session.display.resolution);
-  return fmt::format("exported {} ({} vertices, {} quads, method {}, resolution {})", path,
-                     counts.vertices, counts.quads, to_string(method), session.display.resolution);
+  const Surface surface(mesh, session.display.method, session.document.kgon_options());
+  return fmt::format("exported {} ({})", path, write_surface(path, mesh, surface, spec).summary);
 }
 
 std::optional<KgonTarget> kgon_target(const Session& s) {

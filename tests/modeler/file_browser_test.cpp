@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "stitch/error.hpp"
+#include "stitch/output/output.hpp"
 #include "temp_folder.hpp"
 
 namespace stitch::modeler {
@@ -45,6 +46,39 @@ TEST(ModelerFileBrowser, EachActionListsTheFormatsOfItsReadersOrWriters) {
   EXPECT_FALSE(has(save, ".glb"));  // meshes are not written as glTF
   for (const char* e : {".obj", ".ply", ".glb", ".gltf", ".json"}) EXPECT_TRUE(has(out, e)) << e;
   EXPECT_FALSE(has(out, ".stitch"));
+  // Export offers every extension of the table of output formats, and nothing else.
+  size_t extensions = 0;
+  for (const OutputFormat& f : output_formats())
+    for (std::string_view e : f.extensions)
+      if (!e.empty()) {
+        EXPECT_TRUE(has(out, std::string(e))) << e;
+        ++extensions;
+      }
+  EXPECT_EQ(out.size(), extensions);
+  EXPECT_EQ(out.front(), output_formats().front().extensions[0]);
+  for (const char* e : {".step", ".stp", ".igs", ".iges", ".bez.json"})
+    EXPECT_TRUE(has(out, e)) << e;
+}
+
+TEST(ModelerFileBrowser, ExportListsAndNamesEveryOutputFormat) {
+  stitch::testing::TempFolder dir;
+  fill(dir);
+  for (const char* name : {"p.bez.json", "q.STEP", "r.igs", "s.iges", "t.stp"})
+    dir.write(name, "x");
+  FileBrowser b(dir.path(), export_extensions(), false);
+  EXPECT_EQ(names(b.entries()), (std::vector<std::string>{"Archive/", "meshes/", "A.OBJ", "b.obj",
+                                                          "c.ply", "p.bez.json", "q.STEP", "r.igs",
+                                                          "s.iges", "surface.glb", "t.stp"}));
+  // A name without an output extension gets the first format's; a two-dot one is kept.
+  b.set_name("smooth");
+  EXPECT_EQ(b.enter(), fs::weakly_canonical(dir.path()) /
+                           ("smooth" + std::string(output_formats().front().extensions[0])));
+  b.set_name("patches.bez.json");
+  EXPECT_EQ(b.enter(), fs::weakly_canonical(dir.path()) / "patches.bez.json");
+  EXPECT_TRUE(has_extension("P.BEZ.JSON", {".bez.json"}));
+  EXPECT_FALSE(has_extension("p.json", {".bez.json"}));
+  EXPECT_FALSE(has_extension("notes.txt", {".step"}));
+  EXPECT_TRUE(has_extension("notes.txt", {}));
 }
 
 TEST(ModelerFileBrowser, ListsFoldersFirstThenMatchingFilesSortedWithoutCase) {

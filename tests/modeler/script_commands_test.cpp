@@ -10,6 +10,7 @@
 #include "docs_text.hpp"
 #include "printed_lines.hpp"
 #include "stitch/modeler/session.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 
@@ -50,6 +51,43 @@ TEST(ScriptCommands, TheModelerPageDescribesEveryRow) {
   ASSERT_FALSE(docs.empty()) << "docs/modeler.md not found";
   for (const ScriptCommand& c : script_command_table())
     EXPECT_TRUE(names_in_code(docs, c.name)) << "docs/modeler.md does not name `" << c.name << "`";
+}
+
+TEST(ScriptCommands, LinesThatTakeANameReadTheLibrarysTables) {
+  auto row = [](std::string_view name) {
+    return *find_script_command(script_command_table(), name);
+  };
+  EXPECT_EQ(row("method").synopsis, "method " + choice_names(method_table(), "|"));
+  // The modeler's own rows: "off" before the methods, "input" after the shading modes.
+  EXPECT_EQ(row("split").synopsis, "split off|" + choice_names(method_table(), "|"));
+  EXPECT_EQ(row("mode").synopsis, "mode " + choice_names(shading_mode_table(), "|") + "|input");
+  EXPECT_NE(row("export").help.find(output_extensions()), std::string::npos) << row("export").help;
+
+  Session s(make_cube());
+  for (const Choice<Method>& m : method_table()) {
+    ASSERT_FALSE(run_script(s, {"method " + std::string(m.name)}, {}));
+    EXPECT_EQ(s.display.method, m.value);
+    EXPECT_EQ(s.surface.method(), m.value);
+  }
+  for (const Choice<std::optional<Method>>& m : split_table()) {
+    ASSERT_FALSE(run_script(s, {"split " + std::string(m.name)}, {}));
+    EXPECT_EQ(s.display.split, m.value);
+  }
+  for (const Choice<DisplayMode>& m : display_mode_table()) {
+    ASSERT_FALSE(run_script(s, {"mode " + std::string(m.name)}, {}));
+    EXPECT_EQ(display_mode(s.display), m.value);
+    EXPECT_EQ(s.display.input_polygons, !m.value);
+  }
+  const auto error = run_script(s, {"mode frobnicate"}, {});
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->message, "unknown display mode 'frobnicate' (known: " +
+                                choice_names(display_mode_table()) + ")");
+  EXPECT_TRUE(run_script(s, {"split frobnicate"}, {}));
+  // A new session's display: the tables' defaults.
+  const DisplaySettings fresh;
+  EXPECT_EQ(fresh.method, method_table().front().value);
+  EXPECT_EQ(fresh.mode, shading_mode_table().front().value);
+  EXPECT_EQ(fresh.resolution, kDefaultResolution);
 }
 
 TEST(ScriptCommands, LinesRunTheRowTheirFirstWordNames) {

@@ -1,12 +1,16 @@
 // After a topology edit that makes a tube whose surface folds, the session chooses K-gon controls
-// for it (include/stitch/analysis/unfold_tubes.hpp) as part of the edit's undo step.
+// for it (include/stitch/analysis/unfold_tubes.hpp) as part of the edit's undo step; a document
+// opened with such a tube shows the surface build_surface builds for it.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
+#include "cli_run.hpp"
 #include "incremental_check.hpp"
 #include "printed_lines.hpp"
+#include "stitch/analysis/build_surface.hpp"
+#include "stitch/mesh/io.hpp"
 #include "stitch/modeler/session.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
@@ -31,6 +35,117 @@ std::vector<Corner> whole_surface_problems(const Session& s) {
   return check_patches(mesh, Surface(mesh, Method::mdc, s.document.kgon_options()),
                        mesh.patch_corners())
       .problem_corners;
+}
+
+/// Prism 30 with the folding tube, saved as a mesh file (which has no K-gon controls).
+std::string folding_tube_file(const stitch::testing::TempFolder& dir) {
+  Document doc(make_prism(kPrism));
+  doc.apply_operation(kTube);
+  const std::string path = dir.file("tube.obj");
+  write_mesh(path, doc.mesh());
+  return path;
+}
+
+/// The mesh file as the modeler reads it.
+HalfedgeMesh read_as_modeler(const std::string& path) {
+  BuildOptions build;
+  build.allow_two_gons = true;
+  return read_mesh(path, build);
+}
+
+/// The session's live tessellation is tessellate() of `surface` (one grid per patch), bit for bit.
+void expect_shows(const Session& s, const HalfedgeMesh& mesh, const Surface& surface) {
+  TessellationOptions t;
+  t.resolution = s.surface.resolution();
+  t.welded = false;
+  const TessellatedMesh expected = tessellate(mesh, surface, t);
+  const TessellatedMesh& got = s.surface.tessellation();
+  const int per = s.surface.vertices_per_patch();
+  const auto corners = mesh.patch_corners();
+  ASSERT_EQ(expected.num_vertices(), static_cast<int>(corners.size()) * per);
+  int mismatches = 0;
+  for (size_t k = 0; k < corners.size(); ++k)
+    for (int i = 0; i < per; ++i) {
+      const size_t a = k * per + i, b = static_cast<size_t>(corners[k].idx) * per + i;
+      mismatches +=
+          got.positions[b] == expected.positions[a] && got.normals[b] == expected.normals[a] ? 0
+                                                                                             : 1;
+    }
+  EXPECT_EQ(mismatches, 0);
+}
+
+TEST(TubeUnfolding, AnOpenedDocumentShowsTheSurfaceOfTheRequest) {
+  stitch::testing::TempFolder dir;
+  const std::string path = folding_tube_file(dir);
+  const HalfedgeMesh mesh = read_as_modeler(path);
+  // mdc, whose search cleans this tube, and cc, which searches nothing (under asc no setting
+  // cleans it: the search runs to its end, about 100 s on the 2-core VM).
+  for (const Method method : {Method::mdc, Method::cc}) {
+    const Choice<Method>& m = choice_of(method_table(), method);
+    SCOPED_TRACE(std::string(m.name));
+    Session s(make_cube());  // cc refuses an empty mesh
+    ASSERT_FALSE(run_script(s, {fmt::format("method {}", m.name), "resolution 5"}, {}));
+    Printed printed;
+    const ScriptResult r = run_script_line(s, "open " + path, printed.hooks());
+    ASSERT_TRUE(s.document.mesh() == mesh);
+    const BuiltSurface built = build_surface(mesh, {m.value, {}, true});
+    expect_shows(s, mesh, built.surface);
+    // The chosen controls are the document's: what is shown, and what a project saves.
+    EXPECT_EQ(s.document.kgon_options().face, built.kgons.face);
+    EXPECT_EQ(s.document.kgon_options().edge, built.kgons.edge);
+    EXPECT_FALSE(s.document.modified());  // the file gives the same document again
+    EXPECT_FALSE(s.document.can_undo());
+    EXPECT_EQ(s.tube_unfoldings().size(), built.tubes.size());
+    if (m.value != Method::mdc) continue;
+    ASSERT_EQ(s.tube_unfoldings().size(), 1u);
+    EXPECT_GT(s.tube_unfoldings()[0].fitted.folds, 0);
+    EXPECT_TRUE(s.tube_unfoldings()[0].unfolded());
+    EXPECT_FALSE(s.document.kgon_options().face.empty());
+    // Said as an edit's unfoldings are: in the line's message and printed.
+    const std::string said = describe_unfoldings(mesh, s.tube_unfoldings());
+    EXPECT_EQ(r.message, "opened " + path + "; " + said);
+    EXPECT_EQ(printed.lines, std::vector<std::string>{said});
+    ASSERT_FALSE(run_script(s, {"check"}, {}));
+    EXPECT_TRUE(s.surface_problems().empty()) << s.surface_problems().summary();
+  }
+}
+
+TEST(TubeUnfolding, OpenedWithTheSearchTurnedOffTheFittedKgonsStay) {
+  stitch::testing::TempFolder dir;
+  const std::string path = folding_tube_file(dir);
+  const HalfedgeMesh mesh = read_as_modeler(path);
+  Session s;
+  const auto error = run_script(s, {"unfold-tubes off", "open " + path, "check"}, {});
+  ASSERT_FALSE(error) << error->message;
+  EXPECT_TRUE(s.tube_unfoldings().empty());
+  EXPECT_TRUE(s.document.kgon_options().face.empty());
+  EXPECT_GT(s.surface_problems().folds, 0);
+  expect_shows(s, mesh, build_surface(mesh, {Method::mdc, {}, false}).surface);
+}
+
+TEST(TubeUnfolding, TheOpenedSurfaceIsTheOneStitchSmoothWrites) {
+  stitch::testing::TempFolder dir;
+  const std::string path = folding_tube_file(dir);
+  Session s;
+  ASSERT_FALSE(run_script(s,
+                          {"resolution 5", "open " + path, "export " + dir.file("modeler.ply"),
+                           "save " + dir.file("tube.stitch")},
+                          {}));
+  ASSERT_EQ(s.tube_unfoldings().size(), 1u);
+  const auto smooth = stitch::testing::stitch_cli(dir, "smooth tube.obj -o cli.ply --resolution 5");
+  ASSERT_EQ(smooth.status, 0) << smooth.err;
+  EXPECT_NE(smooth.err.find("the tube of face 1"), std::string::npos) << smooth.err;
+  EXPECT_EQ(stitch::testing::read_file(dir.file("cli.ply")),
+            stitch::testing::read_file(dir.file("modeler.ply")));
+  // The project keeps the controls shown: opened again, nothing is searched, the same surface.
+  Session again;
+  ASSERT_FALSE(run_script(again, {"open " + dir.file("tube.stitch")}, {}));
+  EXPECT_TRUE(again.tube_unfoldings().empty());
+  EXPECT_EQ(again.document.kgon_options().face, s.document.kgon_options().face);
+  EXPECT_EQ(again.document.kgon_options().edge, s.document.kgon_options().edge);
+  ASSERT_FALSE(run_script(again, {"export " + dir.file("project.ply")}, {}));
+  EXPECT_EQ(stitch::testing::read_file(dir.file("project.ply")),
+            stitch::testing::read_file(dir.file("modeler.ply")));
 }
 
 TEST(TubeUnfolding, TheTwistedTubeIsUnfoldedInTheEditsUndoStep) {

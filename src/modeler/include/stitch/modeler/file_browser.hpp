@@ -7,15 +7,22 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace stitch::modeler {
 
 /// The files each dialog offers, from the format tables of the readers and writers (mesh/
-/// formats.hpp, tess/export.hpp, project/project_file.hpp): lower case, with the dot.
-std::vector<std::string> open_extensions();    ///< Open and Append: meshes read, projects
-std::vector<std::string> save_extensions();    ///< Save as: projects (first), meshes written
-std::vector<std::string> export_extensions();  ///< Export: surface meshes, .json patches
+/// formats.hpp, project/project_file.hpp, the output formats of stitch/output/output.hpp): lower
+/// case, with the dot.
+std::vector<std::string> open_extensions();  ///< Open and Append: meshes read, projects
+std::vector<std::string> save_extensions();  ///< Save as: projects (first), meshes written
+/// Export: every output format's extensions, in the table's order (its first format's first).
+std::vector<std::string> export_extensions();
+
+/// Whether `name` ends with one of `extensions` (compared without case; an extension may have
+/// two dots, as .bez.json); true for an empty list (all files).
+bool has_extension(std::string_view name, const std::vector<std::string>& extensions);
 
 struct FileEntry {
   std::string name;
@@ -23,8 +30,8 @@ struct FileEntry {
   bool operator==(const FileEntry&) const = default;
 };
 
-/// The entries of `folder`: its subfolders, then its files whose extension (compared without
-/// case) is one of `extensions` (all files when empty), each group sorted by name without case
+/// The entries of `folder`: its subfolders, then its files with one of `extensions`
+/// (has_extension), each group sorted by name without case
 /// (ties in byte order). Names starting with '.' are left out. Throws InputError naming the
 /// folder when it cannot be listed.
 std::vector<FileEntry> list_folder(const std::filesystem::path& folder,

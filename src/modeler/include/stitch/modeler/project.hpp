@@ -7,17 +7,19 @@
 #include <optional>
 #include <string>
 
+#include "stitch/choices.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/modeler/document.hpp"
 #include "stitch/modeler/navigation.hpp"
 #include "stitch/render/renderer.hpp"
+#include "stitch/tess/tessellate.hpp"
 
 namespace stitch::modeler {
 
 struct DisplaySettings {
-  Method method = Method::mdc;
-  int resolution = 8;
-  ShadingMode mode = ShadingMode::shaded;
+  Method method = method_table().front().value;
+  int resolution = kDefaultResolution;
+  ShadingMode mode = shading_mode_table().front().value;
   bool input_polygons = false;  ///< show the input polygons instead of the smooth surface
   std::array<bool, num_overlays> overlays{};
   bool markers = false;
@@ -25,13 +27,27 @@ struct DisplaySettings {
   bool operator==(const DisplaySettings&) const = default;
 };
 
+/// What the view shows: the smooth surface in a shading mode, or (nullopt) the input polygons.
+using DisplayMode = std::optional<ShadingMode>;
+/// The display modes by name, for the `mode` line and the Display panel: the renderer's shading
+/// modes (shading_mode_table()), then the modeler's own row, "input", the input polygons instead
+/// of the smooth surface.
+ChoiceTable<DisplayMode> display_mode_table();
+[[nodiscard]] DisplayMode display_mode(const DisplaySettings& display);
+void set_display_mode(DisplaySettings& display, DisplayMode mode);
+
+/// The split view's choices by name, for the `split` line and the Display panel: the modeler's
+/// own "off" (one view), then the methods (method_table()) shown on the right half.
+ChoiceTable<std::optional<Method>> split_table();
+
 struct Project {
   DocumentState state;
   OrbitView view;
   DisplaySettings display;
 };
 
-/// ".stitch" and ".json" files are projects; anything else is a mesh file.
+/// Files with a project extension (kProjectExtensions, stitch/project/project_file.hpp) are
+/// projects; anything else is a mesh file.
 bool is_project_path(const std::string& path);
 
 std::string project_to_json(const Project& project);

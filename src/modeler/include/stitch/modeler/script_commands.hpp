@@ -37,11 +37,12 @@ struct ScriptLine {
 ScriptLine read_script_line(std::string_view line);
 
 /// One row of a script table. A std::function, so that the application's rows can hold the
-/// window they act on.
+/// window they act on. The synopsis and help are strings, built from the library's tables where a
+/// line takes their names (methods, display modes, output formats).
 struct ScriptCommand {
-  std::string_view name;      ///< the line's first word
-  std::string_view synopsis;  ///< the line with placeholders; starts with the name
-  std::string_view help;      ///< what it does, in one line
+  std::string_view name;  ///< the line's first word
+  std::string synopsis;   ///< the line with placeholders; starts with the name
+  std::string help;       ///< what it does, in one line
   /// Runs the line. Throws stitch::Error (UsageError for a bad line) saying what is wrong; the
   /// session is unchanged by a refused line.
   std::function<ScriptResult(Session&, const ScriptLine&, const ScriptHooks&)> run;

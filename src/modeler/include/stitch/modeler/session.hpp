@@ -4,6 +4,7 @@
 // script_command_table() and the operation table (script_commands.hpp); `help` lists them.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,10 +38,19 @@ struct Session {
   /// Width / height of one view: the viewport, or half of it in a split view.
   [[nodiscard]] double view_aspect() const;
 
-  /// A session on `mesh`, framed in the iso view, surface built.
+  /// A session on `mesh` (load), framed in the iso view.
   explicit Session(HalfedgeMesh mesh = {});
-  /// Whether a new topology edit unfolds the tubes it made (apply_edit; `unfold-tubes on|off`).
+  /// Whether a document loaded (load) or a new topology edit (apply_edit) unfolds its tubes whose
+  /// fitted K-gons fold (`unfold-tubes on|off`): build_surface's SurfaceSpec::unfold_tubes.
   bool unfold_folding_tubes = true;
+
+  /// Makes `state` the document, with a fresh history and nothing selected, and builds its
+  /// surface as build_surface builds the request (display.method, the state's K-gon controls,
+  /// unfold_folding_tubes): the controls surface_kgons chooses for tubes whose fitted K-gons fold
+  /// join the document's controls, since they are what is shown (a project saved then keeps them,
+  /// and `stitch smooth` on it builds the same surface), and tube_unfoldings() tells what was
+  /// chosen. The document counts as unmodified: its file gives it again.
+  void load(DocumentState state);
 
   /// Brings the surface up to date after a document change; returns (and keeps) the stats.
   const SurfaceUpdateStats& apply(const Change& change);
@@ -50,9 +60,11 @@ struct Session {
   /// adds them to the edit's undo step, so the surface shown and checked is the unfolded one.
   /// The stats cover both updates of the surface then.
   const SurfaceUpdateStats& apply_edit(const Change& change);
-  /// What the last apply_edit found for the folding tubes it made (empty after any other update).
+  /// What the last load or apply_edit found for the folding tubes (empty after any other
+  /// update).
   [[nodiscard]] const std::vector<TubeUnfolding>& tube_unfoldings() const { return unfoldings_; }
-  /// The wall time of the last apply_edit's search for tube controls (0 when it had no tube).
+  /// The wall time of the last load's or apply_edit's search for tube controls (0 when it had no
+  /// tube).
   [[nodiscard]] double unfold_milliseconds() const { return unfold_ms_; }
   /// The tessellation blocks (slots, as the surface numbers them) the last update changed, for a
   /// renderer to upload again: the surface's relaid() and recomputed() ones, and after an edit
@@ -92,9 +104,10 @@ struct Session {
   void remember(Change change);
 };
 
-/// Opens a mesh (OBJ/OFF/PLY) or project file into the session: a fresh history, the view framed
-/// (or the project's). Throws stitch::Error.
-void open_file(Session& session, const std::string& path);
+/// Opens a mesh (OBJ/OFF/PLY) or project file into the session (Session::load, with the
+/// project's display settings): a fresh history, the view framed (or the project's). Returns what
+/// was opened and the tubes the policy unfolded (describe_unfoldings). Throws stitch::Error.
+std::string open_file(Session& session, const std::string& path);
 /// Saves the project (.stitch/.json) or the mesh (.obj/.off/.ply/.stl), atomically; the path
 /// becomes the document's. Throws stitch::Error. A mesh file has no place for K-gon controls: with
 /// any set, session.warning says so and the document stays modified (its autosave keeps them).
@@ -102,10 +115,13 @@ void save_file(Session& session, const std::string& path);
 /// Adds the mesh or project at `path` to the document as one more component moved by `offset`
 /// (Document::append), one undo step. Returns what was added. Throws stitch::Error.
 std::string append_file(Session& session, const std::string& path, const Vec3& offset);
-/// Writes the smooth surface as the session shows it (method, resolution, K-gon controls): a
-/// tessellated mesh by extension, or the Bézier patches as JSON (docs/formats.md). Returns what
-/// was written. Throws stitch::Error.
-std::string export_surface(const Session& session, const std::string& path);
+/// Writes the smooth surface as the session shows it (method, resolution, K-gon controls) through
+/// write_surface, in the format of the table of output formats that the extension names
+/// (tessellated meshes, Bézier JSON, STEP, IGES). `note` gets the writer's notes (an exact
+/// format's depth and deviations). Returns what was written. Throws stitch::Error, the table's
+/// message for an unknown extension or an exact format of the cc surface.
+std::string export_surface(const Session& session, const std::string& path,
+                           const std::function<void(const std::string&)>& note = {});
 
 /// The selected K-gon, if the selection has one (a corner selects its face's).
 std::optional<KgonTarget> kgon_target(const Session& session);
