@@ -390,7 +390,7 @@ void bind_surface(py::module_& m) {
       "B-spline faces of STEP and IGES), texcoords, notes (the patch set's depth and "
       "deviation). Mesh outputs: resolution (segments per patch side, default {}), or "
       "tolerance for adaptive triangles instead (relative to the model size); unwelded: every "
-      "patch's own grid with (u, v) and patch (.ply); ascii, float: .ply as text, or with "
+      "patch's own grid with (u, v) and patch (binary PLY); ascii, float: PLY as text, or with "
       "32-bit positions and normals; uv: the texture coordinates of a mesh read with them: {}; "
       "'none' (default: the first, where the format has a place for them). Exact outputs: "
       "tolerance (default {:g}, relative to the model size) and angle_tolerance (degrees, "
@@ -441,7 +441,7 @@ void bind_surface(py::module_& m) {
           "(p,) int32: the patch numbers. A patch is a corner of the mesh (a vertex on a "
           "face), numbered by its half-edge: 0 to p - 1 in half-edge order for a closed mesh, "
           "with gaps where a boundary's half-edges are (they have no patch). The numbers of "
-          "evaluate, Tessellation.patches, unwelded .ply and `stitch eval`; corner_name(p) "
+          "evaluate, Tessellation.patches, unwelded PLY and `stitch eval`; corner_name(p) "
           "gives the name \"V@F\" of Bezier JSON, STEP and edit operations, patch(name) and "
           "patch_of(face=, vertex=) the number back.")
       .def(

@@ -3,6 +3,7 @@
 // kept up to date incrementally by stitch::IncrementalSurface, and the renderer re-uploads only the
 // patches an edit changed. This file starts the window and runs the loop; app_state.hpp lists the
 // parts.
+#include <fmt/format.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -17,6 +18,8 @@
 #include "app_state.hpp"
 #include "commands.hpp"
 #include "frame.hpp"
+#include "stitch/mesh/formats.hpp"
+#include "stitch/project/project_file.hpp"
 #include "stitch/render/options.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "viewport.hpp"
@@ -127,7 +130,8 @@ int main(int argc, char** argv) {
   modeler::app::Options o;
   std::string size_text = "1280x800";
   cli.add_option("FILE", o.file,
-                 "mesh (.obj .off .ply) or project (.stitch) to open; default: a cube");
+                 fmt::format("mesh ({}) or project ({}) to open; default: a cube",
+                             extension_list(kMeshReadExtensions), kProjectExtensions.front()));
   cli.add_option("--script", o.script, "run the lines of this file (see docs/modeler.md)");
   cli.add_option("--screenshot", o.screenshot, "after the script, write the window to this PNG");
   cli.add_flag("--exit", o.exit_after, "quit after the script and screenshot");

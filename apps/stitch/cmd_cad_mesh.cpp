@@ -37,7 +37,8 @@ void add_cad_mesh_command(CLI::App& app) {
   auto args = std::make_shared<CadMeshArgs>();
   CLI::App* cmd = app.add_subcommand(
       "cad-mesh", "Triangulate a STEP or IGES file with OpenCASCADE (to view what CAD reads)");
-  cmd->add_option("input", args->in, "input .step, .stp, .igs or .iges")->required();
+  cmd->add_option("input", args->in, fmt::format("input CAD file ({})", cad::kCadExtensions))
+      ->required();
   cmd->add_option("-o,--output", args->out, "output mesh: " + extension_list(kMeshWriteExtensions))
       ->required();
   cmd->add_option("--deflection", args->deflection,

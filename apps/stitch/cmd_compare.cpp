@@ -84,7 +84,7 @@ std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>&
   }
   const fs::path data = dir / "jump_by_distance.dat";
   const fs::path script = dir / "jump_by_distance.gp";
-  const fs::path png = dir / "jump_by_distance.png";
+  const fs::path png = dir / ("jump_by_distance" + std::string(kImageExtension));
   // A log axis cannot show 0: jumps below 1e-12 degrees (round-off of exact agreement) are
   // drawn at 1e-12.
   write_file_atomically(data.string(), [&](std::ostream& out) {
@@ -98,7 +98,7 @@ std::string plot_jumps(const fs::path& dir, const std::vector<ContinuityReport>&
       out << "\n\n";
     }
   });
-  const fs::path temporary = dir / ".jump_by_distance.png.tmp";
+  const fs::path temporary = dir / (".jump_by_distance" + std::string(kImageExtension) + ".tmp");
   write_file_atomically(script.string(), [&](std::ostream& out) {
     out << "set terminal pngcairo size 720,480 font 'sans,10'\n"
         << "set output '" << temporary.filename().string() << "'\n"
@@ -196,11 +196,11 @@ void write_index(const fs::path& dir, const std::string& input_path, const Compa
     for (const ContinuityReport& r : reports)
       order += (order.empty() ? "" : " | ") + to_string(r.method);
     const auto row = [&](const std::string& name, const std::string& heading) {
-      out << "<h2>" << heading << "</h2>\n<p><img src=\"" << name << ".png\" alt=\"" << order
-          << "\"></p>\n<div>";
+      out << "<h2>" << heading << "</h2>\n<p><img src=\"" << name << kImageExtension << "\" alt=\""
+          << order << "\"></p>\n<div>";
       for (const ContinuityReport& r : reports) {
-        out << "<figure><img src=\"" << name << "_" << to_string(r.method)
-            << ".png\" width=\"240\"><figcaption>" << method_title(r.method)
+        out << "<figure><img src=\"" << name << "_" << to_string(r.method) << kImageExtension
+            << "\" width=\"240\"><figcaption>" << method_title(r.method)
             << "</figcaption></figure>";
       }
       out << "</div>\n";
@@ -213,7 +213,7 @@ void write_index(const fs::path& dir, const std::string& input_path, const Compa
     }
     out << "<h2>Normal jump against distance from extraordinary points</h2>\n";
     if (plot_problem.empty()) {
-      out << "<p><img src=\"jump_by_distance.png\" alt=\"plot\"></p>\n";
+      out << "<p><img src=\"jump_by_distance" << kImageExtension << "\" alt=\"plot\"></p>\n";
     } else {
       out << "<p><strong>No plot:</strong> " << html_escape(plot_problem) << "</p>\n";
     }
@@ -284,10 +284,12 @@ void run_compare(const CompareArgs& a) {
     }
     upload_scene(renderer, scene);
     whole.push_back(render_image(renderer, whole_camera, style, size.width, size.height));
-    write_png((dir / ("zebra_whole_" + to_string(m) + ".png")).string(), whole.back());
+    write_png((dir / ("zebra_whole_" + to_string(m) + std::string(kImageExtension))).string(),
+              whole.back());
     if (has_closeup) {
       closeup.push_back(render_image(renderer, closeup_camera, style, size.width, size.height));
-      write_png((dir / ("zebra_closeup_" + to_string(m) + ".png")).string(), closeup.back());
+      write_png((dir / ("zebra_closeup_" + to_string(m) + std::string(kImageExtension))).string(),
+                closeup.back());
     }
     reports.push_back(analyze_continuity(mesh, *surface));
     shown.push_back(m);
@@ -297,8 +299,11 @@ void run_compare(const CompareArgs& a) {
     throw InputError("no method can handle " + a.in.path + ": " + refusals.front());
   }
   const int gap = std::max(4, size.width / 60);
-  write_png((dir / "zebra_whole.png").string(), side_by_side(whole, gap));
-  if (has_closeup) write_png((dir / "zebra_closeup.png").string(), side_by_side(closeup, gap));
+  write_png((dir / ("zebra_whole" + std::string(kImageExtension))).string(),
+            side_by_side(whole, gap));
+  if (has_closeup)
+    write_png((dir / ("zebra_closeup" + std::string(kImageExtension))).string(),
+              side_by_side(closeup, gap));
 
   stage.begin("plotting");
   const std::string plot_problem = plot_jumps(dir, reports);

@@ -9,6 +9,7 @@
 #include "options.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/tess/patches.hpp"
 
 namespace stitch::cli {
@@ -134,8 +135,10 @@ void add_info_command(CLI::App& app) {
   add_input_options(cmd, args->in);
   cmd->add_flag("--json", args->json, "print JSON");
   cmd->add_flag("--patches", args->patches,
-                "also expand the Bezier patch set that .step/.igs/.bez.json outputs hold and "
-                "report its depth, patch count and largest deviation from exact evaluation");
+                fmt::format("also expand the Bezier patch set that the exact outputs ({}) hold "
+                            "and report its depth, patch count and largest deviation from "
+                            "exact evaluation",
+                            output_extensions(OutputKind::exact)));
   add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--tolerance", args->patch_set.tolerance,
                   "with --patches: largest distance of the innermost cells from the exact "

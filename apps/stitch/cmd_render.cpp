@@ -43,8 +43,8 @@ struct RenderArgs {
 
 void run_render(const RenderArgs& a) {
   // Every option is checked before any work, so a bad one costs nothing and writes nothing.
-  if (file_extension(a.out) != ".png") {
-    throw UsageError(fmt::format("the output '{}' must be a .png file", a.out));
+  if (file_extension(a.out) != kImageExtension) {
+    throw UsageError(fmt::format("the output '{}' must be a {} file", a.out, kImageExtension));
   }
   const ImageSize size = parse_image_size(a.size);
   RenderStyle style;
@@ -52,7 +52,8 @@ void run_render(const RenderArgs& a) {
   style.stripes = a.stripes;
   style.checks = a.checks;
   const bool checker = style.mode == ShadingMode::checker;
-  if (!a.uv.empty() && !checker) throw UsageError("--uv needs --mode checker");
+  if (!a.uv.empty() && !checker)
+    throw UsageError(fmt::format("--uv needs --mode {}", to_string(ShadingMode::checker)));
   const UvMode uv_mode = parse_uv_mode(a.uv.empty() ? "smooth" : a.uv);
   parse_overlays(a.show, style);
   style.draw_surface = a.draw != "none";
@@ -78,8 +79,8 @@ void run_render(const RenderArgs& a) {
   const HalfedgeMesh mesh = load_input(a.in, &report);
   stage.end();
   if (checker && report.corner_uvs.empty()) {
-    throw UsageError(
-        fmt::format("--mode checker needs texture coordinates: {} has none", a.in.path));
+    throw UsageError(fmt::format("--mode {} needs texture coordinates: {} has none",
+                                 to_string(ShadingMode::checker), a.in.path));
   }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
   const Method method = parse_method(a.method);
@@ -131,7 +132,9 @@ void add_render_command(CLI::App& app) {
       "isophotes, levels, patches, a checker through the texture coordinates, with the mesh, "
       "K-gons, nets and extraordinary points");
   add_input_options(cmd, args->in);
-  cmd->add_option("-o,--output", args->out, "output image (.png), written atomically")->required();
+  cmd->add_option("-o,--output", args->out,
+                  fmt::format("output image ({}), written atomically", kImageExtension))
+      ->required();
   add_method_option(cmd, args->method, false, &args->in);
   cmd->add_option("--mode", args->mode, choice_help(shading_mode_table()))
       ->check(choice_validator(shading_mode_table()))
@@ -162,12 +165,14 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(2, 512))
       ->capture_default_str();
   cmd->add_option("--checks", args->checks,
-                  "with --mode checker: squares along each side of the texture's unit square")
+                  "with --mode " + to_string(ShadingMode::checker) +
+                      ": squares along each side of the texture's unit square")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
   cmd->add_option("--uv", args->uv,
-                  "with --mode checker: smooth (default: the UV layout smoothed like the mesh, "
-                  "seams kept) or linear (bilinear per patch)")
+                  "with --mode " + to_string(ShadingMode::checker) +
+                      ": smooth (default: the UV layout smoothed like the mesh, "
+                      "seams kept) or linear (bilinear per patch)")
       ->check(CLI::IsMember({"smooth", "linear"}));
   cmd->add_option("--draw", args->draw,
                   "what is shaded: smooth (the surface), input (the input polygons, flat) or "

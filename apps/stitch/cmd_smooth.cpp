@@ -215,9 +215,9 @@ void add_smooth_command(CLI::App& app) {
         names.emplace_back("none");
         return names;
       }()));
-  cmd->add_flag("--ascii", args->spec.ascii, "write .ply as text instead of binary");
+  cmd->add_flag("--ascii", args->spec.ascii, "write binary PLY as text instead");
   cmd->add_flag("--float", args->spec.single_precision,
-                "write .ply positions and normals as 32-bit floats (half the size; the default "
+                "write PLY positions and normals as 32-bit floats (half the size; the default "
                 "doubles read back exactly)");
   cmd->add_option("--max-memory", args->max_memory_gb,
                   "refuse up front a run estimated to need more memory than this many GB "

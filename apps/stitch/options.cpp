@@ -18,10 +18,10 @@ namespace stitch::cli {
 
 void add_input_options(CLI::App* cmd, InputOptions& in) {
   cmd->add_option("IN", in.path,
-                  "input mesh (" + extension_list(kMeshReadExtensions) +
-                      "): orientable and manifold, "
-                      "closed or with boundaries; or a stitch-modeler project (.stitch): its mesh, "
-                      "K-gon controls and method")
+                  fmt::format("input mesh ({}): orientable and manifold, closed or with "
+                              "boundaries; or a stitch-modeler project ({}): its mesh, K-gon "
+                              "controls and method",
+                              extension_list(kMeshReadExtensions), kProjectExtensions.front()))
       ->required();
   cmd->add_flag("--fill-holes", in.fill_holes,
                 "close every boundary loop with one face instead of keeping it as a boundary");
@@ -104,9 +104,10 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                     "replace every K-gon with K != 4 by its best-fitting affinely regular polygon "
                     "(makes star-shaped K-gons convex)");
   cmd->add_option("--kgon-controls", k.controls_path,
-                  "a JSON file of per-element K-gon controls (face, vertex or edge: scale, "
-                  "rotate, offset, stretch, regularize; docs/modeler.md); they replace those of a "
-                  ".stitch input for the same elements");
+                  fmt::format("a JSON file of per-element K-gon controls (face, vertex or edge: "
+                              "{}; docs/modeler.md); they replace those of a project ({}) input "
+                              "for the same elements",
+                              kgon_control_field_names(), kProjectExtensions.front()));
   cmd->add_option("--kgon-construction", k.construction, choice_help(kgon_construction_table()))
       ->check(choice_validator(kgon_construction_table()))
       ->capture_default_str();
@@ -172,7 +173,8 @@ void add_method_option(CLI::App* cmd, std::string& method, bool allow_all, Input
   CLI::Option* opt =
       cmd->add_option("--method", method,
                       choice_help(method_table()) + (allow_all ? "; all: every method" : "") +
-                          "; a .stitch input's own method replaces the default");
+                          fmt::format("; a project's ({}) own method replaces the default",
+                                      kProjectExtensions.front()));
   std::vector<std::string> names;
   for (const Choice<Method>& c : method_table()) names.emplace_back(c.name);
   if (allow_all) names.emplace_back("all");

@@ -167,10 +167,13 @@ std::string autosave_path(const std::string& document_path) {
     } else {
       base = fs::temp_directory_path();
     }
-    return (base / "stitch" / "autosave" / "untitled.stitch").string();
+    return (base / "stitch" / "autosave" / ("untitled" + std::string(kProjectExtensions.front())))
+        .string();
   }
   const fs::path p(document_path);
-  return (p.parent_path() / fmt::format(".{}.autosave.stitch", p.filename().string())).string();
+  return (p.parent_path() /
+          fmt::format(".{}.autosave{}", p.filename().string(), kProjectExtensions.front()))
+      .string();
 }
 
 bool autosave_is_newer(const std::string& autosave, const std::string& document_path) {

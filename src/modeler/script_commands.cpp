@@ -12,6 +12,7 @@
 #include "stitch/mesh/validate.hpp"
 #include "stitch/modeler/session.hpp"
 #include "stitch/output/output.hpp"
+#include "stitch/project/project_file.hpp"
 #include "stitch/topology/primitives.hpp"
 
 namespace stitch::modeler {
@@ -522,7 +523,9 @@ std::span<const ScriptCommand> script_command_table() {
       {"screenshot", "screenshot PATH", "the view as a PNG (where the application renders one)",
        run_screenshot},
       {"save", "save [PATH]",
-       "saves the project (.stitch) or the mesh, to PATH or to the document's file", run_save},
+       fmt::format("saves the project ({}) or the mesh, to PATH or to the document's file",
+                   kProjectExtensions.front()),
+       run_save},
       {"export", "export PATH", export_help(), run_export},
       {"open", "open PATH", "opens a mesh or a project", run_open},
       {"append", "append PATH [--offset X,Y,Z]",

@@ -217,9 +217,8 @@ void save_file(Session& session, const std::string& path) {
     const KgonOptions& k = session.document.kgon_options();
     lost = !k.face.empty() || !k.vertex.empty() || !k.edge.empty() || k.global != KgonControl{};
     if (lost)
-      session.warning =
-          fmt::format("K-gon controls are not stored in {}; save as .stitch to keep them",
-                      file_extension(path));
+      session.warning = fmt::format("K-gon controls are not stored in {}; save as {} to keep them",
+                                    file_extension(path), kProjectExtensions.front());
   }
   session.path = path;
   // Unless the file holds everything: then the document still differs from every file.

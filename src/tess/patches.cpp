@@ -222,8 +222,9 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
                         const PatchSetOptions& options,
                         const std::function<void(double)>& progress) {
   if (surface.method() == Method::cc)
-    throw UsageError(
-        "the Catmull-Clark surface (--method cc) is not a set of Bezier patches; use mdc or asc");
+    throw UsageError(fmt::format(
+        "the Catmull-Clark surface (--method {}) is not a set of Bezier patches; use {} or {}",
+        to_string(Method::cc), to_string(Method::mdc), to_string(Method::asc)));
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
     throw UsageError(fmt::format("the tolerance must be a number > 0 (got {})", options.tolerance));
   if (!(options.angle_tolerance_deg > 0) || !std::isfinite(options.angle_tolerance_deg))

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stitch/render/renderer.hpp"
@@ -42,5 +43,7 @@ Image side_by_side(const std::vector<Image>& images, int gap, std::uint8_t backg
 std::vector<std::uint8_t> encode_png(const Image& image);
 /// Writes the PNG atomically (write_file_atomically): `path` is complete or untouched.
 void write_png(const std::string& path, const Image& image);
+/// The extension of the files write_png writes, the one image format stitch writes.
+inline constexpr std::string_view kImageExtension = ".png";
 
 }  // namespace stitch
