@@ -21,6 +21,7 @@
 
 #include "mesh/opensubdiv_topology.hpp"
 #include "stitch/topology/remesh.hpp"
+#include "topology/catmark_refinement.hpp"
 
 namespace stitch {
 namespace {
