@@ -537,14 +537,13 @@ TEST(WritePly, BinaryRecordsAreEachValueLittleEndian) {
     for (const bool with_normals : {false, true})
       for (const bool single : {false, true}) {
         const auto stream =
-            stitch::io_detail::stream_arrays(positions, with_normals ? &normals : nullptr, faces);
+            stitch::detail::stream_arrays(positions, with_normals ? &normals : nullptr, faces);
         const std::string path = folder.file("out.ply");
-        stitch::io_detail::write_mesh_file(path, [&](stitch::io_detail::OutputFile& out) {
-          stitch::io_detail::write_ply(out, stream,
-                                       stitch::io_detail::PlyEncoding::binary_little_endian,
-                                       single ? stitch::io_detail::PlyPrecision::single
-                                              : stitch::io_detail::PlyPrecision::double_precision,
-                                       "test");
+        stitch::detail::write_mesh_file(path, [&](stitch::detail::OutputFile& out) {
+          stitch::detail::write_ply(out, stream, stitch::detail::PlyEncoding::binary_little_endian,
+                                    single ? stitch::detail::PlyPrecision::single
+                                           : stitch::detail::PlyPrecision::double_precision,
+                                    "test");
         });
         std::string expected;
         const auto put = [&](const Vec3& p) {

@@ -15,14 +15,14 @@
 #include <random>
 #include <sstream>
 
-#include "io_detail.hpp"
-#include "mesh_writer.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
-namespace io_detail {
+namespace detail {
 
 std::string at_line(const std::string& path, int line) {
   return fmt::format("{}, line {}", path, line);
@@ -110,7 +110,7 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
   }
 }
 
-}  // namespace io_detail
+}  // namespace detail
 
 namespace {
 
@@ -118,7 +118,7 @@ constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
 /// line per element so a diff shows which changed); the OBJ reader reads them back.
-void write_obj_tags(io_detail::OutputFile& out, const PolygonSoup& soup) {
+void write_obj_tags(detail::OutputFile& out, const PolygonSoup& soup) {
   for (const SoupCrease& c : soup.creases)
     out << fmt::format("t crease 2/1/0 {} {} {}\n", c.a, c.b, c.sharpness);
   for (const SoupCorner& c : soup.corners)
@@ -204,11 +204,11 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
   const std::string text = read_regular_file(path, part(0, 1.0 / 3));
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw InputError(fmt::format("{}: the file is empty", path));
-  PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings, part(1.0 / 3, 1))
-                     : ext == ".off" ? io_detail::read_off(text, path, warnings)
-                     : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
-                     : gltf          ? io_detail::read_gltf(text, path, warnings)
-                                     : io_detail::read_ply(text, path, warnings);
+  PolygonSoup soup = ext == ".obj"   ? detail::read_obj(text, path, warnings, part(1.0 / 3, 1))
+                     : ext == ".off" ? detail::read_off(text, path, warnings)
+                     : ext == ".stl" ? detail::read_stl(text, path, warnings)
+                     : gltf          ? detail::read_gltf(text, path, warnings)
+                                     : detail::read_ply(text, path, warnings);
   soup.source = path;
   if (soup.faces.empty()) throw InputError(fmt::format("{}: the file contains no faces", path));
   if (progress) progress(1);
@@ -246,7 +246,7 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
       throw OutputError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
   check_tags(path, soup);
-  using namespace io_detail;
+  using namespace detail;
   const MeshStream stream = stream_arrays(soup.positions, nullptr, soup.faces);
   // Only OBJ has a place for the crease and corner tags (OpenSubdiv's `t` lines); the other
   // formats have no standard one, so they are written without them (docs/formats.md).

@@ -13,12 +13,12 @@
 #include <map>
 #include <utility>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/tinygltf.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
-#include "tinygltf.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -327,4 +327,4 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

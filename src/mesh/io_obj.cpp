@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "stitch/mesh/limits.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -366,4 +366,4 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

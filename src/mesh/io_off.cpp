@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <limits>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -105,4 +105,4 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

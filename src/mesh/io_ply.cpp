@@ -8,10 +8,10 @@
 #include <limits>
 #include <optional>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "stitch/mesh/limits.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -435,4 +435,4 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

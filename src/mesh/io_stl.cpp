@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -179,4 +179,4 @@ PolygonSoup weld_triangles(const std::vector<std::array<Vec3, 3>>& triangles,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -1,4 +1,4 @@
-#include "mesh_writer.hpp"
+#include "mesh/mesh_writer.hpp"
 
 #include <fmt/format.h>
 #include <tbb/concurrent_queue.h>
@@ -13,12 +13,12 @@
 #include <cstring>
 #include <limits>
 
-#include "number_text.hpp"
+#include "mesh/number_text.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/polygon.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -457,4 +457,4 @@ void write_mesh_file(const std::string& path, const std::function<void(OutputFil
   });
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
-#include "output_file.hpp"
+#include "mesh/output_file.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 /// One block of vertices: positions, and normals when the mesh has them.
 struct VertexBlock {
@@ -171,4 +171,4 @@ MeshStream stream_arrays(const std::vector<Vec3>& positions, const std::vector<V
   return s;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -11,14 +11,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "../mesh/mesh_writer.hpp"
-#include "layout.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "mesh/tinygltf.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "support/finite.hpp"
 #include "tess/gltf.hpp"
-#include "write_stream.hpp"
+#include "tess/layout.hpp"
+#include "tess/write_stream.hpp"
 
 namespace stitch {
 
@@ -119,10 +119,10 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
 
 }  // namespace
 
-void detail::write_stream(const std::string& path, const io_detail::MeshStream& stream,
+void detail::write_stream(const std::string& path, const detail::MeshStream& stream,
                           const std::vector<Vec3>& positions, const SurfaceFileOptions& options,
                           std::string_view comment) {
-  using namespace io_detail;
+  using namespace detail;
   const std::string ext = file_extension(path);
   write_mesh_file(path, [&](OutputFile& out) {
     if (ext == ".obj")
@@ -154,7 +154,7 @@ void write_surface_mesh(const std::string& path, const TessellatedMesh& mesh,
   check_writable(path, mesh);
   const bool normals = file_extension(path) != ".off" && file_extension(path) != ".stl";
   detail::write_stream(
-      path, io_detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
+      path, detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
       mesh.positions, options, kComment);
 }
 
@@ -177,7 +177,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   check_extension(path);
   const std::string ext = file_extension(path);
   const TessellationLayout layout(mesh, surface.corners(), resolution, true);
-  io_detail::MeshStream stream;
+  detail::MeshStream stream;
   stream.num_vertices = layout.num_vertices();
   stream.num_faces = layout.num_quads();
   stream.has_normals = ext == ".obj" || ext == ".ply";
@@ -191,7 +191,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
       throw OutputError(
           fmt::format("sample {} has a non-finite position or normal", begin + bad + 1));
   };
-  stream.vertices = [&](std::int64_t begin, std::int64_t end, io_detail::VertexBlock& block) {
+  stream.vertices = [&](std::int64_t begin, std::int64_t end, detail::VertexBlock& block) {
     block.positions.resize(static_cast<size_t>(end - begin));
     block.normals.resize(block.positions.size());
     evaluate(begin, end, block.positions.data(), block.normals.data());
@@ -225,7 +225,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
       }
     };
   }
-  stream.faces = [&](std::int64_t begin, std::int64_t end, io_detail::FaceBlock& block) {
+  stream.faces = [&](std::int64_t begin, std::int64_t end, detail::FaceBlock& block) {
     block.sizes.assign(static_cast<size_t>(end - begin), 4);
     block.indices.resize(4 * block.sizes.size());
     layout.quads(begin, end, block.indices.data());
@@ -301,7 +301,7 @@ void write_surface_samples_ply(const std::string& path, const TessellatedMesh& m
   }
   // s t come after `patch`, so readers that know the records without them read on unchanged.
   const size_t record_size = uvs ? 84 : 68;
-  io_detail::write_mesh_file(path, [&](io_detail::OutputFile& out) {
+  detail::write_mesh_file(path, [&](detail::OutputFile& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment " << kComment
         << "\ncomment patch = corner (half-edge index) of the input mesh; u v = position in "
            "that patch\nelement vertex "
@@ -312,32 +312,31 @@ void write_surface_samples_ply(const std::string& path, const TessellatedMesh& m
     if (uvs) out << "property double s\nproperty double t\n";
     out << "element face " << mesh.quads.size()
         << "\nproperty list uchar int vertex_indices\nend_header\n";
-    io_detail::write_blocks(
-        out, static_cast<std::int64_t>(nv), 16384,
-        [&](std::int64_t begin, std::int64_t end, io_detail::OutputBuffer& bytes) {
-          io_detail::LittleEndianWriter record(bytes,
-                                               static_cast<size_t>(end - begin) * record_size);
-          for (std::int64_t i = begin; i < end; ++i) {
-            record.put(mesh.positions[i]);
-            record.put(mesh.normals[i]);
-            record.put(mesh.uv[i].x());
-            record.put(mesh.uv[i].y());
-            record.put(static_cast<std::int32_t>(mesh.patch[i]));
-            if (!st.empty()) {
-              record.put(st[i].x());
-              record.put(st[i].y());
-            }
-          }
-        });
-    io_detail::write_blocks(
-        out, static_cast<std::int64_t>(mesh.quads.size()), 32768,
-        [&](std::int64_t begin, std::int64_t end, io_detail::OutputBuffer& bytes) {
-          io_detail::LittleEndianWriter record(bytes, static_cast<size_t>(end - begin) * 17);
-          for (std::int64_t q = begin; q < end; ++q) {
-            record.put(std::uint8_t{4});
-            for (int v : mesh.quads[q]) record.put(static_cast<std::int32_t>(v));
-          }
-        });
+    detail::write_blocks(out, static_cast<std::int64_t>(nv), 16384,
+                         [&](std::int64_t begin, std::int64_t end, detail::OutputBuffer& bytes) {
+                           detail::LittleEndianWriter record(
+                               bytes, static_cast<size_t>(end - begin) * record_size);
+                           for (std::int64_t i = begin; i < end; ++i) {
+                             record.put(mesh.positions[i]);
+                             record.put(mesh.normals[i]);
+                             record.put(mesh.uv[i].x());
+                             record.put(mesh.uv[i].y());
+                             record.put(static_cast<std::int32_t>(mesh.patch[i]));
+                             if (!st.empty()) {
+                               record.put(st[i].x());
+                               record.put(st[i].y());
+                             }
+                           }
+                         });
+    detail::write_blocks(out, static_cast<std::int64_t>(mesh.quads.size()), 32768,
+                         [&](std::int64_t begin, std::int64_t end, detail::OutputBuffer& bytes) {
+                           detail::LittleEndianWriter record(bytes,
+                                                             static_cast<size_t>(end - begin) * 17);
+                           for (std::int64_t q = begin; q < end; ++q) {
+                             record.put(std::uint8_t{4});
+                             for (int v : mesh.quads[q]) record.put(static_cast<std::int32_t>(v));
+                           }
+                         });
   });
 }
 

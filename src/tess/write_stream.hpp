@@ -6,14 +6,14 @@
 #include <string_view>
 #include <vector>
 
-#include "../mesh/mesh_writer.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "stitch/tess/export.hpp"
 
 namespace stitch::detail {
 
 /// Writes `stream` to `path` (.obj, .ply, .off or .stl) with `comment` in the header.
 /// `positions` are needed for .stl only.
-void write_stream(const std::string& path, const io_detail::MeshStream& stream,
+void write_stream(const std::string& path, const detail::MeshStream& stream,
                   const std::vector<Vec3>& positions, const SurfaceFileOptions& options,
                   std::string_view comment);
 
