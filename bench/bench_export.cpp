@@ -43,7 +43,7 @@ void BM_Export(benchmark::State& state) {
   size_t count = 0;
   for (auto _ : state) {
     if (format == glb) {
-      write_smooth_surface(path, mesh, surface, 8);
+      write_smooth_surface(path, MeshFileFormat::glb, mesh, surface, 8);
       continue;
     }
     const PatchSet set = bezier_patches(mesh, surface);

@@ -10,7 +10,6 @@
 
 #include "eval/patch_sampler.hpp"
 #include "mesh/mesh_writer.hpp"
-#include "stitch/mesh/io.hpp"
 #include "stitch/tess/adaptive.hpp"
 #include "tess/write_stream.hpp"
 
@@ -308,18 +307,16 @@ AdaptiveMesh tessellate_adaptive(const HalfedgeMesh& mesh, const Surface& surfac
   return out;
 }
 
-void write_adaptive_mesh(const std::string& path, const AdaptiveMesh& mesh,
+void write_adaptive_mesh(const std::string& path, MeshFileFormat format, const AdaptiveMesh& mesh,
                          const SurfaceFileOptions& options) {
-  using namespace detail;
-  const std::string ext = file_extension(path);
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw OutputError(fmt::format(
-        "cannot write {}: an adaptive tessellation is written as .obj, .ply, .off or .stl", path));
-  const bool normals = ext == ".obj" || ext == ".ply";
-  const MeshStream stream =
-      stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.triangles);
-  detail::write_stream(path, stream, mesh.positions, options,
-                       "stitch surface (bicubic Bezier patches, adaptive tessellation)");
+  if (format == MeshFileFormat::glb || format == MeshFileFormat::gltf)
+    throw OutputError(
+        fmt::format("cannot write {}: an adaptive tessellation is not written as glTF", path));
+  const bool normals = has_vertex_normals(format);
+  detail::write_stream(
+      path, format,
+      detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.triangles),
+      mesh.positions, options, "stitch surface (bicubic Bezier patches, adaptive tessellation)");
 }
 
 }  // namespace stitch

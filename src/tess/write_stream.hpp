@@ -1,5 +1,5 @@
-// Writing a streamed surface mesh in the format its file extension names, shared by the uniform
-// (export.cpp) and adaptive (adaptive.cpp) tessellations. Internal.
+// Writing a streamed surface mesh, shared by the uniform (export.cpp) and adaptive (adaptive.cpp)
+// tessellations: SurfaceFileOptions as the mesh stage's writers take them. Internal.
 #pragma once
 
 #include <string>
@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "mesh/mesh_writer.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/tess/export.hpp"
 
 namespace stitch::detail {
 
-/// Writes `stream` to `path` (.obj, .ply, .off or .stl) with `comment` in the header.
-/// `positions` are needed for .stl only.
-void write_stream(const std::string& path, const detail::MeshStream& stream,
+/// Writes `stream` to `path` in `format` with `comment` in the header (write_mesh_stream).
+/// `positions` are needed for .stl and glTF only.
+void write_stream(const std::string& path, MeshFileFormat format, const MeshStream& stream,
                   const std::vector<Vec3>& positions, const SurfaceFileOptions& options,
                   std::string_view comment);
 
