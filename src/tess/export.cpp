@@ -96,14 +96,16 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
       const int v = whole.quads[q][m];
       int* link = &head[v];
       while (*link >= 0 && stored(out.texcoords[*link]) != st) link = &chain[*link];
-      if (*link < 0) {
-        *link = static_cast<int>(out.mesh.positions.size());
+      int copy = *link;
+      if (copy < 0) {
+        copy = static_cast<int>(out.mesh.positions.size());
+        *link = copy;  // before chain grows: `link` may point into it
         out.mesh.positions.push_back(whole.positions[v]);
         out.mesh.normals.push_back(whole.normals[v]);
         out.texcoords.push_back(uv);
         chain.push_back(-1);
       }
-      out.mesh.quads[q][m] = *link;
+      out.mesh.quads[q][m] = copy;
     }
   }
   return out;
