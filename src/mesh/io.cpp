@@ -300,7 +300,7 @@ void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
 void detail::write_mesh_stream(const std::string& path, MeshFileFormat format,
                                const MeshStream& mesh, const std::vector<Vec3>& positions,
                                const MeshFileOptions& options) {
-  if (format == MeshFileFormat::glb || format == MeshFileFormat::gltf) {
+  if (is_gltf(format)) {
     write_gltf(path, mesh, positions, format == MeshFileFormat::glb);
     return;
   }

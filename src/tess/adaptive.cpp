@@ -309,7 +309,7 @@ AdaptiveMesh tessellate_adaptive(const HalfedgeMesh& mesh, const Surface& surfac
 
 void write_adaptive_mesh(const std::string& path, MeshFileFormat format, const AdaptiveMesh& mesh,
                          const SurfaceFileOptions& options) {
-  if (format == MeshFileFormat::glb || format == MeshFileFormat::gltf)
+  if (is_gltf(format))
     throw OutputError(
         fmt::format("cannot write {}: an adaptive tessellation is not written as glTF", path));
   const bool normals = has_vertex_normals(format);

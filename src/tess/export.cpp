@@ -37,11 +37,6 @@ void check_writable(const std::string& path, const TessellatedMesh& mesh) {
                                   path, bad + 1));
 }
 
-/// glTF holds its buffer whole: the tessellation is made first, then written.
-bool is_gltf(MeshFileFormat format) {
-  return format == MeshFileFormat::glb || format == MeshFileFormat::gltf;
-}
-
 /// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.
 std::int64_t grid_size(int resolution) {
   return static_cast<std::int64_t>(resolution + 1) * (resolution + 1);
@@ -149,7 +144,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat f
             static_cast<std::int64_t>(whole.mesh.quads.size()),
             static_cast<std::int64_t>(whole.texcoords.size())};
   }
-  if (is_gltf(format)) {
+  if (is_gltf(format)) {  // glTF holds its buffer whole: tessellate, then write
     const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true});
     write_surface_mesh(path, format, whole, options);
     return {whole.num_vertices(), static_cast<std::int64_t>(whole.quads.size())};

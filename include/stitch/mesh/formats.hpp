@@ -16,6 +16,11 @@ namespace stitch {
 /// reader and its writer. Writers take it as an argument and never look at the path's extension.
 enum class MeshFileFormat { obj, ply, off, stl, glb, gltf };
 
+/// glTF, binary or not: one buffer written whole, not a stream of blocks; triangles only.
+constexpr bool is_gltf(MeshFileFormat format) {
+  return format == MeshFileFormat::glb || format == MeshFileFormat::gltf;
+}
+
 /// The formats with per-vertex normals (OBJ `vn`, PLY nx ny nz, glTF NORMAL); OFF has none and
 /// STL only facet normals, computed from the triangles.
 constexpr bool has_vertex_normals(MeshFileFormat format) {
