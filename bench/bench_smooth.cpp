@@ -69,7 +69,11 @@ void BM_smooth(benchmark::State& state) {
     start = Clock::now();
     stitch::SurfaceFileOptions file;
     file.single_precision = state.range(2) == 3;
-    vertices += stitch::write_smooth_surface(output, mesh, surface, kResolution, file).vertices;
+    const stitch::MeshFileFormat format = state.range(2) == 1   ? stitch::MeshFileFormat::obj
+                                          : state.range(2) == 2 ? stitch::MeshFileFormat::stl
+                                                                : stitch::MeshFileFormat::ply;
+    vertices +=
+        stitch::write_smooth_surface(output, format, mesh, surface, kResolution, file).vertices;
     write += seconds_since(start);
 
     state.PauseTiming();

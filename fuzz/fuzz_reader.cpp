@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "mesh/io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/validate.hpp"
 
@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   PolygonSoup soup;
   try {
     std::vector<std::string> warnings;
-    soup = io_detail::STITCH_FUZZ_READ(text, "fuzz", &warnings);
+    soup = detail::STITCH_FUZZ_READ(text, "fuzz", &warnings);
   } catch (const MeshError&) {
     return 0;
   }

@@ -15,11 +15,11 @@
 namespace stitch {
 namespace {
 
-using adaptive_detail::zip_strip;
+using detail::zip_strip;
 
 /// Twice the signed area in the strip's (along, across) plane: outer chain at across 0, inner
 /// at across 1, both running along [0, 1].
-double strip_area(int outer, int inner, const std::array<adaptive_detail::StripCorner, 3>& t) {
+double strip_area(int outer, int inner, const std::array<detail::StripCorner, 3>& t) {
   std::array<Eigen::Vector2d, 3> p;
   for (int k = 0; k < 3; ++k)
     p[k] = t[k][0] == 0 ? Eigen::Vector2d(static_cast<double>(t[k][1]) / outer, 0.0)

@@ -20,6 +20,7 @@
 #include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
 #include "test_support.hpp"
+#include "topology/catmark_refinement.hpp"
 
 namespace stitch {
 namespace {

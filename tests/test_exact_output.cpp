@@ -235,7 +235,7 @@ TEST(ReadStl, BinaryAndAsciiWeldBackIntoTheClosedMesh) {
   const HalfedgeMesh hole = read_mesh(test::example_path("cube_hole.obj"));
   const TessellatedMesh surface = tessellate(hole, Surface(hole, Method::mdc), {3, true});
   const std::string binary = folder.file("hole.stl");
-  write_surface_mesh(binary, surface);
+  write_surface_mesh(binary, MeshFileFormat::stl, surface);
   const TopologyStats stats = topology_stats(read_mesh(binary));
   EXPECT_EQ(stats.genus, 1);
   EXPECT_EQ(stats.vertices, surface.num_vertices());

@@ -12,7 +12,7 @@
 
 #include "mesh/number_text.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 namespace {
 
 std::string standard_text(double x) {
@@ -67,4 +67,4 @@ TEST(NumberText, IntegersInDecimal) {
 }
 
 }  // namespace
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "analysis/triangle_check.hpp"
 #include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/topology/operation.hpp"
 #include "support/scratch.hpp"
-#include "triangle_check.hpp"
 
 namespace stitch {
 

@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/triangle_check.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "support/scratch.hpp"
-#include "triangle_check.hpp"
 
 namespace stitch {
 

@@ -1,4 +1,4 @@
-#include "tube_descent.hpp"
+#include "analysis/tube_descent.hpp"
 
 #include <algorithm>
 #include <array>

@@ -8,13 +8,13 @@
 #include <optional>
 #include <span>
 
+#include "analysis/tube_descent.hpp"
 #include "eval/patch_sampler.hpp"
 #include "kgon/openings.hpp"
 #include "mesh/sort_unique.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
 #include "stitch/net/control_net.hpp"
-#include "tube_descent.hpp"
 
 namespace stitch {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "polynomial.hpp"
+#include "eval/polynomial.hpp"
 
 namespace stitch {
 

@@ -1,6 +1,6 @@
 #include "stitch/eval/bezier_surface.hpp"
 
-#include "descent.hpp"
+#include "eval/descent.hpp"
 
 namespace stitch {
 

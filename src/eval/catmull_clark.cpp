@@ -22,6 +22,7 @@
 #include "mesh/opensubdiv_topology.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/topology/remesh.hpp"
+#include "topology/catmark_refinement.hpp"
 
 namespace stitch {
 namespace {

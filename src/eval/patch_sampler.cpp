@@ -1,10 +1,10 @@
-#include "patch_sampler.hpp"
+#include "eval/patch_sampler.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "descent.hpp"
+#include "eval/descent.hpp"
 #include "stitch/eval/de_casteljau.hpp"
 
 namespace stitch {

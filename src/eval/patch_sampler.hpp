@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "polynomial.hpp"
+#include "eval/polynomial.hpp"
 #include "stitch/eval/surface.hpp"
 
 namespace stitch {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "patch_sampler.hpp"
+#include "eval/patch_sampler.hpp"
 #include "stitch/error.hpp"
 
 namespace stitch {

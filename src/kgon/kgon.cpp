@@ -10,8 +10,8 @@
 #include <optional>
 #include <span>
 
-#include "openings.hpp"
-#include "sharp.hpp"
+#include "kgon/openings.hpp"
+#include "kgon/sharp.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
 

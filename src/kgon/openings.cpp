@@ -1,4 +1,4 @@
-#include "openings.hpp"
+#include "kgon/openings.hpp"
 
 #include <algorithm>
 #include <cmath>

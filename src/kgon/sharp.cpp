@@ -1,4 +1,4 @@
-#include "sharp.hpp"
+#include "kgon/sharp.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -12,17 +13,19 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <optional>
 #include <random>
 #include <sstream>
+#include <utility>
 
-#include "io_detail.hpp"
-#include "mesh_writer.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/limits.hpp"
 
 namespace stitch {
 
-namespace io_detail {
+namespace detail {
 
 std::string at_line(const std::string& path, int line) {
   return fmt::format("{}, line {}", path, line);
@@ -110,7 +113,7 @@ void require_text(std::string_view line, const std::string& path, int line_numbe
   }
 }
 
-}  // namespace io_detail
+}  // namespace detail
 
 namespace {
 
@@ -118,7 +121,7 @@ constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
 /// line per element so a diff shows which changed); the OBJ reader reads them back.
-void write_obj_tags(io_detail::OutputFile& out, const PolygonSoup& soup) {
+void write_obj_tags(detail::OutputFile& out, const PolygonSoup& soup) {
   for (const SoupCrease& c : soup.creases)
     out << fmt::format("t crease 2/1/0 {} {} {}\n", c.a, c.b, c.sharpness);
   for (const SoupCorner& c : soup.corners)
@@ -188,14 +191,30 @@ std::string file_extension(const std::string& path) {
   return ext;
 }
 
+std::optional<MeshFileFormat> mesh_file_format(const std::string& path,
+                                               std::span<const std::string_view> extensions) {
+  static constexpr std::array<std::pair<std::string_view, MeshFileFormat>, 6> kFormats{{
+      {".obj", MeshFileFormat::obj},
+      {".ply", MeshFileFormat::ply},
+      {".off", MeshFileFormat::off},
+      {".stl", MeshFileFormat::stl},
+      {".glb", MeshFileFormat::glb},
+      {".gltf", MeshFileFormat::gltf},
+  }};
+  const std::string ext = file_extension(path);
+  if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) return std::nullopt;
+  for (const auto& [extension, format] : kFormats)
+    if (extension == ext) return format;
+  return std::nullopt;
+}
+
 PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings,
                               const std::function<void(double)>& progress) {
-  const std::string ext = file_extension(path);
-  const bool gltf = ext == ".glb" || ext == ".gltf";
-  if (std::find(kMeshReadExtensions.begin(), kMeshReadExtensions.end(), ext) ==
-      kMeshReadExtensions.end())
+  const std::optional<MeshFileFormat> format = mesh_file_format(path, kMeshReadExtensions);
+  if (!format)
     throw UsageError(fmt::format("{}: cannot read files with extension '{}' (supported: {})", path,
-                                 limits::quoted(ext), extension_list(kMeshReadExtensions)));
+                                 limits::quoted(file_extension(path)),
+                                 extension_list(kMeshReadExtensions)));
   // Reading the bytes is the first third of the work, parsing them the rest.
   auto part = [&progress](double from, double to) -> std::function<void(double)> {
     if (!progress) return {};
@@ -204,11 +223,25 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
   const std::string text = read_regular_file(path, part(0, 1.0 / 3));
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw InputError(fmt::format("{}: the file is empty", path));
-  PolygonSoup soup = ext == ".obj"   ? io_detail::read_obj(text, path, warnings, part(1.0 / 3, 1))
-                     : ext == ".off" ? io_detail::read_off(text, path, warnings)
-                     : ext == ".stl" ? io_detail::read_stl(text, path, warnings)
-                     : gltf          ? io_detail::read_gltf(text, path, warnings)
-                                     : io_detail::read_ply(text, path, warnings);
+  PolygonSoup soup;
+  switch (*format) {
+    case MeshFileFormat::obj:
+      soup = detail::read_obj(text, path, warnings, part(1.0 / 3, 1));
+      break;
+    case MeshFileFormat::ply:
+      soup = detail::read_ply(text, path, warnings);
+      break;
+    case MeshFileFormat::off:
+      soup = detail::read_off(text, path, warnings);
+      break;
+    case MeshFileFormat::stl:
+      soup = detail::read_stl(text, path, warnings);
+      break;
+    case MeshFileFormat::glb:
+    case MeshFileFormat::gltf:
+      soup = detail::read_gltf(text, path, warnings);
+      break;
+  }
   soup.source = path;
   if (soup.faces.empty()) throw InputError(fmt::format("{}: the file contains no faces", path));
   if (progress) progress(1);
@@ -234,7 +267,6 @@ HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options, Bui
 }
 
 void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
-  const std::string ext = file_extension(path);
   const int nv = static_cast<int>(soup.positions.size());
   for (const auto& loop : soup.faces)
     for (int v : loop)
@@ -246,31 +278,53 @@ void write_polygon_soup(const std::string& path, const PolygonSoup& soup) {
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
       throw OutputError(fmt::format("cannot write {}: vertex {} {}", path, v + 1, problem));
   check_tags(path, soup);
-  using namespace io_detail;
-  const MeshStream stream = stream_arrays(soup.positions, nullptr, soup.faces);
+  const std::optional<MeshFileFormat> format = mesh_file_format(path, kMeshWriteExtensions);
+  if (!format)
+    throw OutputError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                  file_extension(path), extension_list(kMeshWriteExtensions)));
+  detail::MeshFileOptions options;
+  options.ply_encoding = detail::PlyEncoding::ascii;  // edited meshes are small; people read them
+  options.comment = kComment;
   // Only OBJ has a place for the crease and corner tags (OpenSubdiv's `t` lines); the other
   // formats have no standard one, so they are written without them (docs/formats.md).
-  if (ext == ".obj")
-    write_mesh_file(path, [&](OutputFile& out) {
-      write_obj(out, stream, kComment);
-      write_obj_tags(out, soup);
-    });
-  else if (ext == ".off")
-    write_mesh_file(path, [&](OutputFile& out) { write_off(out, stream, kComment); });
-  else if (ext == ".ply")  // ASCII: edited meshes are small, and people read them
-    write_mesh_file(path, [&](OutputFile& out) {
-      write_ply(out, stream, PlyEncoding::ascii, PlyPrecision::double_precision, kComment);
-    });
-  else if (ext == ".stl")
-    write_mesh_file(path,
-                    [&](OutputFile& out) { write_stl(out, stream, soup.positions, kComment); });
-  else
-    throw OutputError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                  ext, extension_list(kMeshWriteExtensions)));
+  options.obj_statements = [&](detail::OutputFile& out) { write_obj_tags(out, soup); };
+  detail::write_mesh_stream(path, *format,
+                            detail::stream_arrays(soup.positions, nullptr, soup.faces),
+                            soup.positions, options);
 }
 
 void write_mesh(const std::string& path, const HalfedgeMesh& mesh) {
   write_polygon_soup(path, to_polygon_soup(mesh));
+}
+
+void detail::write_mesh_stream(const std::string& path, MeshFileFormat format,
+                               const MeshStream& mesh, const std::vector<Vec3>& positions,
+                               const MeshFileOptions& options) {
+  if (is_gltf(format)) {
+    write_gltf(path, mesh, positions, format == MeshFileFormat::glb);
+    return;
+  }
+  write_mesh_file(path, [&](OutputFile& out) {
+    switch (format) {
+      case MeshFileFormat::obj:
+        write_obj(out, mesh, options.comment, options.progress);
+        if (options.obj_statements) options.obj_statements(out);
+        break;
+      case MeshFileFormat::ply:
+        write_ply(out, mesh, options.ply_encoding, options.ply_precision, options.comment,
+                  options.progress);
+        break;
+      case MeshFileFormat::off:
+        write_off(out, mesh, options.comment, options.progress);
+        break;
+      case MeshFileFormat::stl:
+        write_stl(out, mesh, positions, options.comment, options.progress);
+        break;
+      case MeshFileFormat::glb:  // above: glTF holds its buffer whole, not an OutputFile's blocks
+      case MeshFileFormat::gltf:
+        break;
+    }
+  });
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,

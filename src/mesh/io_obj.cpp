@@ -1,5 +1,6 @@
 // Wavefront OBJ: `v`, `vt` and `f` statements, and OpenSubdiv's `t` tags for creases and
 // corners; materials and normals are ignored because the smooth surface makes its own normals.
+// Written with `vn` and `vt` where the stream has them (write_obj, at the end).
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -9,10 +10,11 @@
 #include <map>
 #include <set>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/writer_kit.hpp"
 #include "stitch/mesh/limits.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -366,4 +368,79 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+// --- writing ---
+
+namespace {
+
+/// OBJ faces with texture coordinates: `f a/t/a ...` (or `a/t` without normals), 1-based. Apart
+/// from text_faces so that files without them take no branch per corner.
+FaceFormat obj_textured_faces(bool normals) {
+  return [=](const FaceBlock& block, OutputBuffer& text) {
+    char* at = text.claim(block.indices.size() * (3 * (kMaxDecimalChars + 1) + 1) +
+                          block.sizes.size() * 3);
+    const int* uv = block.texcoords.data();
+    for_each_face(block, [&](int size, const int* loop) {
+      *at++ = 'f';
+      for (int k = 0; k < size; ++k) {
+        *at++ = ' ';
+        char* const index = at;
+        at = put_index(at, loop[k], 1);
+        const size_t length = static_cast<size_t>(at - index);
+        *at++ = '/';
+        at = put_index(at, *uv++, 1);
+        if (normals) {
+          *at++ = '/';
+          std::memmove(at, index, length);  // the same number again
+          at += length;
+        }
+      }
+      *at++ = '\n';
+    });
+    text.commit(at);
+  };
+}
+
+}  // namespace
+
+void write_obj(OutputFile& out, const MeshStream& mesh, std::string_view comment,
+               const WriteProgress& report) {
+  Progress progress(report, mesh.num_vertices + mesh.num_texcoords + mesh.num_faces);
+  out << "# " << comment << '\n';
+  write_vertices(
+      out, mesh,
+      [&](const VertexBlock& block, OutputBuffer& text) {
+        char* at = text.claim((block.positions.size() + block.normals.size()) * line_room(3, 3));
+        for (const Vec3& p : block.positions) {
+          at = put_xyz(at, "v ", p);
+          *at++ = '\n';
+        }
+        // OBJ numbers `vn` lines separately from `v` lines, so they may follow block by block.
+        for (const Vec3& n : block.normals) {
+          at = put_xyz(at, "vn ", n);
+          *at++ = '\n';
+        }
+        text.commit(at);
+      },
+      progress);
+  if (mesh.num_texcoords == 0) {
+    write_faces(out, mesh, text_faces("f", false, 1, mesh.has_normals), progress);
+    return;
+  }
+  write_records<std::vector<Eigen::Vector2d>>(
+      out, mesh.num_texcoords, kVerticesPerBlock, mesh.texcoords,
+      [](const std::vector<Eigen::Vector2d>& block, OutputBuffer& text) {
+        char* at = text.claim(block.size() * line_room(3, 2));
+        for (const Eigen::Vector2d& t : block) {
+          at = put(at, "vt ");
+          at = put(at, t.x(), false);
+          *at++ = ' ';
+          at = put(at, t.y(), false);
+          *at++ = '\n';
+        }
+        text.commit(at);
+      },
+      progress);
+  write_faces(out, mesh, obj_textured_faces(mesh.has_normals), progress);
+}
+
+}  // namespace stitch::detail

@@ -1,11 +1,13 @@
 // Object File Format: `OFF`, counts, one vertex per line, one face per line (`n i0 ... i(n-1)`,
-// 0-based, optionally followed by a colour).
+// 0-based, optionally followed by a colour). Written the same way without colours (write_off, at
+// the end).
 #include <algorithm>
 #include <limits>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/writer_kit.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -105,4 +107,24 @@ PolygonSoup read_off(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+// --- writing ---
+
+void write_off(OutputFile& out, const MeshStream& mesh, std::string_view comment,
+               const WriteProgress& report) {
+  Progress progress(report, mesh.num_vertices + mesh.num_faces);
+  out << "OFF\n# " << comment << '\n' << mesh.num_vertices << ' ' << mesh.num_faces << " 0\n";
+  write_vertices(
+      out, mesh,
+      [](const VertexBlock& block, OutputBuffer& text) {
+        char* at = text.claim(block.positions.size() * line_room(0, 3));
+        for (const Vec3& p : block.positions) {
+          at = put_xyz(at, "", p);
+          *at++ = '\n';
+        }
+        text.commit(at);
+      },
+      progress);
+  write_faces(out, mesh, text_faces("", true, 0, false), progress);
+}
+
+}  // namespace stitch::detail

@@ -1,6 +1,7 @@
 // Stanford PLY, ASCII and binary (either byte order): vertex x y z, per-vertex texture
 // coordinates and a face list of vertex indices; every other element and property is read past
-// and ignored.
+// and ignored. Written as ASCII or binary little-endian x y z (nx ny nz), doubles or floats
+// (write_ply, at the end).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -8,10 +9,11 @@
 #include <limits>
 #include <optional>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/writer_kit.hpp"
 #include "stitch/mesh/limits.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -435,4 +437,132 @@ PolygonSoup read_ply(std::string_view text, const std::string& path,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+// --- writing ---
+
+namespace {
+
+/// Binary PLY vertex records: x y z (nx ny nz), little-endian doubles or floats.
+void ply_binary_vertices(const VertexBlock& block, bool normals, bool single, OutputBuffer& bytes) {
+  const size_t count = block.positions.size();
+  const size_t scalars = normals ? 6 : 3;
+  if constexpr (std::endian::native == std::endian::little) {
+    // A record is the values' own bytes: copied whole, not value by value (the PLY writer's
+    // share of the CPU was as large as the evaluation's).
+    if (!single) {
+      char* at = bytes.extend(count * scalars * sizeof(double));
+      static_assert(sizeof(Vec3) == 3 * sizeof(double));
+      if (!normals) {
+        std::memcpy(at, block.positions.data(), count * sizeof(Vec3));
+        return;
+      }
+      for (size_t i = 0; i < count; ++i) {
+        std::memcpy(at, block.positions[i].data(), sizeof(Vec3));
+        std::memcpy(at + sizeof(Vec3), block.normals[i].data(), sizeof(Vec3));
+        at += 2 * sizeof(Vec3);
+      }
+      return;
+    }
+    char* at = bytes.extend(count * scalars * sizeof(float));
+    for (size_t i = 0; i < count; ++i) {
+      std::array<float, 6> record{};
+      for (int axis = 0; axis < 3; ++axis) {
+        record[axis] = static_cast<float>(block.positions[i][axis]);
+        if (normals) record[3 + axis] = static_cast<float>(block.normals[i][axis]);
+      }
+      std::memcpy(at, record.data(), scalars * sizeof(float));
+      at += scalars * sizeof(float);
+    }
+    return;
+  }
+  LittleEndianWriter record(bytes, count * scalars * (single ? sizeof(float) : sizeof(double)));
+  const auto put = [&](const Vec3& p) {
+    if (single)
+      record.put(p.cast<float>().eval());
+    else
+      record.put(p);
+  };
+  for (size_t i = 0; i < count; ++i) {
+    put(block.positions[i]);
+    if (normals) put(block.normals[i]);
+  }
+}
+
+/// Binary PLY faces: the vertex count (uchar when `byte_counts`, else int), then int indices.
+void ply_binary_faces(const FaceBlock& block, bool byte_counts, OutputBuffer& bytes) {
+  const size_t size = block.sizes.size() * (byte_counts ? 1 : 4) + block.indices.size() * 4;
+  if constexpr (std::endian::native == std::endian::little) {
+    static_assert(sizeof(int) == sizeof(std::int32_t));
+    if (byte_counts) {
+      char* at = bytes.extend(size);
+      for_each_face(block, [&](int count, const int* loop) {
+        *at++ = static_cast<char>(static_cast<std::uint8_t>(count));
+        // A fixed size for the usual quads and triangles: a move, not a call to memcpy.
+        if (count == 4)
+          std::memcpy(at, loop, 4 * sizeof(int));
+        else if (count == 3)
+          std::memcpy(at, loop, 3 * sizeof(int));
+        else
+          std::memcpy(at, loop, static_cast<size_t>(count) * sizeof(int));
+        at += static_cast<size_t>(count) * sizeof(int);
+      });
+      return;
+    }
+  }
+  LittleEndianWriter record(bytes, size);
+  for_each_face(block, [&](int count, const int* loop) {
+    if (byte_counts)
+      record.put(static_cast<std::uint8_t>(count));
+    else
+      record.put(static_cast<std::int32_t>(count));
+    for (int k = 0; k < count; ++k) record.put(static_cast<std::int32_t>(loop[k]));
+  });
+}
+
+}  // namespace
+
+void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
+               PlyPrecision precision, std::string_view comment, const WriteProgress& report) {
+  Progress progress(report, mesh.num_vertices + mesh.num_faces);
+  const bool binary = encoding == PlyEncoding::binary_little_endian;
+  const bool single = precision == PlyPrecision::single;
+  const bool byte_counts = mesh.max_face_degree <= 255;
+  const char* type = single ? "float" : "double";
+  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment "
+      << comment << "\nelement vertex " << mesh.num_vertices;
+  for (const char* name : {"x", "y", "z"}) out << "\nproperty " << type << ' ' << name;
+  if (mesh.has_normals)
+    for (const char* name : {"nx", "ny", "nz"}) out << "\nproperty " << type << ' ' << name;
+  out << '\n';
+  out << "element face " << mesh.num_faces << "\nproperty list " << (byte_counts ? "uchar" : "int")
+      << " int vertex_indices\nend_header\n";
+  if (binary) {
+    write_vertices(
+        out, mesh,
+        [&](const VertexBlock& block, OutputBuffer& bytes) {
+          ply_binary_vertices(block, mesh.has_normals, single, bytes);
+        },
+        progress);
+    write_faces(
+        out, mesh,
+        [&](const FaceBlock& block, OutputBuffer& bytes) {
+          ply_binary_faces(block, byte_counts, bytes);
+        },
+        progress);
+    return;
+  }
+  write_vertices(
+      out, mesh,
+      [&](const VertexBlock& block, OutputBuffer& text) {
+        char* at = text.claim(block.positions.size() * line_room(1, 6));
+        for (size_t i = 0; i < block.positions.size(); ++i) {
+          at = put_xyz(at, "", block.positions[i], single);
+          if (mesh.has_normals) at = put_xyz(at, " ", block.normals[i], single);
+          *at++ = '\n';
+        }
+        text.commit(at);
+      },
+      progress);
+  write_faces(out, mesh, text_faces("", true, 0, false), progress);
+}
+
+}  // namespace stitch::detail

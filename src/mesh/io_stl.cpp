@@ -1,7 +1,8 @@
-// STL in (ASCII and binary), welded into a polygon soup. STL stores every triangle with its own
-// three corners, so shared vertices are found again by position: corners closer than
-// kWeldTolerance times the bounding box diagonal become one vertex (weld_triangles, which the
-// glTF reader shares: glTF splits vertices wherever an attribute differs).
+// STL in (ASCII and binary), welded into a polygon soup, and out (binary, write_stl at the end).
+// STL stores every triangle with its own three corners, so shared vertices are found again by
+// position: corners closer than kWeldTolerance times the bounding box diagonal become one vertex
+// (weld_triangles, which the glTF reader shares: glTF splits vertices wherever an attribute
+// differs).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -9,9 +10,10 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "io_detail.hpp"
+#include "mesh/mesh_reader.hpp"
+#include "mesh/writer_kit.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -179,4 +181,37 @@ PolygonSoup weld_triangles(const std::vector<std::array<Vec3, 3>>& triangles,
   return soup;
 }
 
-}  // namespace stitch::io_detail
+// --- writing ---
+
+void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+               std::string_view comment, const WriteProgress& report) {
+  if (mesh.triangles > std::numeric_limits<std::uint32_t>::max())
+    throw OutputError(
+        fmt::format("{} triangles are more than binary STL can hold (2^32 - 1)", mesh.triangles));
+  Progress progress(report, mesh.num_faces);
+  std::array<char, 80> header{};
+  std::memcpy(header.data(), comment.data(), std::min(comment.size(), header.size()));
+  out.write(header.data(), header.size());
+  OutputBuffer count;
+  LittleEndianWriter(count, 4).put(static_cast<std::uint32_t>(mesh.triangles));
+  out.write(count.data(), count.size());
+  write_faces(
+      out, mesh,
+      [&](const FaceBlock& block, OutputBuffer& bytes) {
+        size_t triangles = 0;
+        for (int size : block.sizes) triangles += static_cast<size_t>(std::max(0, size - 2));
+        LittleEndianWriter record(bytes, triangles * 50);
+        auto put = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+          const Vec3 n = (b - a).cross(c - a).stableNormalized();
+          for (const Vec3* p : {&n, &a, &b, &c})
+            for (int axis = 0; axis < 3; ++axis) record.put(static_cast<float>((*p)[axis]));
+          record.put(std::uint16_t{0});
+        };
+        for_each_triangle(block, positions, [&](int a, int b, int c) {
+          put(positions[a], positions[b], positions[c]);
+        });
+      },
+      progress);
+}
+
+}  // namespace stitch::detail

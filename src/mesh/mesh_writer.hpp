@@ -2,7 +2,9 @@
 // in blocks on every core and written in order, so a mesh can be written while it is computed
 // (the smooth surface of a large mesh never has to be held whole) and the bytes do not depend on
 // the number of threads. Numbers go through std::to_chars (shortest text that reads back
-// exactly), binary values into bulk buffers. Internal to the library.
+// exactly), binary values into bulk buffers. write_mesh_stream is the one dispatch by format;
+// each format's writer is in its own file beside its reader (io_obj.cpp, ...). Internal to the
+// library.
 #pragma once
 
 #include <algorithm>
@@ -16,10 +18,11 @@
 #include <string_view>
 #include <vector>
 
-#include "output_file.hpp"
+#include "mesh/output_file.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 /// One block of vertices: positions, and normals when the mesh has them.
 struct VertexBlock {
@@ -44,8 +47,10 @@ struct MeshStream {
   std::int64_t triangles = 0;  ///< sum over faces of (size - 2): STL's triangle count
   std::function<void(std::int64_t begin, std::int64_t end, VertexBlock&)> vertices;
   std::function<void(std::int64_t begin, std::int64_t end, FaceBlock&)> faces;
-  /// Texture coordinates, numbered on their own (OBJ `vt`: a seam needs two at one vertex);
-  /// written by write_obj only. 0: none, and FaceBlock::texcoords stays empty.
+  /// Texture coordinates (0: none, and FaceBlock::texcoords stays empty). OBJ numbers them on
+  /// their own (`vt`: a seam needs two at one vertex) and reads FaceBlock::texcoords; glTF has one
+  /// per vertex (num_texcoords == num_vertices) and no use for FaceBlock::texcoords. The other
+  /// formats have no place for them.
   std::int64_t num_texcoords = 0;
   std::function<void(std::int64_t begin, std::int64_t end, std::vector<Eigen::Vector2d>&)>
       texcoords;
@@ -59,21 +64,52 @@ enum class PlyEncoding { ascii, binary_little_endian };
 /// about 7 significant digits (enough to render or print).
 enum class PlyPrecision { double_precision, single };
 
+/// How write_mesh_stream writes a file besides its format.
+struct MeshFileOptions {
+  PlyEncoding ply_encoding = PlyEncoding::binary_little_endian;
+  PlyPrecision ply_precision = PlyPrecision::double_precision;
+  /// In the header: OBJ and OFF comment lines, a PLY comment, STL's 80 bytes (glTF names its
+  /// generator instead).
+  std::string_view comment;
+  WriteProgress progress;  ///< glTF, written whole, tells none
+  /// OBJ only: statements written after the faces (write_polygon_soup's crease and corner tags).
+  std::function<void(OutputFile&)> obj_statements;
+};
+
+/// Writes `mesh` to `path` in `format` (whatever the path's extension), atomically
+/// (write_mesh_file; glTF through write_file_atomically). `positions` are every vertex's, for
+/// the formats made of triangles (STL, glTF: quads are split by their shorter diagonal); the
+/// others may get an empty vector.
+void write_mesh_stream(const std::string& path, MeshFileFormat format, const MeshStream& mesh,
+                       const std::vector<Vec3>& positions, const MeshFileOptions& options);
+
 /// OBJ: `v` (and `vn`) lines block by block, the `vt` lines, then 1-based faces (`a//a` with
 /// normals, `a/t/a` with texture coordinates too, `a/t` with texture coordinates only).
+/// io_obj.cpp.
 void write_obj(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
-/// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals.
+/// OFF with `nv nf 0` counts; faces as `n i0 ... i(n-1)`, 0-based; no normals. io_off.cpp.
 void write_off(OutputFile& out, const MeshStream& mesh, std::string_view comment,
                const WriteProgress& progress = {});
 /// PLY with x y z (and nx ny nz) as double (an exact round trip in either encoding) or float.
+/// io_ply.cpp.
 void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
                PlyPrecision precision, std::string_view comment,
                const WriteProgress& progress = {});
-/// Binary STL; every polygon is fanned from its first vertex into triangles, whose corners are
-/// looked up in `positions` (STL repeats them per triangle, so they must be at hand).
+/// Binary STL; every polygon is fanned from its first vertex into triangles (quads split by
+/// their shorter diagonal), whose corners are looked up in `positions` (STL repeats them per
+/// triangle, so they must be at hand). io_stl.cpp.
 void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
                std::string_view comment, const WriteProgress& progress = {});
+/// glTF 2.0, one mesh of triangles (split as write_stl splits them) with float POSITION,
+/// NORMAL (with the stream's normals, normalized again after rounding) and TEXCOORD_0 (with its
+/// texture coordinates, one per vertex; v flipped to glTF's, down from the top). `binary`: one
+/// .glb file. Otherwise a .gltf file and its buffer beside it, named like the .gltf with the
+/// extension .bin (written first, so the .gltf never refers to a missing file). glTF holds its
+/// buffer whole, so the stream is read into it before anything is written. Atomic.
+/// io_gltf.cpp.
+void write_gltf(const std::string& path, const MeshStream& mesh, const std::vector<Vec3>& positions,
+                bool binary);
 
 /// Bytes a block is formatted into. Unlike std::string it neither zero-fills what it is about to
 /// overwrite nor gives its memory back when cleared, so the few buffers the writers cycle through
@@ -141,10 +177,12 @@ class LittleEndianWriter {
 void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write);
 
 /// A stream over vertex and face arrays held in memory (`normals` may be null). Faces is any
-/// container of index loops (std::vector<int>, std::array<int, 4>, ...).
+/// container of index loops (std::vector<int>, std::array<int, 4>, ...). `texcoords`, if given,
+/// are one per vertex (each corner's is its vertex's).
 template <class Faces>
 MeshStream stream_arrays(const std::vector<Vec3>& positions, const std::vector<Vec3>* normals,
-                         const Faces& faces) {
+                         const Faces& faces,
+                         const std::vector<Eigen::Vector2d>* texcoords = nullptr) {
   MeshStream s;
   s.num_vertices = static_cast<std::int64_t>(positions.size());
   s.num_faces = static_cast<std::int64_t>(std::size(faces));
@@ -159,7 +197,7 @@ MeshStream stream_arrays(const std::vector<Vec3>& positions, const std::vector<V
     block.positions.assign(positions.begin() + begin, positions.begin() + end);
     if (normals) block.normals.assign(normals->begin() + begin, normals->begin() + end);
   };
-  s.faces = [&faces](std::int64_t begin, std::int64_t end, FaceBlock& block) {
+  s.faces = [&faces, texcoords](std::int64_t begin, std::int64_t end, FaceBlock& block) {
     block.sizes.clear();
     block.indices.clear();
     for (std::int64_t f = begin; f < end; ++f) {
@@ -167,8 +205,16 @@ MeshStream stream_arrays(const std::vector<Vec3>& positions, const std::vector<V
       block.sizes.push_back(static_cast<int>(std::size(loop)));
       block.indices.insert(block.indices.end(), std::begin(loop), std::end(loop));
     }
+    if (texcoords) block.texcoords = block.indices;
   };
+  if (texcoords) {
+    s.num_texcoords = static_cast<std::int64_t>(texcoords->size());
+    s.texcoords = [texcoords](std::int64_t begin, std::int64_t end,
+                              std::vector<Eigen::Vector2d>& block) {
+      block.assign(texcoords->begin() + begin, texcoords->begin() + end);
+    };
+  }
   return s;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

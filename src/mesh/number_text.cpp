@@ -1,4 +1,4 @@
-#include "number_text.hpp"
+#include "mesh/number_text.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -136,4 +136,4 @@ char* write_shortest(char* at, double x) {
   return end + 2;
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 /// Room enough for any double write_shortest writes ("-2.2250738585072014e-308").
 inline constexpr int kMaxDoubleChars = 24;
@@ -21,4 +21,4 @@ char* write_shortest(char* at, double x);
 /// Writes `value` in decimal at `at` and returns the end.
 char* write_decimal(char* at, std::uint64_t value);
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
-#include "stitch/topology/remesh.hpp"
 
 namespace stitch {
 
@@ -39,6 +38,9 @@ SurfaceRing surface_ring(const HalfedgeMesh& mesh, Vertex v);
 /// The sharpness OpenSubdiv refines with (Vtr sharpens it so before the first level): boundary
 /// edges infinitely sharp, tags clamped to [0, infinitely_sharp].
 float osd_edge_sharpness(const HalfedgeMesh& mesh, Edge e);
+/// A sharpness tag as OpenSubdiv reads it: not positive (NaN too) is smooth, at or above its
+/// infinite value infinitely sharp.
+float clamped_sharpness(double s);
 /// The same for a vertex with the given surface ring: with edge-and-corner interpolation, a
 /// boundary vertex with one face is infinitely sharp.
 float osd_vertex_sharpness(const HalfedgeMesh& mesh, Vertex v, const SurfaceRing& ring,
@@ -54,15 +56,6 @@ float osd_vertex_sharpness(const HalfedgeMesh& mesh, Vertex v, const SurfaceRing
 std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(
     const HalfedgeMesh& mesh,
     BoundaryInterpolation boundary = BoundaryInterpolation::edge_and_corner);
-
-/// One Catmull-Clark step honouring the mesh's features as OpenSubdiv refines them: the
-/// connectivity of catmull_clark_refinement, hole faces refined into hole quads, new vertices
-/// on creases, corners and the boundary placed by Sdc's crease and corner rules (fractional
-/// sharpness blended), and the tags of the refined mesh subdivided (semi-sharp values drop by
-/// one). The limit surface outside holes is unchanged, as for the step without features.
-/// Throws stitch::Error as surface_ring does.
-CatmullClarkRefinement catmark_refinement_with_features(const HalfedgeMesh& mesh,
-                                                        BoundaryInterpolation boundary);
 
 // Sdc's MASK interface over plain arrays.
 struct SdcMask {

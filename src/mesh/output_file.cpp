@@ -1,4 +1,4 @@
-#include "output_file.hpp"
+#include "mesh/output_file.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -9,7 +9,7 @@
 
 #include "stitch/mesh/halfedge_mesh.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 namespace {
 
@@ -74,4 +74,4 @@ void OutputFile::write_through(const char* data, size_t size) {
 #endif
 }
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 class OutputFile {
  public:
@@ -48,4 +48,4 @@ class OutputFile {
   std::int64_t handed_ = 0;   ///< of those, handed to the disk
 };
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail

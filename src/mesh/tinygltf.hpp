@@ -1,6 +1,6 @@
 // tinygltf as the library uses it: no image decoding or encoding (the surface has no textures).
 // Every file that includes tinygltf includes it through here, so all see the same declarations;
-// src/tess/gltf.cpp defines TINYGLTF_IMPLEMENTATION before including it. Internal.
+// src/mesh/io_gltf.cpp defines TINYGLTF_IMPLEMENTATION before including it. Internal.
 #pragma once
 
 #define TINYGLTF_NO_STB_IMAGE

@@ -46,9 +46,10 @@ SurfaceFileOptions file_options(const OutputSpec& spec, const OutputFormat& form
 OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
                         const OutputSpec& spec, const OutputFormat& format) {
   OutputReport r;
+  const MeshFileFormat mesh_format = format.mesh_format.value();
   if (spec.adaptive_tolerance > 0) {
     const AdaptiveMesh adaptive = tessellate_adaptive(mesh, surface, {spec.adaptive_tolerance});
-    write_adaptive_mesh(path, adaptive, file_options(spec, format));
+    write_adaptive_mesh(path, mesh_format, adaptive, file_options(spec, format));
     r.vertices = adaptive.num_vertices();
     r.faces = static_cast<std::int64_t>(adaptive.triangles.size());
     r.summary = fmt::format(
@@ -64,8 +65,8 @@ OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const
     r.faces = static_cast<std::int64_t>(samples.quads.size());
     r.texcoords = spec.uvs ? r.vertices : 0;
   } else {
-    const SurfaceFileCounts c =
-        write_smooth_surface(path, mesh, surface, spec.resolution, file_options(spec, format));
+    const SurfaceFileCounts c = write_smooth_surface(path, mesh_format, mesh, surface,
+                                                     spec.resolution, file_options(spec, format));
     r.vertices = c.vertices;
     r.faces = c.quads;
     r.texcoords = c.texcoords;
@@ -190,6 +191,7 @@ std::span<const OutputFormat> output_formats() {
       {"binary PLY",
        {".ply", ""},
        K::tessellated,
+       MeshFileFormat::ply,
        true,
        false,
        true,
@@ -202,6 +204,7 @@ std::span<const OutputFormat> output_formats() {
       {"Wavefront OBJ",
        {".obj", ""},
        K::tessellated,
+       MeshFileFormat::obj,
        true,
        true,
        false,
@@ -213,6 +216,7 @@ std::span<const OutputFormat> output_formats() {
       {"OFF",
        {".off", ""},
        K::tessellated,
+       MeshFileFormat::off,
        false,
        false,
        false,
@@ -224,6 +228,7 @@ std::span<const OutputFormat> output_formats() {
       {"binary STL",
        {".stl", ""},
        K::tessellated,
+       MeshFileFormat::stl,
        false,
        false,
        false,
@@ -235,6 +240,7 @@ std::span<const OutputFormat> output_formats() {
       {"glTF 2.0 binary",
        {".glb", ""},
        K::tessellated,
+       MeshFileFormat::glb,
        true,
        true,
        false,
@@ -246,6 +252,7 @@ std::span<const OutputFormat> output_formats() {
       {"glTF 2.0",
        {".gltf", ""},
        K::tessellated,
+       MeshFileFormat::gltf,
        true,
        true,
        false,
@@ -257,6 +264,7 @@ std::span<const OutputFormat> output_formats() {
       {"Bezier JSON",
        {".bez.json", ".json"},
        K::exact,
+       std::nullopt,
        false,
        false,
        false,
@@ -268,6 +276,7 @@ std::span<const OutputFormat> output_formats() {
       {"STEP AP214",
        {".step", ".stp"},
        K::exact,
+       std::nullopt,
        false,
        false,
        false,
@@ -279,6 +288,7 @@ std::span<const OutputFormat> output_formats() {
       {"IGES 5.3",
        {".igs", ".iges"},
        K::exact,
+       std::nullopt,
        false,
        false,
        false,

@@ -1,4 +1,4 @@
-#include "kgon_control_json.hpp"
+#include "project/kgon_control_json.hpp"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "kgon_control_json.hpp"
+#include "project/kgon_control_json.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/topology/operation.hpp"

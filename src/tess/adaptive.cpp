@@ -1,4 +1,4 @@
-#include "adaptive.hpp"
+#include "tess/adaptive.hpp"
 
 #include <fmt/format.h>
 
@@ -8,15 +8,14 @@
 #include <cstdlib>
 #include <limits>
 
-#include "../eval/patch_sampler.hpp"
-#include "../mesh/mesh_writer.hpp"
-#include "stitch/mesh/io.hpp"
+#include "eval/patch_sampler.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "stitch/tess/adaptive.hpp"
-#include "write_stream.hpp"
+#include "tess/write_stream.hpp"
 
 namespace stitch {
 
-namespace adaptive_detail {
+namespace detail {
 
 int side_rate(const ControlNet& net, int side, double tolerance, int max_rate) {
   // Sides 0 and 2 run along u (index a), 1 and 3 along v; the row on the side and the next one
@@ -61,12 +60,12 @@ std::vector<std::array<StripCorner, 3>> zip_strip(int outer, int inner) {
   return out;
 }
 
-}  // namespace adaptive_detail
+}  // namespace detail
 
 namespace {
 
-using adaptive_detail::side_rate;
-using adaptive_detail::zip_strip;
+using detail::side_rate;
+using detail::zip_strip;
 
 struct Sample {
   int vertex = -1;
@@ -166,7 +165,7 @@ class Builder {
       }
       const int r = static_cast<int>(sides[side].size()) - 1;
       for (const auto& t : zip_strip(r, n - 1)) {
-        const auto at = [&](const adaptive_detail::StripCorner& s) -> const Sample& {
+        const auto at = [&](const detail::StripCorner& s) -> const Sample& {
           return s[0] == 0 ? sides[side][s[1]] : *row[s[1]];
         };
         triangle(at(t[0]), at(t[1]), at(t[2]));
@@ -308,18 +307,16 @@ AdaptiveMesh tessellate_adaptive(const HalfedgeMesh& mesh, const Surface& surfac
   return out;
 }
 
-void write_adaptive_mesh(const std::string& path, const AdaptiveMesh& mesh,
+void write_adaptive_mesh(const std::string& path, MeshFileFormat format, const AdaptiveMesh& mesh,
                          const SurfaceFileOptions& options) {
-  using namespace io_detail;
-  const std::string ext = file_extension(path);
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw OutputError(fmt::format(
-        "cannot write {}: an adaptive tessellation is written as .obj, .ply, .off or .stl", path));
-  const bool normals = ext == ".obj" || ext == ".ply";
-  const MeshStream stream =
-      stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.triangles);
-  detail::write_stream(path, stream, mesh.positions, options,
-                       "stitch surface (bicubic Bezier patches, adaptive tessellation)");
+  if (is_gltf(format))
+    throw OutputError(
+        fmt::format("cannot write {}: an adaptive tessellation is not written as glTF", path));
+  const bool normals = has_vertex_normals(format);
+  detail::write_stream(
+      path, format,
+      detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.triangles),
+      mesh.positions, options, "stitch surface (bicubic Bezier patches, adaptive tessellation)");
 }
 
 }  // namespace stitch

@@ -6,7 +6,7 @@
 
 #include "stitch/net/control_net.hpp"
 
-namespace stitch::adaptive_detail {
+namespace stitch::detail {
 
 /// Segments the patch of `net` needs along `side` (control_net.hpp's numbering) so that the
 /// cubic flattening bound (3/4) max|second difference| / n^2 of the side's row and the next row
@@ -21,4 +21,4 @@ int side_rate(const ControlNet& net, int side, double tolerance, int max_rate);
 using StripCorner = std::array<int, 2>;
 std::vector<std::array<StripCorner, 3>> zip_strip(int outer, int inner);
 
-}  // namespace stitch::adaptive_detail
+}  // namespace stitch::detail

@@ -5,20 +5,15 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 #include <limits>
-#include <nlohmann/json.hpp>
-#include <sstream>
+#include <optional>
 
-#include "../mesh/mesh_writer.hpp"
-#include "layout.hpp"
-#include "mesh/tinygltf.hpp"
+#include "mesh/mesh_writer.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "support/finite.hpp"
-#include "tess/gltf.hpp"
-#include "write_stream.hpp"
+#include "tess/layout.hpp"
+#include "tess/write_stream.hpp"
 
 namespace stitch {
 
@@ -40,18 +35,6 @@ void check_writable(const std::string& path, const TessellatedMesh& mesh) {
   if (const int bad = first_non_finite_sample(mesh); bad >= 0)
     throw OutputError(fmt::format("cannot write {}: sample {} has a non-finite position or normal",
                                   path, bad + 1));
-}
-
-bool is_gltf(const std::string& path) {
-  const std::string ext = file_extension(path);
-  return ext == ".glb" || ext == ".gltf";
-}
-
-void check_extension(const std::string& path) {
-  const std::string ext = file_extension(path);
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl")
-    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                 ext, extension_list(kSurfaceMeshExtensions)));
 }
 
 /// Samples per patch grid: the number of `vt` lines and unwelded samples of one corner.
@@ -76,11 +59,12 @@ std::vector<Eigen::Vector2d> grid_uvs(const UvSurface& uvs, const std::vector<Co
 }
 
 /// The welded tessellation as glTF needs it: one UV per vertex, so a vertex whose patches give
-/// it different UVs (a seam) is split, one copy per distinct UV as glTF stores it (float). A
-/// vertex is split only where the floats differ: elsewhere the patches agree to round-off.
+/// it different UVs (a seam) is split, one copy per distinct UV as glTF stores it (float, v down
+/// from the top). A vertex is split only where the floats differ: elsewhere the patches agree to
+/// round-off.
 struct TexturedMesh {
   TessellatedMesh mesh;                    ///< positions, normals and quads only
-  std::vector<Eigen::Vector2f> texcoords;  ///< glTF's: v down from the top
+  std::vector<Eigen::Vector2d> texcoords;  ///< one per vertex, the first of its float's UVs
 };
 
 TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
@@ -88,6 +72,9 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
   const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true, false});
   const std::vector<Eigen::Vector2d> grid = grid_uvs(uvs, surface.corners(), resolution);
   const int n = resolution;
+  const auto stored = [](const Eigen::Vector2d& uv) {  // as the glTF writer stores it
+    return Eigen::Vector2f(static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y()));
+  };
   TexturedMesh out;
   out.mesh.quads.resize(whole.quads.size());
   // Copies of welded vertex v: head[v], then along `chain`; in order of first use by the quads,
@@ -100,18 +87,20 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
     const std::array<std::array<int, 2>, 4> at{{{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
     for (int m = 0; m < 4; ++m) {
       const Eigen::Vector2d& uv = grid[k * grid_size(n) + at[m][0] * (n + 1) + at[m][1]];
-      const Eigen::Vector2f st(static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y()));
+      const Eigen::Vector2f st = stored(uv);
       const int v = whole.quads[q][m];
       int* link = &head[v];
-      while (*link >= 0 && out.texcoords[*link] != st) link = &chain[*link];
-      if (*link < 0) {
-        *link = static_cast<int>(out.mesh.positions.size());
+      while (*link >= 0 && stored(out.texcoords[*link]) != st) link = &chain[*link];
+      int copy = *link;
+      if (copy < 0) {
+        copy = static_cast<int>(out.mesh.positions.size());
+        *link = copy;  // before chain grows: `link` may point into it
         out.mesh.positions.push_back(whole.positions[v]);
         out.mesh.normals.push_back(whole.normals[v]);
-        out.texcoords.push_back(st);
+        out.texcoords.push_back(uv);
         chain.push_back(-1);
       }
-      out.mesh.quads[q][m] = *link;
+      out.mesh.quads[q][m] = copy;
     }
   }
   return out;
@@ -119,68 +108,52 @@ TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int
 
 }  // namespace
 
-void detail::write_stream(const std::string& path, const io_detail::MeshStream& stream,
+void detail::write_stream(const std::string& path, MeshFileFormat format, const MeshStream& stream,
                           const std::vector<Vec3>& positions, const SurfaceFileOptions& options,
                           std::string_view comment) {
-  using namespace io_detail;
-  const std::string ext = file_extension(path);
-  write_mesh_file(path, [&](OutputFile& out) {
-    if (ext == ".obj")
-      write_obj(out, stream, comment, options.progress);
-    else if (ext == ".ply")
-      write_ply(out, stream,
-                options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian,
-                options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision,
-                comment, options.progress);
-    else if (ext == ".off")
-      write_off(out, stream, comment, options.progress);
-    else
-      write_stl(out, stream, positions, comment, options.progress);
-  });
+  MeshFileOptions file;
+  file.ply_encoding = options.ascii_ply ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  file.ply_precision =
+      options.single_precision ? PlyPrecision::single : PlyPrecision::double_precision;
+  file.comment = comment;
+  file.progress = options.progress;
+  write_mesh_stream(path, format, stream, positions, file);
 }
 
-bool surface_file_takes_uvs(const std::string& path) {
-  return file_extension(path) == ".obj" || is_gltf(path);
-}
-
-void write_surface_mesh(const std::string& path, const TessellatedMesh& mesh,
+void write_surface_mesh(const std::string& path, MeshFileFormat format, const TessellatedMesh& mesh,
                         const SurfaceFileOptions& options) {
-  if (is_gltf(path)) {
-    check_writable(path, mesh);
-    write_gltf(path, mesh, file_extension(path) == ".glb");
-    return;
-  }
-  check_extension(path);
   check_writable(path, mesh);
-  const bool normals = file_extension(path) != ".off" && file_extension(path) != ".stl";
+  const bool normals = has_vertex_normals(format);
   detail::write_stream(
-      path, io_detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
+      path, format,
+      detail::stream_arrays(mesh.positions, normals ? &mesh.normals : nullptr, mesh.quads),
       mesh.positions, options, kComment);
 }
 
-SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
-                                       const Surface& surface, int resolution,
-                                       const SurfaceFileOptions& options) {
-  if (is_gltf(path) && options.uvs) {
+SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat format,
+                                       const HalfedgeMesh& mesh, const Surface& surface,
+                                       int resolution, const SurfaceFileOptions& options) {
+  if (is_gltf(format) && options.uvs) {
     const TexturedMesh whole = textured_mesh(mesh, surface, resolution, *options.uvs);
     check_writable(path, whole.mesh);
-    write_gltf(path, whole.mesh, file_extension(path) == ".glb", &whole.texcoords);
+    detail::write_stream(path, format,
+                         detail::stream_arrays(whole.mesh.positions, &whole.mesh.normals,
+                                               whole.mesh.quads, &whole.texcoords),
+                         whole.mesh.positions, options, kComment);
     return {static_cast<std::int64_t>(whole.mesh.positions.size()),
             static_cast<std::int64_t>(whole.mesh.quads.size()),
             static_cast<std::int64_t>(whole.texcoords.size())};
   }
-  if (is_gltf(path)) {  // glTF holds its buffer whole: tessellate, then write
+  if (is_gltf(format)) {  // glTF holds its buffer whole: tessellate, then write
     const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true});
-    write_surface_mesh(path, whole, options);
+    write_surface_mesh(path, format, whole, options);
     return {whole.num_vertices(), static_cast<std::int64_t>(whole.quads.size())};
   }
-  check_extension(path);
-  const std::string ext = file_extension(path);
   const TessellationLayout layout(mesh, surface.corners(), resolution, true);
-  io_detail::MeshStream stream;
+  detail::MeshStream stream;
   stream.num_vertices = layout.num_vertices();
   stream.num_faces = layout.num_quads();
-  stream.has_normals = ext == ".obj" || ext == ".ply";
+  stream.has_normals = has_vertex_normals(format);
   stream.max_face_degree = 4;
   stream.triangles = 2 * layout.num_quads();
   // Evaluates output vertices [begin, end), refusing what no file should hold.
@@ -191,7 +164,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
       throw OutputError(
           fmt::format("sample {} has a non-finite position or normal", begin + bad + 1));
   };
-  stream.vertices = [&](std::int64_t begin, std::int64_t end, io_detail::VertexBlock& block) {
+  stream.vertices = [&](std::int64_t begin, std::int64_t end, detail::VertexBlock& block) {
     block.positions.resize(static_cast<size_t>(end - begin));
     block.normals.resize(block.positions.size());
     evaluate(begin, end, block.positions.data(), block.normals.data());
@@ -200,7 +173,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
   // OBJ's `vt` are numbered apart from `v`: one per grid sample of every patch (corner after
   // corner, row-major like the unwelded samples), so each side of a seam has its own, while the
   // positions stay welded.
-  const bool texcoords = options.uvs && ext == ".obj";
+  const bool texcoords = options.uvs && format == MeshFileFormat::obj;
   const int n = resolution;
   const std::int64_t per_patch = grid_size(n);
   if (texcoords) {
@@ -225,7 +198,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
       }
     };
   }
-  stream.faces = [&](std::int64_t begin, std::int64_t end, io_detail::FaceBlock& block) {
+  stream.faces = [&](std::int64_t begin, std::int64_t end, detail::FaceBlock& block) {
     block.sizes.assign(static_cast<size_t>(end - begin), 4);
     block.indices.resize(4 * block.sizes.size());
     layout.quads(begin, end, block.indices.data());
@@ -246,7 +219,7 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
     }
   };
   std::vector<Vec3> positions;
-  if (ext == ".stl") {
+  if (format == MeshFileFormat::stl) {
     // STL repeats the corners of every triangle: evaluate them all first, then stream the
     // triangles.
     positions.resize(static_cast<size_t>(layout.num_vertices()));
@@ -256,25 +229,18 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMe
                         evaluate(r.begin(), r.end(), positions.data() + r.begin(), normals.data());
                       });
   }
-  detail::write_stream(path, stream, positions, options, kComment);
+  detail::write_stream(path, format, stream, positions, options, kComment);
   return {layout.num_vertices(), layout.num_quads(), stream.num_texcoords};
 }
 
-std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bool welded,
-                                    const std::string& path) {
-  // Measured peak resident size of `stitch smooth` to binary PLY divided by the corners: 806
-  // bytes at 100k and 1M faces (mesh, K-gons, 16-point nets, the input file's text); rounded up.
-  constexpr std::int64_t kBytesPerCorner = 1024;
-  const auto corners = static_cast<std::int64_t>(mesh.num_halfedges());
-  const std::int64_t n = resolution;
-  std::int64_t bytes = kBytesPerCorner * corners;
-  if (!welded)  // positions, normals, uv, patch and level per sample, 4 ints per quad
-    bytes += corners * ((n + 1) * (n + 1) * 72 + n * n * 16);
-  else if (is_gltf(path))  // the whole tessellation, then its buffer: positions, normals, quads
-    bytes += corners * n * n * (48 + 16) * 2;
-  else if (file_extension(path) == ".stl")  // every position (about n^2 per corner)
-    bytes += corners * n * n * 24;
-  return bytes;
+SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
+                                       const Surface& surface, int resolution,
+                                       const SurfaceFileOptions& options) {
+  const std::optional<MeshFileFormat> format = mesh_file_format(path, kSurfaceMeshExtensions);
+  if (!format)
+    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
+                                 file_extension(path), extension_list(kSurfaceMeshExtensions)));
+  return write_smooth_surface(path, *format, mesh, surface, resolution, options);
 }
 
 void write_surface_samples_ply(const std::string& path, const TessellatedMesh& mesh,
@@ -284,8 +250,6 @@ void write_surface_samples_ply(const std::string& path, const TessellatedMesh& m
   if (mesh.uv.size() != nv || mesh.patch.size() != nv)
     throw UsageError(
         fmt::format("cannot write {}: the samples lack (u, v) or patch numbers", path));
-  if (file_extension(path) != ".ply")
-    throw UsageError(fmt::format("cannot write {}: samples are written as .ply only", path));
   std::vector<Eigen::Vector2d> st;
   if (uvs) {
     st.resize(nv);
@@ -301,7 +265,7 @@ void write_surface_samples_ply(const std::string& path, const TessellatedMesh& m
   }
   // s t come after `patch`, so readers that know the records without them read on unchanged.
   const size_t record_size = uvs ? 84 : 68;
-  io_detail::write_mesh_file(path, [&](io_detail::OutputFile& out) {
+  detail::write_mesh_file(path, [&](detail::OutputFile& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment " << kComment
         << "\ncomment patch = corner (half-edge index) of the input mesh; u v = position in "
            "that patch\nelement vertex "
@@ -312,32 +276,31 @@ void write_surface_samples_ply(const std::string& path, const TessellatedMesh& m
     if (uvs) out << "property double s\nproperty double t\n";
     out << "element face " << mesh.quads.size()
         << "\nproperty list uchar int vertex_indices\nend_header\n";
-    io_detail::write_blocks(
-        out, static_cast<std::int64_t>(nv), 16384,
-        [&](std::int64_t begin, std::int64_t end, io_detail::OutputBuffer& bytes) {
-          io_detail::LittleEndianWriter record(bytes,
-                                               static_cast<size_t>(end - begin) * record_size);
-          for (std::int64_t i = begin; i < end; ++i) {
-            record.put(mesh.positions[i]);
-            record.put(mesh.normals[i]);
-            record.put(mesh.uv[i].x());
-            record.put(mesh.uv[i].y());
-            record.put(static_cast<std::int32_t>(mesh.patch[i]));
-            if (!st.empty()) {
-              record.put(st[i].x());
-              record.put(st[i].y());
-            }
-          }
-        });
-    io_detail::write_blocks(
-        out, static_cast<std::int64_t>(mesh.quads.size()), 32768,
-        [&](std::int64_t begin, std::int64_t end, io_detail::OutputBuffer& bytes) {
-          io_detail::LittleEndianWriter record(bytes, static_cast<size_t>(end - begin) * 17);
-          for (std::int64_t q = begin; q < end; ++q) {
-            record.put(std::uint8_t{4});
-            for (int v : mesh.quads[q]) record.put(static_cast<std::int32_t>(v));
-          }
-        });
+    detail::write_blocks(out, static_cast<std::int64_t>(nv), 16384,
+                         [&](std::int64_t begin, std::int64_t end, detail::OutputBuffer& bytes) {
+                           detail::LittleEndianWriter record(
+                               bytes, static_cast<size_t>(end - begin) * record_size);
+                           for (std::int64_t i = begin; i < end; ++i) {
+                             record.put(mesh.positions[i]);
+                             record.put(mesh.normals[i]);
+                             record.put(mesh.uv[i].x());
+                             record.put(mesh.uv[i].y());
+                             record.put(static_cast<std::int32_t>(mesh.patch[i]));
+                             if (!st.empty()) {
+                               record.put(st[i].x());
+                               record.put(st[i].y());
+                             }
+                           }
+                         });
+    detail::write_blocks(out, static_cast<std::int64_t>(mesh.quads.size()), 32768,
+                         [&](std::int64_t begin, std::int64_t end, detail::OutputBuffer& bytes) {
+                           detail::LittleEndianWriter record(bytes,
+                                                             static_cast<size_t>(end - begin) * 17);
+                           for (std::int64_t q = begin; q < end; ++q) {
+                             record.put(std::uint8_t{4});
+                             for (int v : mesh.quads[q]) record.put(static_cast<std::int32_t>(v));
+                           }
+                         });
   });
 }
 

@@ -1,11 +1,11 @@
-#include "layout.hpp"
+#include "tess/layout.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <limits>
 
-#include "../eval/patch_sampler.hpp"
+#include "eval/patch_sampler.hpp"
 
 namespace stitch {
 

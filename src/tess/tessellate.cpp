@@ -10,9 +10,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "layout.hpp"
 #include "support/finite.hpp"
 #include "support/fresh_storage.hpp"
+#include "tess/layout.hpp"
 
 namespace stitch {
 

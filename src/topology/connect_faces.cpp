@@ -8,21 +8,19 @@
 #include <optional>
 #include <string>
 
-#include "raw_mesh.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/topology/extrude.hpp"
 #include "stitch/topology/insert_edge.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 namespace {
 
 /// Faces f and g as connect-faces needs them: live, distinct, of one degree.
 Verdict pair_of_faces(const HalfedgeMesh& mesh, Face f, Face g) {
   for (Face x : {f, g})
-    if (Verdict v = td::exists(mesh, x, "connect-faces"); !v) return v;
+    if (Verdict v = detail::exists(mesh, x, "connect-faces"); !v) return v;
   if (f == g) return Verdict::refused(fmt::format("connect-faces: face {} given twice", f.idx + 1));
   if (mesh.degree(g) != mesh.degree(f))
     return Verdict::refused(fmt::format(
@@ -114,13 +112,13 @@ Verdict can_connect_faces(const HalfedgeMesh& mesh, Face f, Face g, int twist) {
   };
   for (int i = 0; i < k; ++i) {
     const Vertex u = mesh.origin(lf[i]), v = mesh.origin(partner(i));
-    for (Edge y : td::edges_between(mesh, u, v))
+    for (Edge y : detail::edges_between(mesh, u, v))
       if (stays_boundary(HalfedgeMesh::halfedge(y, 0)) ||
           stays_boundary(HalfedgeMesh::halfedge(y, 1)))
         return Verdict::refused(fmt::format(
             "connect-faces: vertices {} and {} are joined by boundary edge {}; a tube edge beside "
             "it would not read back ({})",
-            u.idx + 1, v.idx + 1, y.idx + 1, td::kBesideBoundary));
+            u.idx + 1, v.idx + 1, y.idx + 1, detail::kBesideBoundary));
   }
   return {};
 }
@@ -172,8 +170,8 @@ Verdict handle_rings(const HalfedgeMesh& mesh, Face f, Face g, int turn,
   const std::vector<Halfedge> lf = mesh.face_loop(f), lg = mesh.face_loop(g);
   const int k = static_cast<int>(lf.size());
   HandlePath path;
-  path.start = td::face_centroid(mesh, f);
-  path.end = td::face_centroid(mesh, g);
+  path.start = detail::face_centroid(mesh, f);
+  path.end = detail::face_centroid(mesh, g);
   const Vec3 across = path.end - path.start;
   const double length = across.norm();
   if (!(length > 0))
@@ -241,7 +239,7 @@ Verdict plan_handle(const HalfedgeMesh& mesh, Face f, Face g, const HandleOption
   if (options.segments == 1) return can_connect_faces(mesh, f, g, turn);
   const std::vector<Halfedge> lf = mesh.face_loop(f), lg = mesh.face_loop(g);
   if (Verdict v = no_loops(mesh, f, g, lf, lg, turn); !v) return v;
-  if (const Vertex twice = td::vertex_visited_twice(mesh, f); twice.valid())
+  if (const Vertex twice = detail::vertex_visited_twice(mesh, f); twice.valid())
     return Verdict::refused(
         fmt::format("connect-faces: face {} visits vertex {} twice; a handle with segments starts "
                     "from one new vertex per corner",

@@ -2,19 +2,17 @@
 
 #include <fmt/format.h>
 
-#include "raw_mesh.hpp"
 #include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 namespace {
 
 /// Plans deleting f: the refusal, or (with `delta`) the edited copy's journal to apply.
 Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, MeshDelta* delta) {
-  if (Verdict v = td::exists(mesh, f, "delete-face"); !v) return v;
+  if (Verdict v = detail::exists(mesh, f, "delete-face"); !v) return v;
   // Merging a hole with its neighbours would leave one loop that is partly boundary and partly
   // surface: neither a hole nor a face says it, so the user picks (fill-hole or open-face).
   if (mesh.is_hole(f))
@@ -28,7 +26,7 @@ Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, MeshDelta* delta) {
   MeshJournal journal(m);
   std::vector<std::uint8_t> gone(m.edge_capacity(), 0);
   for (Halfedge h : m.face_loop(f)) gone[HalfedgeMesh::edge(h).idx] = 1;
-  const td::EdgeRemoval plan = td::plan_edge_removal(m, std::move(gone));
+  const detail::EdgeRemoval plan = detail::plan_edge_removal(m, std::move(gone));
   if (plan.kept.empty())
     return Verdict::refused(
         fmt::format("delete-face: deleting face {} would leave nothing", f.idx + 1));
@@ -38,7 +36,7 @@ Verdict plan_delete_face(const HalfedgeMesh& mesh, Face f, MeshDelta* delta) {
           "delete-face: face {} borders hole {} (the surface's boundary); deleting it would merge "
           "the hole with the faces around it (open-face {} makes face {} part of the hole)",
           f.idx + 1, g + 1, f.idx + 1, f.idx + 1));
-  td::remove_edges(m, plan);
+  detail::remove_edges(m, plan);
   const auto problems = find_problems(m);
   if (!problems.empty())
     return Verdict::refused(

@@ -2,14 +2,12 @@
 
 #include <fmt/format.h>
 
-#include "raw_mesh.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
 
-namespace td = topology_detail;
-
 Verdict can_subdivide_edge(const HalfedgeMesh& mesh, Edge e) {
-  return td::exists(mesh, e, "subdivide-edge");
+  return detail::exists(mesh, e, "subdivide-edge");
 }
 
 SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e) {
@@ -35,7 +33,7 @@ SubdivideEdgeResult subdivide_edge(HalfedgeMesh& mesh, Edge e) {
 }
 
 Verdict can_collapse_edge(const HalfedgeMesh& mesh, Edge e, Vertex keep) {
-  if (Verdict v = td::exists(mesh, e, "collapse-edge"); !v) return v;
+  if (Verdict v = detail::exists(mesh, e, "collapse-edge"); !v) return v;
   Halfedge h = HalfedgeMesh::halfedge(e, 0);
   if (mesh.origin(h) != keep) h = HalfedgeMesh::twin(h);
   if (mesh.origin(h) != keep)
@@ -43,7 +41,7 @@ Verdict can_collapse_edge(const HalfedgeMesh& mesh, Edge e, Vertex keep) {
         fmt::format("collapse-edge: vertex {} is not an end of edge {}", keep.idx + 1, e.idx + 1));
   const Halfedge t = HalfedgeMesh::twin(h);
   const Vertex a = keep, b = mesh.origin(t);
-  if (td::edges_between(mesh, a, b).size() > 1)
+  if (detail::edges_between(mesh, a, b).size() > 1)
     return Verdict::refused(fmt::format(
         "collapse-edge: vertices {} and {} are joined by more than one edge; collapsing one would "
         "make the others loops",
@@ -75,12 +73,12 @@ Verdict can_collapse_edge(const HalfedgeMesh& mesh, Edge e, Vertex keep) {
   for (Halfedge x : mesh.vertex_fan(b)) {
     const Vertex c = mesh.target(x);
     if (c == a) continue;
-    for (Edge y : td::edges_between(mesh, a, c))
+    for (Edge y : detail::edges_between(mesh, a, c))
       if (mesh.is_boundary(y) || mesh.is_boundary(HalfedgeMesh::edge(x)))
         return Verdict::refused(fmt::format(
             "collapse-edge: vertices {} and {} are both joined to vertex {}, on the boundary; "
             "the two edges would join the same vertices and would not read back ({})",
-            a.idx + 1, b.idx + 1, c.idx + 1, td::kBesideBoundary));
+            a.idx + 1, b.idx + 1, c.idx + 1, detail::kBesideBoundary));
   }
   return {};
 }

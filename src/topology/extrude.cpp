@@ -4,13 +4,11 @@
 
 #include <cmath>
 
-#include "raw_mesh.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/polygon.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
   const Vec3 n = newell_normal(face_points(mesh, f));
@@ -19,7 +17,7 @@ Vec3 face_normal(const HalfedgeMesh& mesh, Face f) {
 }
 
 Verdict can_extrude_face(const HalfedgeMesh& mesh, Face f, double distance, double scale) {
-  if (Verdict v = td::exists(mesh, f, "extrude-face"); !v) return v;
+  if (Verdict v = detail::exists(mesh, f, "extrude-face"); !v) return v;
   if (!std::isfinite(distance))
     return Verdict::refused("extrude-face: the distance must be a finite number");
   if (!std::isfinite(scale) || scale <= 0)
@@ -32,13 +30,13 @@ Verdict can_extrude_face(const HalfedgeMesh& mesh, Face f, double distance, doub
   const int k = static_cast<int>(loop.size());
   // Every corner gets its own new vertex, so a loop that visits a vertex twice would put two
   // new vertices at the same point: a degenerate surface.
-  if (const Vertex twice = td::vertex_visited_twice(mesh, f); twice.valid())
+  if (const Vertex twice = detail::vertex_visited_twice(mesh, f); twice.valid())
     return Verdict::refused(fmt::format(
         "extrude-face: face {} visits vertex {} twice (its loop touches itself); its extruded "
         "top would have two vertices at the same point",
         f.idx + 1, twice.idx + 1));
   // Checked before the mesh changes, so a refused extrusion leaves it as it was.
-  const Vec3 centre = td::face_centroid(mesh, f);
+  const Vec3 centre = detail::face_centroid(mesh, f);
   for (int i = 0; i < k; ++i) {
     const Vec3 p = mesh.position(mesh.origin(loop[i]));
     const Vec3 top = centre + scale * (p - centre) + distance * n;
@@ -57,7 +55,7 @@ ExtrudeResult extrude_face(HalfedgeMesh& mesh, Face f, double distance, double s
 
   ExtrudeResult result;
   result.degree = k;
-  const Vec3 centre = td::face_centroid(mesh, f);
+  const Vec3 centre = detail::face_centroid(mesh, f);
   std::vector<Vertex> top(k);
   for (int i = 0; i < k; ++i) {
     const Vec3 p = mesh.position(mesh.origin(loop[i]));

@@ -8,13 +8,11 @@
 #include <set>
 #include <string>
 
-#include "raw_mesh.hpp"
 #include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/validate.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 namespace {
 
@@ -58,7 +56,7 @@ struct OpenFacePlan {
 /// Plans opening f: the refusal, or (with `planned`) the result and the edited copy's journal to
 /// apply. Without a merge only f's neighbourhood is read; with one, the work is done on a copy.
 Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) {
-  if (Verdict v = td::exists(mesh, f, "open-face"); !v) return v;
+  if (Verdict v = detail::exists(mesh, f, "open-face"); !v) return v;
   if (mesh.is_hole(f))
     return Verdict::refused(fmt::format("open-face: face {} is a hole already", f.idx + 1));
   const std::vector<Halfedge> loop = mesh.face_loop(f);
@@ -80,7 +78,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
     return Verdict::refused(fmt::format(
         "open-face: vertices {} and {} are joined by more than one edge, and opening face {} "
         "would put one of them on the boundary, which would not read back ({})",
-        a.idx + 1, b.idx + 1, f.idx + 1, td::kBesideBoundary));
+        a.idx + 1, b.idx + 1, f.idx + 1, detail::kBesideBoundary));
   };
 
   if (!merges) {
@@ -94,7 +92,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
         return refuse_pinch(mesh.origin(h));
     }
     for (Halfedge h : loop)
-      if (td::edges_between(mesh, mesh.origin(h), mesh.target(h)).size() > 1)
+      if (detail::edges_between(mesh, mesh.origin(h), mesh.target(h)).size() > 1)
         return refuse_beside(mesh.origin(h), mesh.target(h));
     if (planned) planned->result.holes = {f};
     return {};
@@ -108,7 +106,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
   std::vector<std::uint8_t> gone(m.edge_capacity(), 0);
   for (Halfedge h : loop)
     if (m.is_hole(HalfedgeMesh::twin(h))) gone[HalfedgeMesh::edge(h).idx] = 1;
-  const td::EdgeRemoval plan = td::plan_edge_removal(m, std::move(gone));
+  const detail::EdgeRemoval plan = detail::plan_edge_removal(m, std::move(gone));
   if (plan.kept.empty())
     return Verdict::refused(fmt::format(
         "open-face: opening face {} would leave no surface (every other face is a hole)",
@@ -117,7 +115,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
     if (g != f.idx) result.merged.emplace_back(g);
   for (Edge e : m.edges()) result.removed_edges += plan.gone[e.idx];
   const int vertices_before = m.num_vertices();
-  result.holes = td::remove_edges(m, plan);
+  result.holes = detail::remove_edges(m, plan);
   result.removed_vertices = vertices_before - m.num_vertices();
   // The edges of f's component all went: it was f and holes only.
   if (result.holes.empty())
@@ -136,7 +134,7 @@ Verdict plan_open_face(const HalfedgeMesh& mesh, Face f, OpenFacePlan* planned) 
   }
   for (Face h : result.holes)
     for (Halfedge x : m.face_loop(h))
-      if (td::edges_between(m, m.origin(x), m.target(x)).size() > 1)
+      if (detail::edges_between(m, m.origin(x), m.target(x)).size() > 1)
         return refuse_beside(m.origin(x), m.target(x));
   const auto problems = find_problems(m);
   if (!problems.empty())
@@ -163,7 +161,7 @@ OpenFaceResult open_face(HalfedgeMesh& mesh, Face f) {
 }
 
 Verdict can_fill_hole(const HalfedgeMesh& mesh, Face f) {
-  if (Verdict v = td::exists(mesh, f, "fill-hole"); !v) return v;
+  if (Verdict v = detail::exists(mesh, f, "fill-hole"); !v) return v;
   if (!mesh.is_hole(f))
     return Verdict::refused(fmt::format("fill-hole: face {} is not a hole", f.idx + 1));
   return {};
@@ -175,7 +173,7 @@ void fill_hole(HalfedgeMesh& mesh, Face f) {
 }
 
 Verdict can_set_crease(const HalfedgeMesh& mesh, Edge e, double sharpness) {
-  if (Verdict v = td::exists(mesh, e, "crease"); !v) return v;
+  if (Verdict v = detail::exists(mesh, e, "crease"); !v) return v;
   return sharpness_allowed(sharpness, "crease");
 }
 
@@ -185,7 +183,7 @@ void set_crease(HalfedgeMesh& mesh, Edge e, double sharpness) {
 }
 
 Verdict can_set_corner(const HalfedgeMesh& mesh, Vertex v, double sharpness) {
-  if (Verdict x = td::exists(mesh, v, "corner"); !x) return x;
+  if (Verdict x = detail::exists(mesh, v, "corner"); !x) return x;
   return sharpness_allowed(sharpness, "corner");
 }
 

@@ -4,11 +4,9 @@
 
 #include <algorithm>
 
-#include "raw_mesh.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 namespace {
 
@@ -26,7 +24,7 @@ bool loop_contains(const HalfedgeMesh& mesh, Halfedge from, Halfedge target) {
 
 Verdict can_insert_edge(const HalfedgeMesh& mesh, Corner a, Corner b) {
   for (Corner c : {a, b})
-    if (Verdict v = td::exists(mesh, c, "insert-edge"); !v) return v;
+    if (Verdict v = detail::exists(mesh, c, "insert-edge"); !v) return v;
   const Vertex va = mesh.origin(a), vb = mesh.origin(b);
   if (a == b) return Verdict::refused("insert-edge: the two corners are the same corner");
   if (va == vb)
@@ -40,12 +38,12 @@ Verdict can_insert_edge(const HalfedgeMesh& mesh, Corner a, Corner b) {
           "insert-edge: face {} is a hole (a boundary loop of the surface); an edge into it would "
           "have the hole on both sides (fill-hole {} makes it a face first)",
           f.idx + 1, f.idx + 1));
-  for (Edge x : td::edges_between(mesh, va, vb))
+  for (Edge x : detail::edges_between(mesh, va, vb))
     if (mesh.is_boundary(x))
       return Verdict::refused(fmt::format(
           "insert-edge: vertices {} and {} are joined by boundary edge {}; a second edge beside "
           "it would not read back ({})",
-          va.idx + 1, vb.idx + 1, x.idx + 1, td::kBesideBoundary));
+          va.idx + 1, vb.idx + 1, x.idx + 1, detail::kBesideBoundary));
   return {};
 }
 
@@ -89,7 +87,7 @@ InsertEdgeResult insert_edge(HalfedgeMesh& mesh, Corner a, Corner b) {
 }
 
 Verdict can_delete_edge(const HalfedgeMesh& mesh, Edge e) {
-  if (Verdict v = td::exists(mesh, e, "delete-edge"); !v) return v;
+  if (Verdict v = detail::exists(mesh, e, "delete-edge"); !v) return v;
   const Halfedge h = HalfedgeMesh::halfedge(e, 0), t = HalfedgeMesh::twin(h);
   // The merged face would hold both a hole and a surface face: neither reading (the face
   // swallowed by the hole, or the hole filled) is what deleting one edge says.

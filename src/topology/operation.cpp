@@ -9,7 +9,6 @@
 #include <set>
 #include <type_traits>
 
-#include "raw_mesh.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/topology/connect_faces.hpp"
@@ -19,6 +18,7 @@
 #include "stitch/topology/features.hpp"
 #include "stitch/topology/insert_edge.hpp"
 #include "stitch/topology/remesh.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
 
@@ -568,7 +568,7 @@ Edge parse_edge(const HalfedgeMesh& mesh, std::string_view v_text, std::string_v
     w_text = w_text.substr(0, at);
   }
   const Vertex v = vertex_arg(mesh, v_text), w = vertex_arg(mesh, w_text);
-  const std::vector<Edge> joining = topology_detail::edges_between(mesh, v, w);
+  const std::vector<Edge> joining = detail::edges_between(mesh, v, w);
   if (joining.empty())
     throw UsageError(fmt::format("no edge joins vertices {} and {}", v.idx + 1, w.idx + 1));
   if (face_text.empty()) {
@@ -617,8 +617,7 @@ std::string edge_name(const HalfedgeMesh& mesh, Edge e, Vertex first) {
   if (first.valid() && mesh.origin(h) != first) h = HalfedgeMesh::twin(h);
   const std::string v = std::to_string(number(mesh.origin(h)));
   const std::string w = std::to_string(number(mesh.target(h)));
-  if (topology_detail::edges_between(mesh, mesh.origin(h), mesh.target(h)).size() == 1)
-    return v + " " + w;
+  if (detail::edges_between(mesh, mesh.origin(h), mesh.target(h)).size() == 1) return v + " " + w;
   // Several edges join the two vertices: the face on the side running from v to w, and which
   // time along that face when it runs from v to w more than once.
   const Face f = mesh.face(h);

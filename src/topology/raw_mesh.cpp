@@ -1,4 +1,4 @@
-#include "raw_mesh.hpp"
+#include "topology/raw_mesh.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "stitch/mesh/validate.hpp"
 
-namespace stitch::topology_detail {
+namespace stitch::detail {
 
 HalfedgeMesh build_raw(const RawMesh& raw, const std::string& what) {
   HalfedgeMesh mesh;
@@ -169,4 +169,4 @@ Verdict exists(const HalfedgeMesh& mesh, Corner c, const char* op) {
   return {};
 }
 
-}  // namespace stitch::topology_detail
+}  // namespace stitch::detail

@@ -10,7 +10,7 @@
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/topology/verdict.hpp"
 
-namespace stitch::topology_detail {
+namespace stitch::detail {
 
 /// A mesh spelled out as arrays: half-edge 2e and 2e+1 are the two sides of edge e.
 struct RawMesh {
@@ -68,4 +68,4 @@ Verdict exists(const HalfedgeMesh& mesh, Face f, const char* op);
 Verdict exists(const HalfedgeMesh& mesh, Edge e, const char* op);
 Verdict exists(const HalfedgeMesh& mesh, Corner c, const char* op);
 
-}  // namespace stitch::topology_detail
+}  // namespace stitch::detail

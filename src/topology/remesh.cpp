@@ -8,11 +8,9 @@
 #include <vector>
 
 #include "mesh/opensubdiv_topology.hpp"
-#include "raw_mesh.hpp"
+#include "topology/raw_mesh.hpp"
 
 namespace stitch {
-
-namespace td = topology_detail;
 
 namespace {
 
@@ -60,9 +58,9 @@ Verdict dual_allowed(const HalfedgeMesh& mesh) {
 
 HalfedgeMesh dual(const HalfedgeMesh& input) {
   dual_allowed(input).throw_if_refused();
-  const HalfedgeMesh m = td::compacted(input);
-  td::RawMesh raw;
-  for (Face f : m.faces()) raw.positions.push_back(td::face_centroid(m, f));
+  const HalfedgeMesh m = detail::compacted(input);
+  detail::RawMesh raw;
+  for (Face f : m.faces()) raw.positions.push_back(detail::face_centroid(m, f));
   raw.num_faces = m.num_vertices();
   const int nh = m.halfedge_capacity();
   raw.origin.resize(nh);
@@ -73,16 +71,16 @@ HalfedgeMesh dual(const HalfedgeMesh& input) {
     raw.next[h.idx] = m.rotate_ccw(h).idx;
     raw.face[h.idx] = m.origin(h).idx;
   }
-  return td::build_raw(raw, "dual");
+  return detail::build_raw(raw, "dual");
 }
 
 HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
   features_allowed(input, "vertex-insertion").throw_if_refused();
-  const HalfedgeMesh m = td::compacted(input);
+  const HalfedgeMesh m = detail::compacted(input);
   const int nv = m.num_vertices(), nh = m.halfedge_capacity();
-  td::RawMesh raw;
+  detail::RawMesh raw;
   raw.positions = m.positions();
-  for (Face f : m.faces()) raw.positions.push_back(td::face_centroid(m, f));
+  for (Face f : m.faces()) raw.positions.push_back(detail::face_centroid(m, f));
   raw.num_faces = m.num_edges();
   raw.origin.resize(2 * nh);
   raw.next.resize(2 * nh);
@@ -103,16 +101,16 @@ HalfedgeMesh vertex_insertion(const HalfedgeMesh& input) {
       raw.face[loop[i]] = e.idx;
     }
   }
-  return td::build_raw(raw, "vertex-insertion");
+  return detail::build_raw(raw, "vertex-insertion");
 }
 
 HalfedgeMesh doo_sabin(const HalfedgeMesh& input) {
   features_allowed(input, "doo-sabin").throw_if_refused();
-  const HalfedgeMesh m = td::compacted(input);
+  const HalfedgeMesh m = detail::compacted(input);
   const int nh = m.halfedge_capacity(), nf = m.num_faces(), ne = m.num_edges();
-  td::RawMesh raw;
+  detail::RawMesh raw;
   std::vector<Vec3> centroid;
-  for (Face f : m.faces()) centroid.push_back(td::face_centroid(m, f));
+  for (Face f : m.faces()) centroid.push_back(detail::face_centroid(m, f));
   for (Halfedge c : m.halfedges()) {
     const Vec3& p = m.position(m.origin(c));
     const Vec3 m_next = 0.5 * (p + m.position(m.target(c)));
@@ -151,7 +149,7 @@ HalfedgeMesh doo_sabin(const HalfedgeMesh& input) {
       raw.face[loop[i]] = nf + e.idx;
     }
   }
-  return td::build_raw(raw, "doo-sabin");
+  return detail::build_raw(raw, "doo-sabin");
 }
 
 namespace {
@@ -218,7 +216,7 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
   auto face_point = [&](Face f) { return nv + fid[f.idx]; };
   auto edge_point = [&](Halfedge c) { return nv + nf + eid[HalfedgeMesh::edge(c).idx]; };
 
-  td::RawMesh raw;
+  detail::RawMesh raw;
   raw.positions.resize(static_cast<size_t>(nv + nf) + edges.size());
   int max_size = 2;
   for (Face f : faces) max_size = std::max(max_size, m.degree(f));
@@ -288,7 +286,7 @@ CatmullClarkRefinement catmull_clark_refinement(const HalfedgeMesh& m) {
     }
   }
   raw.num_faces = static_cast<int>(quad_start.size());
-  result.mesh = td::build_raw(raw, "catmull-clark");
+  result.mesh = detail::build_raw(raw, "catmull-clark");
   for (size_t q = 0; q < quad_start.size(); ++q)
     result.mesh.set_halfedge(Face(static_cast<int>(q)), Halfedge(quad_start[q]));
   return result;

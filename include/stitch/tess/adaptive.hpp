@@ -41,9 +41,10 @@ struct AdaptiveMesh {
 AdaptiveMesh tessellate_adaptive(const HalfedgeMesh& mesh, const Surface& surface,
                                  const AdaptiveOptions& options = {});
 
-/// Writes the triangles by extension: .obj (with vn), .ply (binary doubles with normals unless
-/// options.ascii_ply / single_precision), .off or .stl. Atomic.
-void write_adaptive_mesh(const std::string& path, const AdaptiveMesh& mesh,
+/// Writes the triangles in `format` (whatever the path's extension): OBJ (with vn), PLY (binary
+/// doubles with normals unless options.ascii_ply / single_precision), OFF or STL; glTF is
+/// refused. Atomic.
+void write_adaptive_mesh(const std::string& path, MeshFileFormat format, const AdaptiveMesh& mesh,
                          const SurfaceFileOptions& options = {});
 
 }  // namespace stitch

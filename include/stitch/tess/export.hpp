@@ -23,26 +23,19 @@ struct SurfaceFileOptions {
   bool single_precision = false;
   /// Called with the fraction (0..1) done; from one thread at a time.
   std::function<void(double)> progress;
-  /// Texture coordinates for write_smooth_surface to write where the format has a place for them
-  /// (surface_file_takes_uvs); null: none. Not owned.
+  /// Texture coordinates for write_smooth_surface to write where the format has a place for them;
+  /// null: none. Not owned. OBJ gets `vt`, one per grid sample of each patch, so the two sides
+  /// of a seam keep their own; glTF TEXCOORD_0, vertices split where a seam needs two UVs.
+  /// Welded PLY, OFF and STL have no place for UVs that differ on the two sides of a seam, and
+  /// are written without them.
   const UvSurface* uvs = nullptr;
 };
 
-/// Whether write_smooth_surface writes SurfaceFileOptions::uvs to this file: .obj (`vt`, one per
-/// grid sample of each patch, so the two sides of a seam keep their own) and glTF (TEXCOORD_0,
-/// vertices split where a seam needs two UVs). Welded .ply, .off and .stl have no place for UVs
-/// that differ on the two sides of a seam, and are written without them.
-bool surface_file_takes_uvs(const std::string& path);
-
-/// The extensions write_surface_mesh and write_smooth_surface take (extension_list of
-/// mesh/io.hpp makes the text for messages).
-inline constexpr std::array<std::string_view, 6> kSurfaceMeshExtensions{".obj", ".ply", ".off",
-                                                                        ".stl", ".glb", ".gltf"};
-
-/// Writes a welded surface by extension: .obj (with vn), .ply (binary with normals unless
-/// options.ascii_ply), .off, .stl (binary), and glTF 2.0 with normals: .glb, or .gltf with its
-/// buffer in a .bin beside it. Atomic (see write_file_atomically).
-void write_surface_mesh(const std::string& path, const TessellatedMesh& mesh,
+/// Writes a welded surface in `format` (whatever the path's extension): OBJ (with vn), PLY
+/// (binary with normals unless options.ascii_ply), OFF, STL (binary), and glTF 2.0 with normals:
+/// .glb, or .gltf with its buffer in a .bin beside it. Atomic (see write_file_atomically).
+/// stitch::output's table of formats is what turns a path into a format.
+void write_surface_mesh(const std::string& path, MeshFileFormat format, const TessellatedMesh& mesh,
                         const SurfaceFileOptions& options = {});
 
 /// What write_smooth_surface wrote.
@@ -51,26 +44,33 @@ struct SurfaceFileCounts {
   std::int64_t texcoords = 0;  ///< texture coordinates written (0: none)
 };
 
-/// The same file as write_surface_mesh(path, tessellate(mesh, surface, {resolution, true})),
-/// byte for byte, made block by block while it is written: memory grows with the input mesh,
-/// not with the resolution (except .stl, which repeats positions per triangle and so holds them
-/// all, and glTF, whose buffer is written whole), and evaluation runs on every core. Refuses
-/// non-finite samples. Atomic. With options.uvs the file also has texture coordinates (then it
-/// is no longer write_surface_mesh's; glTF's vertices are split at seams).
+/// The same file as write_surface_mesh(path, format, tessellate(mesh, surface, {resolution,
+/// true})), byte for byte, made block by block while it is written: memory grows with the input
+/// mesh, not with the resolution (except STL, which repeats positions per triangle and so holds
+/// them all, and glTF, whose buffer is written whole), and evaluation runs on every core. Refuses
+/// non-finite samples. Atomic. With options.uvs the file also has texture coordinates (then it is
+/// no longer write_surface_mesh's; glTF's vertices are split at seams).
+SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat format,
+                                       const HalfedgeMesh& mesh, const Surface& surface,
+                                       int resolution, const SurfaceFileOptions& options = {});
+
+/// The extensions of the formats write_smooth_surface writes, for the callers that still name
+/// the format by the path (the modeler's dialogs and script; stitch::output's table is the one
+/// dispatch by extension for everything else).
+inline constexpr std::array<std::string_view, 6> kSurfaceMeshExtensions{".obj", ".ply", ".off",
+                                                                        ".stl", ".glb", ".gltf"};
+
+/// write_smooth_surface in the format of `path`'s extension among kSurfaceMeshExtensions; throws
+/// UsageError naming them for another. For the modeler and the Python module until they write
+/// through stitch::output's write_surface.
 SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
                                        const Surface& surface, int resolution,
                                        const SurfaceFileOptions& options = {});
 
-/// Bytes of memory `stitch smooth` needs at its peak for this mesh: the mesh and its surface
-/// (about 1 kB per corner, measured: docs/performance.md) and whatever the output holds whole
-/// (.stl: every position; glTF and unwelded: the whole tessellation). The welded streamed writer
-/// holds only a few blocks, so the resolution does not count there.
-std::int64_t smooth_memory_estimate(const HalfedgeMesh& mesh, int resolution, bool welded,
-                                    const std::string& path);
-
 /// Writes every sample with its patch attributes as binary little-endian PLY: double x y z
 /// nx ny nz u v and int patch, so continuity can be checked from the file alone; with `uvs`, also
-/// double s t, the sample's texture coordinates. Atomic.
+/// double s t, the sample's texture coordinates. Written as PLY whatever the path's extension.
+/// Atomic.
 void write_surface_samples_ply(const std::string& path, const TessellatedMesh& mesh,
                                const UvSurface* uvs = nullptr);
 

@@ -15,6 +15,7 @@
 
 #include "stitch/eval/surface.hpp"
 #include "stitch/eval/uv_surface.hpp"
+#include "stitch/mesh/formats.hpp"
 #include "stitch/tess/bspline_faces.hpp"
 #include "stitch/tess/patches.hpp"
 #include "stitch/tess/tessellate.hpp"
@@ -74,6 +75,9 @@ struct OutputFormat {
   /// Lower case with the dot; the first is the one a dialog proposes. Unused slots are empty.
   std::array<std::string_view, 2> extensions;
   OutputKind kind;
+  /// What a tessellated row's writer hands the core's mesh writers: the one place a path's
+  /// extension becomes a mesh file format. None for the exact rows.
+  std::optional<MeshFileFormat> mesh_format;
   bool normals = false;    ///< per-vertex normals
   bool uvs = false;        ///< texture coordinates (welded; unwelded .ply has its own)
   bool unwelded = false;   ///< takes OutputSpec::unwelded

@@ -19,7 +19,7 @@
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
-namespace stitch::io_detail {
+namespace stitch::detail {
 
 /// Where a problem is, for messages: "file.obj, line 12".
 std::string at_line(const std::string& path, int line);
@@ -97,12 +97,12 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
 PolygonSoup read_stl(std::string_view text, const std::string& path,
                      std::vector<std::string>* warnings);
 
-}  // namespace stitch::io_detail
+}  // namespace stitch::detail
 
 template <>
-struct fmt::formatter<stitch::io_detail::Where> : fmt::formatter<std::string> {
+struct fmt::formatter<stitch::detail::Where> : fmt::formatter<std::string> {
   template <class FormatContext>
-  auto format(const stitch::io_detail::Where& where, FormatContext& ctx) const {
+  auto format(const stitch::detail::Where& where, FormatContext& ctx) const {
     return fmt::formatter<std::string>::format(where.text(), ctx);
   }
 };
