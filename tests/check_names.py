@@ -25,6 +25,8 @@ MODE_OPTION = re.compile(r"--mode (shaded|zebra|isophote|levels|patches|checker)
 TABLES = {
     "extension": {
         "include/stitch/mesh/formats.hpp",  # the mesh readers' and writers' extensions
+        "src/mesh/io.cpp",  # ... and the one lookup from extension to MeshFileFormat
+        "src/mesh/io_gltf.cpp",  # a .gltf's buffer in the .bin beside it
         "src/output/output.cpp",  # the output formats
         "include/stitch/project/project_file.hpp",  # project files
         "src/cad/include/stitch/cad/cad.hpp",  # the CAD files read_cad reads

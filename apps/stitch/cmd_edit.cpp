@@ -172,10 +172,11 @@ void run_edit(const EditArgs& a, const CLI::App& cmd) {
   }
   validate(mesh);
   const TopologyStats stats = topology_stats(mesh);
-  if (file_extension(a.out) != ".obj" && stats.crease_edges + stats.corner_vertices > 0)
+  if (mesh_file_format(a.out, kMeshWriteExtensions) != MeshFileFormat::obj &&
+      stats.crease_edges + stats.corner_vertices > 0)
     fmt::print(stderr,
-               "stitch: warning: {}: crease and corner tags are only written to .obj files; "
-               "this file will not have them\n",
+               "stitch: warning: {}: crease and corner tags are only written to OBJ files; this "
+               "file will not have them\n",
                a.out);
   write_mesh(a.out, mesh);
   if (!a.quiet)

@@ -233,16 +233,6 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat f
   return {layout.num_vertices(), layout.num_quads(), stream.num_texcoords};
 }
 
-SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
-                                       const Surface& surface, int resolution,
-                                       const SurfaceFileOptions& options) {
-  const std::optional<MeshFileFormat> format = mesh_file_format(path, kSurfaceMeshExtensions);
-  if (!format)
-    throw UsageError(fmt::format("cannot write {}: unknown extension '{}' (supported: {})", path,
-                                 file_extension(path), extension_list(kSurfaceMeshExtensions)));
-  return write_smooth_surface(path, *format, mesh, surface, resolution, options);
-}
-
 void write_surface_samples_ply(const std::string& path, const TessellatedMesh& mesh,
                                const UvSurface* uvs) {
   check_writable(path, mesh);

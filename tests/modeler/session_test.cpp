@@ -199,7 +199,7 @@ TEST(ModelerSession, ExportWritesTheSurfaceAsShown) {
   controls.global.scale = 0.8;
   const Surface expected_surface(s.document.mesh(), Method::asc, controls);
   const std::string expected = dir.file("expected.ply");
-  write_smooth_surface(expected, s.document.mesh(), expected_surface, 3);
+  write_smooth_surface(expected, MeshFileFormat::ply, s.document.mesh(), expected_surface, 3);
   EXPECT_EQ(stitch::testing::read_file(dir.file("shown.ply")),
             stitch::testing::read_file(expected));
   const PatchSet patches = read_bezier_json(dir.file("shown.json"));

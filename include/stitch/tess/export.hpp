@@ -54,19 +54,6 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat f
                                        const HalfedgeMesh& mesh, const Surface& surface,
                                        int resolution, const SurfaceFileOptions& options = {});
 
-/// The extensions of the formats write_smooth_surface writes, for the callers that still name
-/// the format by the path (the modeler's dialogs and script; stitch::output's table is the one
-/// dispatch by extension for everything else).
-inline constexpr std::array<std::string_view, 6> kSurfaceMeshExtensions{".obj", ".ply", ".off",
-                                                                        ".stl", ".glb", ".gltf"};
-
-/// write_smooth_surface in the format of `path`'s extension among kSurfaceMeshExtensions; throws
-/// UsageError naming them for another. For the modeler and the Python module until they write
-/// through stitch::output's write_surface.
-SurfaceFileCounts write_smooth_surface(const std::string& path, const HalfedgeMesh& mesh,
-                                       const Surface& surface, int resolution,
-                                       const SurfaceFileOptions& options = {});
-
 /// Writes every sample with its patch attributes as binary little-endian PLY: double x y z
 /// nx ny nz u v and int patch, so continuity can be checked from the file alone; with `uvs`, also
 /// double s t, the sample's texture coordinates. Written as PLY whatever the path's extension.

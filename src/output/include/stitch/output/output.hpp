@@ -71,22 +71,22 @@ struct OutputReport {
 };
 
 struct OutputFormat {
-  std::string_view name;  ///< for people: "binary PLY", "STEP AP214"
+  std::string_view name{};  ///< for people: "binary PLY", "STEP AP214"
   /// Lower case with the dot; the first is the one a dialog proposes. Unused slots are empty.
-  std::array<std::string_view, 2> extensions;
-  OutputKind kind;
+  std::array<std::string_view, 2> extensions{};
+  OutputKind kind = OutputKind::tessellated;
   /// What a tessellated row's writer hands the core's mesh writers: the one place a path's
   /// extension becomes a mesh file format. None for the exact rows.
-  std::optional<MeshFileFormat> mesh_format;
+  std::optional<MeshFileFormat> mesh_format{};
   bool normals = false;    ///< per-vertex normals
   bool uvs = false;        ///< texture coordinates (welded; unwelded .ply has its own)
   bool unwelded = false;   ///< takes OutputSpec::unwelded
   bool adaptive = false;   ///< takes OutputSpec::adaptive_tolerance
   bool needs_cad = false;  ///< written through OpenCASCADE (a build without it refuses)
   MemoryModel memory = MemoryModel::streamed;
-  std::string_view help;
+  std::string_view help{};
   OutputReport (*write)(const std::string& path, const HalfedgeMesh& mesh, const Surface& surface,
-                        const OutputSpec& spec, const OutputFormat& format);
+                        const OutputSpec& spec, const OutputFormat& format) = nullptr;
 };
 
 /// Every format stitch writes, tessellated first.
