@@ -280,7 +280,7 @@ py::list output_format_rows() {
     d["name"] = py::str(f.name.data(), f.name.size());
     d["extensions"] = extensions;
     d["kind"] = f.kind == OutputKind::exact ? "exact" : "tessellated";
-    d["normals"] = f.normals;
+    d["normals"] = f.mesh_format && has_vertex_normals(*f.mesh_format);
     d["uvs"] = f.uvs;
     d["unwelded"] = f.unwelded;
     d["adaptive"] = f.adaptive;
