@@ -2,8 +2,13 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string_view>
+#include <tuple>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -31,10 +36,53 @@ void warn(const std::vector<std::string>& messages) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
 }
 
-MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes) {
+/// Crease tags on the edges joining the vertex pairs of `creases`, and corner tags on the
+/// vertices whose `corner_sharpness` is not 0: the soup's tags, as a file's `t crease` and
+/// `t corner` lines give them, so build_mesh checks them the same way.
+void add_tags(py::handle creases, py::handle crease_sharpness, py::handle corner_sharpness,
+              PolygonSoup& soup) {
+  if (!creases.is_none()) {
+    const auto pairs = checked_array<std::int64_t>(creases, "iu", "creases");
+    if (pairs.ndim() != 2 || pairs.shape(1) != 2)
+      throw py::value_error("creases must have shape (k, 2): the two vertices of each edge");
+    const py::ssize_t k = pairs.shape(0);
+    std::vector<double> sharpness(static_cast<size_t>(k), infinitely_sharp);
+    if (!crease_sharpness.is_none()) {
+      const auto s = checked_array<double>(crease_sharpness, "fiu", "crease_sharpness");
+      if (s.ndim() != 1 || s.shape(0) != k)
+        throw py::value_error(
+            fmt::format("crease_sharpness must have shape ({},), one value per crease", k));
+      std::copy(s.data(), s.data() + k, sharpness.begin());
+    }
+    const auto p = pairs.unchecked<2>();
+    for (py::ssize_t i = 0; i < k; ++i) {
+      // Range checks of the vertices themselves are build_mesh's, as for a file's tags.
+      for (int end = 0; end < 2; ++end)
+        if (p(i, end) < std::numeric_limits<int>::min() ||
+            p(i, end) > std::numeric_limits<int>::max())
+          throw py::value_error(fmt::format("creases[{}][{}] is out of range", i, end));
+      soup.creases.push_back({static_cast<int>(p(i, 0)), static_cast<int>(p(i, 1)),
+                              sharpness[static_cast<size_t>(i)], 0});
+    }
+  } else if (!crease_sharpness.is_none()) {
+    throw py::value_error("crease_sharpness needs creases: the edges it applies to");
+  }
+  if (!corner_sharpness.is_none()) {
+    const auto s = checked_array<double>(corner_sharpness, "fiu", "corner_sharpness");
+    if (s.ndim() != 1 || static_cast<size_t>(s.shape(0)) != soup.positions.size())
+      throw py::value_error(fmt::format(
+          "corner_sharpness must have shape ({},), one value per vertex", soup.positions.size()));
+    for (py::ssize_t v = 0; v < s.shape(0); ++v)
+      if (s.data()[v] != 0) soup.corners.push_back({static_cast<int>(v), s.data()[v], 0});
+  }
+}
+
+MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, py::handle uvs,
+                 py::handle creases, py::handle crease_sharpness, py::handle corner_sharpness) {
   PolygonSoup soup;
   soup.positions = to_positions(vertices);
   soup.faces = to_faces(faces);
+  add_tags(creases, crease_sharpness, corner_sharpness, soup);
   BuildReport report;
   std::shared_ptr<const HalfedgeMesh> mesh;
   {
@@ -42,8 +90,17 @@ MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes) {
     mesh =
         std::make_shared<const HalfedgeMesh>(build_mesh(soup, build_options(fill_holes), &report));
   }
+  std::shared_ptr<const CornerUvs> texture;
+  if (!uvs.is_none()) {
+    // As read(): a UV surface needs every patch's corners to have UVs, which filled holes lack.
+    if (fill_holes && report.filled_holes > 0)
+      report.warnings.emplace_back(
+          "its texture coordinates are not kept: the faces fill_holes added have none");
+    else
+      texture = corner_uvs(*mesh, uvs);
+  }
   warn(report.warnings);
-  return {std::move(mesh)};
+  return {std::move(mesh), std::move(texture)};
 }
 
 MeshHandle read(const std::string& path, bool fill_holes) {
@@ -146,6 +203,34 @@ py::dict topology(std::shared_ptr<const HalfedgeMesh> mesh) {
 
 }  // namespace
 
+std::shared_ptr<const CornerUvs> corner_uvs(const HalfedgeMesh& mesh, py::handle uvs) {
+  const auto a = checked_array<double>(uvs, "fiu", "uvs");
+  py::ssize_t corners = 0;
+  for (Face f : mesh.surface_faces()) corners += static_cast<py::ssize_t>(mesh.degree(f));
+  if (a.ndim() != 2 || a.shape(1) != 2 || a.shape(0) != corners)
+    throw py::value_error(
+        fmt::format("uvs must have shape ({}, 2), one row per corner of the faces in order, not {}",
+                    corners, py::str(py::handle(a).attr("shape")).cast<std::string>()));
+  const auto r = a.unchecked<2>();
+  auto out = std::make_shared<CornerUvs>();
+  out->index.assign(mesh.halfedge_capacity(), -1);
+  std::map<std::tuple<int, double, double>, int> joined;
+  py::ssize_t row = 0;
+  // The faces and their corners in the order of `faces`, as build_mesh gives a file's UVs.
+  for (Face f : mesh.surface_faces())
+    for (Halfedge h : mesh.face_loop(f)) {
+      const Eigen::Vector2d uv(r(row, 0), r(row, 1));
+      if (!uv.allFinite())
+        throw InputError(fmt::format("uvs[{}] = ({}, {}) is not finite", row, uv.x(), uv.y()));
+      const auto [at, added] = joined.try_emplace({mesh.origin(h).idx, uv.x(), uv.y()},
+                                                  static_cast<int>(out->uv.size()));
+      if (added) out->uv.push_back(uv);
+      out->index[h.idx] = at->second;
+      ++row;
+    }
+  return out;
+}
+
 Corner corner_arg(const HalfedgeMesh& mesh, py::handle corner) {
   if (py::isinstance<py::str>(corner)) return parse_corner(mesh, corner.cast<std::string>());
   int h = -1;
@@ -174,11 +259,19 @@ void bind_mesh(py::module_& m) {
                          "A closed, oriented, manifold polygon mesh (faces of any degree). "
                          "Immutable except through edit().")
       .def(py::init(&build), py::arg("vertices"), py::arg("faces"), py::kw_only(),
-           py::arg("fill_holes") = false,
+           py::arg("fill_holes") = false, py::arg("uvs") = py::none(),
+           py::arg("creases") = py::none(), py::arg("crease_sharpness") = py::none(),
+           py::arg("corner_sharpness") = py::none(),
            "Builds a mesh from an (n, 3) array of positions and faces given as 0-based vertex "
            "index lists of any length or an (m, k) integer array. Raises StitchError (a "
            "ValueError) for anything but a closed oriented manifold; messages number vertices "
-           "and faces from 1, as files do. fill_holes closes each boundary loop with one face.")
+           "and faces from 1, as files do. fill_holes closes each boundary loop with one face. "
+           "uvs: texture coordinates, an (c, 2) array with one row per corner of the faces in "
+           "order (corners at one vertex with equal coordinates are joined, others make a "
+           "seam), kept as has_uvs says. creases: a (k, 2) integer array of the vertex pairs of "
+           "crease edges, with crease_sharpness (k,) (default 10, infinitely sharp); "
+           "corner_sharpness: (n,) sharpness of every vertex (0: none). The tags of a file's "
+           "`t crease` and `t corner` lines, checked the same way.")
       .def_property_readonly("num_vertices",
                              [](const MeshHandle& h) { return h.mesh->num_vertices(); })
       .def_property_readonly("num_edges", [](const MeshHandle& h) { return h.mesh->num_edges(); })
