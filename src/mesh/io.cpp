@@ -210,6 +210,10 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
                      : gltf          ? io_detail::read_gltf(text, path, warnings)
                                      : io_detail::read_ply(text, path, warnings);
   soup.source = path;
+  // Messages quote the numbers the file uses (repair.hpp, soup_places.hpp).
+  soup.numbering = ext == ".obj"                    ? Numbering::from_one
+                   : ext == ".off" || ext == ".ply" ? Numbering::from_zero
+                                                    : Numbering::none;
   if (soup.faces.empty()) throw InputError(fmt::format("{}: the file contains no faces", path));
   if (progress) progress(1);
   return soup;
