@@ -23,9 +23,10 @@ namespace stitch::python {
 
 namespace {
 
-BuildOptions build_options(bool fill_holes) {
+BuildOptions build_options(bool fill_holes, bool repair) {
   BuildOptions o;
   o.fill_holes = fill_holes;
+  o.repair = repair;
   // The topology operators make 2-sided faces and edited meshes must read back, as in the CLI.
   o.allow_two_gons = true;
   return o;
@@ -77,8 +78,9 @@ void add_tags(py::handle creases, py::handle crease_sharpness, py::handle corner
   }
 }
 
-MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, py::handle uvs,
-                 py::handle creases, py::handle crease_sharpness, py::handle corner_sharpness) {
+MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, bool repair,
+                 py::handle uvs, py::handle creases, py::handle crease_sharpness,
+                 py::handle corner_sharpness) {
   PolygonSoup soup;
   soup.positions = to_positions(vertices);
   soup.faces = to_faces(faces);
@@ -87,8 +89,8 @@ MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, py::han
   std::shared_ptr<const HalfedgeMesh> mesh;
   {
     py::gil_scoped_release release;
-    mesh =
-        std::make_shared<const HalfedgeMesh>(build_mesh(soup, build_options(fill_holes), &report));
+    mesh = std::make_shared<const HalfedgeMesh>(
+        build_mesh(soup, build_options(fill_holes, repair), &report));
   }
   std::shared_ptr<const CornerUvs> texture;
   if (!uvs.is_none()) {
@@ -103,14 +105,14 @@ MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, py::han
   return {std::move(mesh), std::move(texture)};
 }
 
-MeshHandle read(const std::string& path, bool fill_holes) {
+MeshHandle read(const std::string& path, bool fill_holes, bool repair) {
   BuildReport report;
   std::vector<std::string> warnings;
   std::shared_ptr<const HalfedgeMesh> mesh;
   {
     py::gil_scoped_release release;
     mesh = std::make_shared<const HalfedgeMesh>(
-        read_mesh(path, build_options(fill_holes), &report, &warnings));
+        read_mesh(path, build_options(fill_holes, repair), &report, &warnings));
   }
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
   std::shared_ptr<const CornerUvs> uvs;
@@ -250,22 +252,29 @@ Corner corner_of(const HalfedgeMesh& mesh, int face, int vertex, int occurrence)
 void bind_mesh(py::module_& m) {
   const std::string read_doc = fmt::format(
       "Reads {} with every check of the command line; warnings (dropped unused vertices, "
-      "filled holes) become Python UserWarnings. The texture coordinates of the file, if any, "
+      "filled holes, each repair) become Python UserWarnings. repair (default True) fixes "
+      "what the mesh's building would refuse where it can, as `stitch smooth` does; "
+      "repair=False refuses it, as `--strict` does. The texture coordinates of the file, if any, "
       "stay with the mesh (has_uvs) until it is edited, for Surface.export(uv=...).",
       extension_list(kMeshReadExtensions));
   const std::string write_doc = fmt::format("Writes the mesh by extension ({}), atomically.",
                                             extension_list(kMeshWriteExtensions));
   py::class_<MeshHandle>(m, "Mesh",
-                         "A closed, oriented, manifold polygon mesh (faces of any degree). "
+                         "An oriented, manifold polygon mesh, closed or with boundaries (faces "
+                         "of any degree). "
                          "Immutable except through edit().")
       .def(py::init(&build), py::arg("vertices"), py::arg("faces"), py::kw_only(),
-           py::arg("fill_holes") = false, py::arg("uvs") = py::none(),
+           py::arg("fill_holes") = false, py::arg("repair") = true, py::arg("uvs") = py::none(),
            py::arg("creases") = py::none(), py::arg("crease_sharpness") = py::none(),
            py::arg("corner_sharpness") = py::none(),
            "Builds a mesh from an (n, 3) array of positions and faces given as 0-based vertex "
-           "index lists of any length or an (m, k) integer array. Raises StitchError (a "
-           "ValueError) for anything but a closed oriented manifold; messages number vertices "
-           "and faces from 1, as files do. fill_holes closes each boundary loop with one face. "
+           "index lists of any length or an (m, k) integer array. repair (default True) fixes "
+           "what it can, each change named in a UserWarning: faces flipped to one orientation, "
+           "non-manifold edges and vertices split (the split edges infinitely sharp), repeated "
+           "vertices, degenerate and duplicate faces dropped; repair=False refuses them. Raises "
+           "StitchError (a ValueError) for what cannot be repaired (a non-orientable piece, "
+           "indices out of range); messages number vertices and faces from 1, as files do. "
+           "fill_holes closes each boundary loop with one face. "
            "uvs: texture coordinates, an (c, 2) array with one row per corner of the faces in "
            "order (corners at one vertex with equal coordinates are joined, others make a "
            "seam), kept as has_uvs says. creases: a (k, 2) integer array of the vertex pairs of "
@@ -375,7 +384,7 @@ void bind_mesh(py::module_& m) {
       });
 
   m.def("read", &read, py::arg("path"), py::kw_only(), py::arg("fill_holes") = false,
-        read_doc.c_str());
+        py::arg("repair") = true, read_doc.c_str());
   m.def(
       "primitive",
       [](const std::string& name, const py::args& params) {

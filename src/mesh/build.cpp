@@ -11,8 +11,8 @@
 #include <tuple>
 #include <utility>
 
-#include "repair_detail.hpp"
-#include "soup_places.hpp"
+#include "mesh/repair_detail.hpp"
+#include "mesh/soup_places.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 
@@ -283,16 +283,16 @@ void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
   // The first few are enough to find them in the file; the count says the rest.
   if (!edges.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite sharpness (semi-sharp): mdc and asc make those of sharpness >= "
-        "--sharp-from (default 4) infinitely sharp and the others smooth; --method cc honours "
-        "the values (vertices numbered {}): {}",
+        "{} {} finite sharpness (semi-sharp): the K-gon construction makes those of sharpness "
+        ">= --sharp-from (default 4) infinitely sharp and the others smooth; the Catmull-Clark "
+        "method honours the values (vertices numbered {}): {}",
         edges.size(), edges.size() == 1 ? "edge has" : "edges have", numbered,
         soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite corner sharpness (semi-sharp): mdc and asc make those of sharpness >= "
-        "--sharp-from (default 4) corners and ignore the others; --method cc honours the values "
-        "(numbered {}): {}",
+        "{} {} finite corner sharpness (semi-sharp): the K-gon construction makes those of "
+        "sharpness >= --sharp-from (default 4) corners and ignores the others; the Catmull-Clark "
+        "method honours the values (numbered {}): {}",
         vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", numbered,
         soup_places::listed(vertices)));
 }
@@ -583,7 +583,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
   }
   if (!options.repair) {
     // What repair() would fix, all of it at once: the user has to fix it all.
-    const std::string defects = repair_detail::describe_defects(soup, repair_options);
+    const std::string defects = detail::describe_defects(soup, repair_options);
     if (defects.empty()) throw *refusal;
     throw InputError(fmt::format("{}refused as it is (repairing is off): {}",
                                  soup.source.empty() ? "" : soup.source + ": ", defects));
@@ -594,7 +594,7 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
   std::optional<InputError> failure;
   for (const bool by_angle : {false, true}) {
     RepairReport repairs;
-    const auto fixed = repair_detail::repaired(soup, repair_options, repairs, by_angle);
+    const auto fixed = detail::repaired(soup, repair_options, repairs, by_angle);
     if (!fixed) continue;
     if (fixed->soup.faces.empty()) {
       std::string dropped;

@@ -15,8 +15,8 @@
 #include <numeric>
 #include <utility>
 
-#include "repair_detail.hpp"
-#include "soup_places.hpp"
+#include "mesh/repair_detail.hpp"
+#include "mesh/soup_places.hpp"
 
 namespace stitch {
 
@@ -1025,7 +1025,7 @@ std::string to_json(const RepairReport& report) {
   return j.dump(2);
 }
 
-namespace repair_detail {
+namespace detail {
 
 std::optional<Repaired> repaired(const PolygonSoup& soup, const RepairOptions& options,
                                  RepairReport& report, bool by_angle) {
@@ -1079,11 +1079,11 @@ std::string describe_defects(const PolygonSoup& soup, const RepairOptions& optio
   return text;
 }
 
-}  // namespace repair_detail
+}  // namespace detail
 
 RepairReport repair(PolygonSoup& soup, const RepairOptions& options) {
   RepairReport report;
-  if (auto out = repair_detail::repaired(soup, options, report)) soup = std::move(out->soup);
+  if (auto out = detail::repaired(soup, options, report)) soup = std::move(out->soup);
   return report;
 }
 

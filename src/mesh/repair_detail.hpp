@@ -8,7 +8,7 @@
 
 #include "stitch/mesh/repair.hpp"
 
-namespace stitch::repair_detail {
+namespace stitch::detail {
 
 struct Repaired {
   PolygonSoup soup;
@@ -27,4 +27,4 @@ std::optional<Repaired> repaired(const PolygonSoup& soup, const RepairOptions& o
 /// to repair.
 std::string describe_defects(const PolygonSoup& soup, const RepairOptions& options);
 
-}  // namespace stitch::repair_detail
+}  // namespace stitch::detail

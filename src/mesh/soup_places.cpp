@@ -1,4 +1,4 @@
-#include "soup_places.hpp"
+#include "mesh/soup_places.hpp"
 
 #include <fmt/format.h>
 
