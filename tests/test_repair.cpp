@@ -463,7 +463,8 @@ TEST(Repair, MessagesNumberElementsAsTheFileDoes) {
       {stl,
        "the vertex at (0, 0, 0) is non-manifold: its faces (the face on line 3, the face on "
        "line 10)"}};
-  for (const auto& [path, words] : expected) {
+  for (const auto& [file, words] : expected) {
+    const std::string& path = file;  // a lambda cannot capture a structured binding in C++17
     BuildReport report;
     const HalfedgeMesh mesh = read_mesh(path, {}, &report);
     EXPECT_EQ(topology_stats(mesh).components, 2) << path;
