@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "stitch/kgon/kgon.hpp"
@@ -33,7 +34,9 @@ struct KgonKeywords {
   bool regularize = false;
   std::string construction;
   std::string boundary;
-  double sharp_from = KgonOptions{}.sharp_from;
+  /// None: semi-sharp tags honoured by refinement (stitch.Surface) or rounded at the library's
+  /// default (IncrementalSurface, which does not refine); a value rounds them there.
+  std::optional<double> sharp_from;
 };
 KgonOptions kgon_options(const KgonKeywords& k);
 /// The keywords' help, their names listed from the tables.

@@ -3,6 +3,7 @@
 // stitch.Tessellation whose arrays the updates rewrite in place.
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -69,7 +70,7 @@ void bind_incremental_surface(py::module_& m) {
       .def(py::init([](const MeshHandle& mesh, const std::string& method, int resolution,
                        double kgon_scale, double kgon_rotate, bool regularize,
                        const std::string& construction, const std::string& boundary,
-                       double sharp_from) {
+                       std::optional<double> sharp_from) {
              return make_incremental(
                  mesh, method, resolution,
                  {kgon_scale, kgon_rotate, regularize, construction, boundary, sharp_from});
@@ -79,7 +80,7 @@ void bind_incremental_surface(py::module_& m) {
            py::arg("kgon_rotate") = 0.0, py::arg("regularize") = false,
            py::arg("kgon_construction") = std::string(kgon_construction_table().front().name),
            py::arg("boundary") = std::string(boundary_table().front().name),
-           py::arg("sharp_from") = KgonOptions{}.sharp_from, init_doc.c_str())
+           py::arg("sharp_from") = py::none(), init_doc.c_str())
       .def("update_positions", &update_positions, py::arg("vertices"),
            "New positions for every vertex, an (n, 3) array in the order of mesh.vertices. "
            "Returns how many patches were evaluated again (those whose control nets changed). "

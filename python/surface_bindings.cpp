@@ -36,11 +36,18 @@ struct SurfaceHandle {
   /// it was off or no tube folded).
   std::shared_ptr<const BuiltSurface> built;
   [[nodiscard]] const Surface& surface() const { return built->surface; }
+  /// The mesh whose corners are the patches: `mesh`, or its refinement for semi-sharp tags.
+  [[nodiscard]] const HalfedgeMesh& patch_mesh() const { return built->mesh(*mesh); }
+  /// The texture coordinates that go with patch_mesh() (null: none; not refined yet).
+  [[nodiscard]] std::shared_ptr<const CornerUvs> patch_uvs() const {
+    return built->refined ? nullptr : uvs;
+  }
 };
 
 SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method,
                            const KgonKeywords& kgons, bool unfold) {
-  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold};
+  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold,
+                         kgons.sharp_from ? SemiSharp::round : SemiSharp::refine};
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
   const MeshHandle snapshot = mesh;
   py::gil_scoped_release release;
@@ -74,13 +81,13 @@ py::list unfolded_tubes(const SurfaceHandle& s) {
 }
 
 TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
-  check_tessellation_size(*s.mesh, resolution);
+  check_tessellation_size(s.patch_mesh(), resolution);
   return {resolution, welded};
 }
 
 TessellatedMesh run_tessellate(const SurfaceHandle& s, const TessellationOptions& options) {
   py::gil_scoped_release release;
-  return tessellate(*s.mesh, s.surface(), options);
+  return tessellate(s.patch_mesh(), s.surface(), options);
 }
 
 /// The C++ call alone, in seconds, for bench/bench_python.py to compare with.
@@ -88,7 +95,7 @@ double time_tessellate(const SurfaceHandle& s, int resolution, bool welded) {
   const TessellationOptions options = tessellation_options(s, resolution, welded);
   py::gil_scoped_release release;
   const auto start = std::chrono::steady_clock::now();
-  const TessellatedMesh result = tessellate(*s.mesh, s.surface(), options);
+  const TessellatedMesh result = tessellate(s.patch_mesh(), s.surface(), options);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -107,8 +114,8 @@ py::object patch_numbers(const HalfedgeMesh& mesh, py::handle patches) {
 
 py::object evaluate(const SurfaceHandle& s, py::handle patches, py::handle u, py::handle v) {
   const py::list args = py::module_::import("numpy").attr("broadcast_arrays")(
-      checked_kind(patch_numbers(*s.mesh, patches), "iu", "patches"), checked_kind(u, "fiu", "u"),
-      checked_kind(v, "fiu", "v"));
+      checked_kind(patch_numbers(s.patch_mesh(), patches), "iu", "patches"),
+      checked_kind(u, "fiu", "u"), checked_kind(v, "fiu", "v"));
   const auto p = checked_array<std::int64_t>(args[0], "iu", "patches");
   const auto pu = checked_array<double>(args[1], "fiu", "u");
   const auto pv = checked_array<double>(args[2], "fiu", "v");
@@ -127,7 +134,7 @@ py::object evaluate(const SurfaceHandle& s, py::handle patches, py::handle u, py
   const py::ssize_t n = p.size();
   {
     py::gil_scoped_release release;
-    const HalfedgeMesh& mesh = *s.mesh;
+    const HalfedgeMesh& mesh = s.patch_mesh();
     for (py::ssize_t i = 0; i < n; ++i) {
       if (patch[i] < 0 || patch[i] >= mesh.halfedge_capacity() ||
           mesh.is_deleted(Halfedge(static_cast<int>(patch[i]))) ||
@@ -166,7 +173,7 @@ py::dict analyze(const SurfaceHandle& s, int samples_per_side) {
   ContinuityReport r;
   {
     py::gil_scoped_release release;
-    r = analyze_continuity(*s.mesh, s.surface(), options);
+    r = analyze_continuity(s.patch_mesh(), s.surface(), options);
   }
   // The keys of `stitch analyze --json`, so scripts can move between the two.
   auto stats = [](const JumpStats& j) {
@@ -221,7 +228,7 @@ OutputSpec output_spec(const SurfaceHandle& s, const std::string& path, const Ex
   if (k.tolerance) set_tolerance(spec, format, *k.tolerance, k.resolution.has_value());
   if (k.angle_tolerance) spec.patches.angle_tolerance_deg = *k.angle_tolerance;
   if (format.kind == OutputKind::tessellated && spec.adaptive_tolerance == 0)
-    check_tessellation_size(*s.mesh, spec.resolution);
+    check_tessellation_size(s.patch_mesh(), spec.resolution);
   check_output(path, spec);
   return spec;
 }
@@ -238,14 +245,18 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
   {
     py::gil_scoped_release release;
     std::unique_ptr<UvSurface> uvs;
-    if (s.uvs && !none && writes_uvs(format, spec)) {
-      uvs = std::make_unique<UvSurface>(*s.mesh, *s.uvs, mode, s.built->kgons);
+    if (s.patch_uvs() && !none && writes_uvs(format, spec)) {
+      uvs = std::make_unique<UvSurface>(s.patch_mesh(), *s.uvs, mode, s.built->kgons);
       warnings = uvs->warnings();
       spec.uvs = uvs.get();
     }
-    report = write_surface(path, *s.mesh, s.surface(), spec);
+    report = write_surface(path, s.patch_mesh(), s.surface(), spec);
   }
-  if (asked && report.texcoords == 0)
+  if (s.uvs && !s.patch_uvs() && !none)
+    warnings.push_back(
+        "the mesh's texture coordinates are not written: they are not refined with the mesh for "
+        "its semi-sharp tags yet (sharp_from= rounds the tags and keeps them)");
+  else if (asked && report.texcoords == 0)
     warnings.push_back(
         s.uvs ? fmt::format("uv='{}': no texture coordinates were written to '{}': {} has no "
                             "place for them {}(see stitch.output_formats())",
@@ -268,6 +279,10 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
 /// mesh's UVs, as the writers evaluate them (the OBJ writer's `vt` lines, in the same order).
 py::array_t<double> texcoords(const SurfaceHandle& s, int resolution,
                               const std::optional<std::string>& uv, py::handle other) {
+  if (s.built->refined)
+    throw py::value_error(
+        "texcoords: the texture coordinates are not refined with the mesh for its semi-sharp "
+        "tags yet; sharp_from= rounds the tags instead");
   const std::shared_ptr<const CornerUvs> given =
       other.is_none() ? s.uvs : corner_uvs(*s.mesh, other);
   if (!given)
@@ -387,14 +402,14 @@ KgonOptions kgon_options(const KgonKeywords& k) {
   limits::check_range(k.rotate_deg, -limits::max_rotation_deg, limits::max_rotation_deg,
                       "kgon_rotate");
   // The range of `stitch --sharp-from`: OpenSubdiv's sharpness tops out at 10 (infinitely sharp).
-  limits::check_range(k.sharp_from, 0, 10, "sharp_from");
+  if (k.sharp_from) limits::check_range(*k.sharp_from, 0, 10, "sharp_from");
   KgonOptions o;
   o.global.scale = k.scale;
   o.global.rotate_deg = k.rotate_deg;
   o.global.regularize = k.regularize;
   o.construction = parse_choice(kgon_construction_table(), k.construction, "kgon_construction");
   o.boundary = parse_choice(boundary_table(), k.boundary, "boundary");
-  o.sharp_from = k.sharp_from;
+  o.sharp_from = k.sharp_from.value_or(KgonOptions{}.sharp_from);
   return o;
 }
 
@@ -402,9 +417,13 @@ std::string kgon_keywords_help() {
   return fmt::format(
       "kgon_scale, kgon_rotate (degrees), regularize: applied to every K-gon with K != 4, as "
       "stitch's --kgon-scale, --kgon-rotate and --regularize. kgon_construction: {}. boundary: "
-      "{}. sharp_from: crease and corner tags of at least this sharpness (0 to 10) are "
-      "infinitely sharp for the K-gon methods, smaller ones smooth.",
-      choice_help(kgon_construction_table()), choice_help(boundary_table()));
+      "{}. sharp_from: None (default) honours semi-sharp crease and corner tags as OpenSubdiv "
+      "does, by refining the mesh before the patches (Surface; refinement, refined_mesh); a "
+      "number rounds them for the K-gon methods: tags of at least this sharpness (0 to 10) "
+      "infinitely sharp, smaller ones smooth (IncrementalSurface always rounds, at {:g} when "
+      "None).",
+      choice_help(kgon_construction_table()), choice_help(boundary_table()),
+      KgonOptions{}.sharp_from);
 }
 
 void bind_surface(py::module_& m) {
@@ -477,7 +496,7 @@ void bind_surface(py::module_& m) {
   py::class_<SurfaceHandle>(m, "Surface", "The smooth surface of a mesh: one patch per corner.")
       .def(py::init([](const MeshHandle& mesh, const std::string& method, double kgon_scale,
                        double kgon_rotate, bool regularize, const std::string& construction,
-                       bool unfold, const std::string& boundary, double sharp_from) {
+                       bool unfold, const std::string& boundary, std::optional<double> sharp_from) {
              return make_surface(
                  mesh, method,
                  {kgon_scale, kgon_rotate, regularize, construction, boundary, sharp_from}, unfold);
@@ -487,7 +506,7 @@ void bind_surface(py::module_& m) {
            py::arg("kgon_construction") = std::string(kgon_construction_table().front().name),
            py::arg("unfold_tubes") = true,
            py::arg("boundary") = std::string(boundary_table().front().name),
-           py::arg("sharp_from") = KgonOptions{}.sharp_from, init_doc.c_str())
+           py::arg("sharp_from") = py::none(), init_doc.c_str())
       .def_property_readonly("unfolded_tubes", &unfolded_tubes,
                              "One dict per tube whose fitted K-gons folded: face and bridge "
                              "(0-based face and edge indices), fitted_folds and "
@@ -504,6 +523,30 @@ void bind_surface(py::module_& m) {
                                return MeshHandle{s.mesh, s.uvs};
                              })
       .def_property_readonly(
+          "refined_mesh",
+          [](const SurfaceHandle& s) -> py::object {
+            if (!s.built->refined) return py::none();
+            return py::cast(
+                MeshHandle{std::make_shared<const HalfedgeMesh>(s.patch_mesh()), nullptr});
+          },
+          "The mesh whose corners are the patches when the surface refined `mesh` for its "
+          "semi-sharp tags (a copy); None otherwise, when the patches are mesh's corners")
+      .def_property_readonly(
+          "refinement",
+          [](const SurfaceHandle& s) {
+            const SemiSharpRefinement& r = s.built->refinement;
+            py::dict d;
+            d["levels"] = r.levels;
+            d["levels_wanted"] = r.levels_wanted;
+            d["largest_tag"] = r.largest_tag;
+            d["faces"] = r.faces;
+            d["patches"] = r.patches;
+            d["summary"] = r.summary();
+            return d;
+          },
+          "What honouring the semi-sharp tags took: levels of uniform refinement (0: none), "
+          "levels_wanted, largest_tag, faces and patches of the refined mesh, summary")
+      .def_property_readonly(
           "patches",
           [](const py::object& self) {
             const auto& corners = self.cast<const SurfaceHandle&>().surface().corners();
@@ -511,8 +554,9 @@ void bind_surface(py::module_& m) {
             return view(reinterpret_cast<const int*>(corners.data()),
                         {static_cast<py::ssize_t>(corners.size())}, self);
           },
-          "(p,) int32: the patch numbers. A patch is a corner of the mesh (a vertex on a "
-          "face), numbered by its half-edge: 0 to p - 1 in half-edge order for a closed mesh, "
+          "(p,) int32: the patch numbers. A patch is a corner of the mesh (of refined_mesh "
+          "when the surface refined it for semi-sharp tags: a vertex on a face), numbered by "
+          "its half-edge: 0 to p - 1 in half-edge order for a closed mesh, "
           "with gaps where a boundary's half-edges are (they have no patch). The numbers of "
           "evaluate, Tessellation.patches, unwelded PLY and `stitch eval`; corner_name(p) "
           "gives the name \"V@F\" of Bezier JSON, STEP and edit operations, patch(name) and "
@@ -520,7 +564,7 @@ void bind_surface(py::module_& m) {
       .def(
           "corner_name",
           [](const SurfaceHandle& s, py::handle patch) {
-            return corner_name(*s.mesh, corner_arg(*s.mesh, patch));
+            return corner_name(s.patch_mesh(), corner_arg(s.patch_mesh(), patch));
           },
           py::arg("patch"),
           "The name \"V@F\" of a patch: its corner, vertex V on face F, numbered from 1 as in "
@@ -529,13 +573,13 @@ void bind_surface(py::module_& m) {
       .def(
           "patch",
           [](const SurfaceHandle& s, const std::string& name) {
-            return corner_arg(*s.mesh, py::str(name)).idx;
+            return corner_arg(s.patch_mesh(), py::str(name)).idx;
           },
           py::arg("name"), "The patch number of the corner named \"V@F\" (or \"V@F#k\").")
       .def(
           "patch_of",
           [](const SurfaceHandle& s, int face, int vertex, int occurrence) {
-            return corner_of(*s.mesh, face, vertex, occurrence).idx;
+            return corner_of(s.patch_mesh(), face, vertex, occurrence).idx;
           },
           py::kw_only(), py::arg("face"), py::arg("vertex"), py::arg("occurrence") = 0,
           "The patch number of vertex `vertex` on face `face`, both 0-based like mesh.faces "
@@ -547,7 +591,7 @@ void bind_surface(py::module_& m) {
             const std::vector<Corner>& corners = s.surface().corners();
             py::array_t<int> faces(static_cast<py::ssize_t>(corners.size()));
             for (size_t k = 0; k < corners.size(); ++k)
-              faces.mutable_data()[k] = s.mesh->face(corners[k]).idx;
+              faces.mutable_data()[k] = s.patch_mesh().face(corners[k]).idx;
             return faces;
           },
           "(p,) int32: the 0-based face (as in mesh.faces) of each patch, in the order of "

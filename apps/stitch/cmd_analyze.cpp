@@ -69,9 +69,9 @@ void run_analyze(const AnalyzeArgs& a) {
         "G1 at EVs: spread");
   for (Method m : methods) {
     stage.begin("analyzing " + to_string(m));
-    std::optional<Surface> surface;
+    std::optional<BuiltSurface> built;
     try {
-      surface.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet).surface);
+      built.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet));
     } catch (const Error& e) {
       // With --method all, a method that cannot take this mesh is reported, not fatal.
       if (methods.size() == 1) throw;
@@ -82,7 +82,8 @@ void run_analyze(const AnalyzeArgs& a) {
         fmt::print("{:<6} refused: {}\n", to_string(m), e.what());
       continue;
     }
-    const ContinuityReport r = analyze_continuity(mesh, *surface, opt);
+    // Refined for semi-sharp tags, the surface is measured on the mesh its patches come from.
+    const ContinuityReport r = analyze_continuity(built->mesh(mesh), built->surface, opt);
     stage.end();
     if (a.json) {
       out["methods"].push_back(to_json(r));

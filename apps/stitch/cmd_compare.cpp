@@ -255,9 +255,9 @@ void run_compare(const CompareArgs& a) {
   Camera whole_camera, closeup_camera;
   for (const Method m : kMethods) {
     stage.begin("building, rendering and analyzing " + to_string(m));
-    std::optional<Surface> surface;
+    std::optional<BuiltSurface> built;
     try {
-      surface.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet).surface);
+      built.emplace(build_cli_surface(a.kgon, mesh, m, a.in.path, a.progress.quiet));
     } catch (const Error& e) {
       // Should OpenSubdiv reject the mesh: show the other methods and say why this one is
       // missing.
@@ -266,7 +266,11 @@ void run_compare(const CompareArgs& a) {
       fmt::print(stderr, "stitch: warning: {} skipped: {}\n", to_string(m), e.what());
       continue;
     }
-    const SceneGeometry scene = build_scene(mesh, *surface, a.resolution, OverlaySelection{});
+    // Refined for semi-sharp tags, the surface goes with the mesh its patches come from.
+    const HalfedgeMesh& surface_mesh = built->mesh(mesh);
+    const Surface& surface = built->surface;
+    const SceneGeometry scene =
+        build_scene(surface_mesh, surface, a.resolution, OverlaySelection{});
     // One camera for all methods (from the first one's surface), so the images line up.
     if (!has_camera) {
       has_camera = true;
@@ -291,7 +295,7 @@ void run_compare(const CompareArgs& a) {
       write_png((dir / ("zebra_closeup_" + to_string(m) + std::string(kImageExtension))).string(),
                 closeup.back());
     }
-    reports.push_back(analyze_continuity(mesh, *surface));
+    reports.push_back(analyze_continuity(surface_mesh, surface));
     shown.push_back(m);
     stage.end();
   }

@@ -57,11 +57,29 @@ bool check_edited_surface(const EditArgs& a, const HalfedgeMesh& mesh, const Tou
                     : patches_touched(mesh, touched.vertices, touched.edges, touched.faces);
   // The surface `stitch smooth` makes of the output by default.
   const BuiltSurface built = build_surface(mesh, {Method::mdc, {}, a.unfold_tubes});
-  report_unfolded_tubes(built.tubes, mesh, a.out, a.quiet);
+  const HalfedgeMesh& surface_mesh = built.mesh(mesh);
+  report_unfolded_tubes(built.tubes, surface_mesh, a.out, a.quiet);
   const Surface& surface = built.surface;
   LocalCheckOptions options;
   options.resolution = a.check_resolution;
-  const LocalCheckReport r = check_patches(mesh, surface, changed, options);
+  // Refined for semi-sharp tags, a changed corner's patch is tiled by refined patches: those are
+  // checked, and problems are named by the corners of the output that hold them.
+  std::vector<Corner> checked = changed;
+  if (built.refined) {
+    checked.clear();
+    for (Corner c : changed) {
+      const std::vector<Corner> tiles = built.refined->patches_of(c);
+      checked.insert(checked.end(), tiles.begin(), tiles.end());
+    }
+  }
+  LocalCheckReport r = check_patches(surface_mesh, surface, checked, options);
+  if (built.refined) {
+    const std::vector<Corner> input = built.refined->input_corners();
+    for (Corner& c : r.problem_corners) c = input[c.idx];
+    std::sort(r.problem_corners.begin(), r.problem_corners.end());
+    r.problem_corners.erase(std::unique(r.problem_corners.begin(), r.problem_corners.end()),
+                            r.problem_corners.end());
+  }
   if (r.clean()) {
     if (!a.quiet)
       fmt::print(

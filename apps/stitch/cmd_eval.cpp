@@ -96,14 +96,21 @@ void run_eval(const EvalArgs& a) {
   const HalfedgeMesh mesh = load_input(a.in);
   const std::vector<Query> queries = read_queries(a.at, mesh);
   const Method method = parse_method(a.method);
-  const Surface surface = build_cli_surface(a.kgon, mesh, method, a.in.path).surface;
+  const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path);
+  // Points are asked for by the input's corners; refined for semi-sharp tags, each is found on
+  // the refined patch that holds it, its derivatives taken back to the input corner's (u, v).
+  auto evaluate = [&built](const Query& q) {
+    if (!built.refined) return built.surface.evaluate(q.corner, q.u, q.v);
+    const SemiSharpMesh::Point p = built.refined->point(q.corner, q.u, q.v);
+    return p.to_input(built.surface.evaluate(p.corner, p.u, p.v));
+  };
   // Full precision: {} and nlohmann both print the shortest text that reads back exactly.
   if (a.format == "csv") {
     fmt::print(
         "line,patch,face,vertex,u,v,x,y,z,du_x,du_y,du_z,dv_x,dv_y,dv_z,normal_x,normal_y,"
         "normal_z,level,corner\n");
     for (const Query& q : queries) {
-      const SurfacePoint p = surface.evaluate(q.corner, q.u, q.v);
+      const SurfacePoint p = evaluate(q);
       fmt::print("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", q.line,
                  q.corner.idx, mesh.face(q.corner).idx + 1, mesh.origin(q.corner).idx + 1, q.u, q.v,
                  p.position.x(), p.position.y(), p.position.z(), p.du.x(), p.du.y(), p.du.z(),
@@ -115,7 +122,7 @@ void run_eval(const EvalArgs& a) {
   auto vec = [](const Vec3& x) { return nlohmann::json::array({x.x(), x.y(), x.z()}); };
   nlohmann::json points = nlohmann::json::array();
   for (const Query& q : queries) {
-    const SurfacePoint p = surface.evaluate(q.corner, q.u, q.v);
+    const SurfacePoint p = evaluate(q);
     points.push_back({{"line", q.line},
                       {"patch", q.corner.idx},
                       {"corner", corner_name(mesh, q.corner)},

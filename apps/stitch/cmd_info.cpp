@@ -52,7 +52,7 @@ void run_info(const InfoArgs& a) {
   // Holes make no patches, so they are no extraordinary points.
   for (Face f : mesh.surface_faces())
     if (mesh.degree(f) != 4) ev_faces.push_back(f.idx + 1);
-  // Semi-sharp tags are counted apart: only --method cc honours them (build_mesh warns).
+  // Semi-sharp tags are counted apart: mdc and asc honour them by refining the mesh first.
   int sharp_edges = 0, semi_sharp_edges = 0, sharp_corners = 0, semi_sharp_corners = 0;
   for (Edge e : mesh.edges())
     if (!mesh.is_boundary(e) && mesh.sharpness(e) > 0)
@@ -62,11 +62,12 @@ void run_info(const InfoArgs& a) {
       ++(mesh.sharpness(v) >= infinitely_sharp ? sharp_corners : semi_sharp_corners);
   const size_t patches = mesh.patch_corners().size();
 
+  const Method method = parse_method(a.method);
+  const SemiSharpRefinement refinement = semi_sharp_refinement(mesh, surface_spec(a.kgon, method));
   std::optional<PatchSet> set;
   if (a.patches) {
-    const Method method = parse_method(a.method);
-    set = bezier_patches(mesh, build_cli_surface(a.kgon, mesh, method, a.in.path).surface,
-                         a.patch_set);
+    const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path);
+    set = bezier_patches(built.mesh(mesh), built.surface, a.patch_set);
   }
 
   if (a.json) {
@@ -83,6 +84,13 @@ void run_info(const InfoArgs& a) {
     j["euler_characteristic"] = t.euler;
     j["genus"] = t.genus;
     j["patches"] = patches;
+    j["semi_sharp_refinement"] = {
+        {"method", a.method},
+        {"levels", refinement.levels},
+        {"levels_wanted", refinement.levels_wanted},
+        {"largest_tag", refinement.largest_tag},
+        {"faces", refinement.levels > 0 ? refinement.faces : t.faces},
+        {"patches", refinement.levels > 0 ? refinement.patches : static_cast<long long>(patches)}};
     for (const auto& [k, n] : t.valence_histogram) j["valence_histogram"][std::to_string(k)] = n;
     for (const auto& [k, n] : t.degree_histogram) j["degree_histogram"][std::to_string(k)] = n;
     j["extraordinary_vertices"] = ev_vertices;
@@ -114,6 +122,9 @@ void run_info(const InfoArgs& a) {
       sharp_edges + semi_sharp_edges, sharp_edges, semi_sharp_edges,
       sharp_corners + semi_sharp_corners, sharp_corners, semi_sharp_corners);
   fmt::print("  bicubic patches (one per corner, holes excepted) {}\n", patches);
+  if (refinement.levels > 0)
+    fmt::print("  {} (method {}; --sharp-from rounds them instead)\n", refinement.summary(),
+               a.method);
   fmt::print("  valence histogram  {}\n", histogram(t.valence_histogram));
   fmt::print("  face degree histogram  {}\n", histogram(t.degree_histogram));
   fmt::print("  extraordinary points: {} vertices (valence != 4), {} faces (degree != 4)\n",

@@ -87,7 +87,15 @@ void run_render(const RenderArgs& a) {
   const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
   const Surface& surface = built.surface;
   const KgonOptions& kgons = built.kgons;
-  SceneGeometry scene = build_scene(mesh, surface, a.resolution, style.overlays);
+  if (checker && built.refined) {
+    throw UsageError(fmt::format(
+        "--mode {}: the texture coordinates are not refined with the mesh for its semi-sharp "
+        "tags yet; --sharp-from rounds the tags instead",
+        to_string(ShadingMode::checker)));
+  }
+  // Refined for semi-sharp tags, the surface (and the control mesh drawn over it) is the
+  // refined mesh's.
+  SceneGeometry scene = build_scene(built.mesh(mesh), surface, a.resolution, style.overlays);
   stage.end();
   if (checker) {
     stage.begin("evaluating the texture coordinates");

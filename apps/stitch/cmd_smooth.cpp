@@ -147,14 +147,26 @@ void run_smooth(SmoothArgs& a) {
                           static_cast<int>(mesh.patch_corners().size())));
   const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
   stage.end();
-  const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, built.kgons, report, format, stage);
+  // Refined for semi-sharp tags, the surface's patches are the refined mesh's corners.
+  const HalfedgeMesh& surface_mesh = built.mesh(mesh);
+  if (built.refined) {
+    check_memory(a, surface_mesh, format);
+    if (!report.corner_uvs.empty() && a.uv != "none") {
+      warn(a.out,
+           "the input's texture coordinates are not written: they are not refined with the mesh "
+           "for its semi-sharp tags yet (--sharp-from rounds the tags and keeps them)");
+      report.corner_uvs = {};
+    }
+  }
+  const std::unique_ptr<UvSurface> uvs =
+      uv_surface(a, surface_mesh, built.kgons, report, format, stage);
   a.spec.uvs = uvs.get();
   a.spec.progress = [&stage](double done) { stage.fraction(done); };
   a.spec.note = [&stage](const std::string& line) { stage.note(line); };
   if (!a.patches.empty()) {
     stage.begin("writing " + a.patches);
     patches_spec.note = a.spec.note;
-    write_surface(a.patches, mesh, built.surface, patches_spec);
+    write_surface(a.patches, surface_mesh, built.surface, patches_spec);
     stage.end();
   }
   stage.begin(
@@ -163,10 +175,10 @@ void run_smooth(SmoothArgs& a) {
           ? fmt::format("tessellating to tolerance {} and writing {}", a.spec.adaptive_tolerance,
                         a.out)
           : fmt::format("tessellating at resolution {} and writing {}", a.spec.resolution, a.out));
-  const OutputReport written = write_surface(a.out, mesh, built.surface, a.spec);
+  const OutputReport written = write_surface(a.out, surface_mesh, built.surface, a.spec);
   stage.end();
   if (a.check && format.kind == OutputKind::tessellated)
-    warn_if_not_clean(stage, a, mesh, built.surface);
+    warn_if_not_clean(stage, a, surface_mesh, built.surface);
   fmt::print("wrote {} ({})\n", a.out, written.summary);
 }
 

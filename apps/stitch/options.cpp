@@ -125,14 +125,18 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
   cmd->add_option("--boundary", k.boundary, choice_help(boundary_table()))
       ->check(choice_validator(boundary_table()))
       ->capture_default_str();
-  cmd->add_option(
-         "--sharp-from", k.sharp_from,
-         fmt::format("crease and corner tags of at least this sharpness are infinitely "
-                     "sharp for {} and {}, smaller ones smooth (the K-gon construction "
-                     "has no levels to round a crease over); {} honours every value",
-                     to_string(Method::mdc), to_string(Method::asc), to_string(Method::cc)))
-      ->check(finite_range(0, 10))
-      ->capture_default_str();
+  k.sharp_from_option =
+      cmd->add_option(
+             "--sharp-from", k.sharp_from,
+             fmt::format(
+                 "round semi-sharp crease and corner tags (0 < sharpness < 10) for {} and {}: "
+                 "those of at least this sharpness infinitely sharp, smaller ones smooth ({:g} "
+                 "was the default before tags were honoured). Without it they are honoured as "
+                 "OpenSubdiv means them, by refining the mesh ceil(sharpness) levels (at most "
+                 "{}) before the patches (docs/method.md); {} honours them itself",
+                 to_string(Method::mdc), to_string(Method::asc), KgonOptions{}.sharp_from,
+                 max_semi_sharp_levels, to_string(Method::cc)))
+          ->check(finite_range(0, 10));
 }
 
 KgonOptions to_kgon_options(const KgonCliOptions& k) {
@@ -152,13 +156,18 @@ KgonOptions to_kgon_options(const KgonCliOptions& k) {
 }
 
 SurfaceSpec surface_spec(const KgonCliOptions& k, Method method) {
-  return {method, to_kgon_options(k), k.unfold_tubes};
+  const bool rounded = k.sharp_from_option != nullptr && k.sharp_from_option->count() > 0;
+  return {method, to_kgon_options(k), k.unfold_tubes,
+          rounded ? SemiSharp::round : SemiSharp::refine};
 }
 
 BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
                                const std::string& where, bool quiet) {
   BuiltSurface built = build_surface(mesh, surface_spec(k, method));
-  report_unfolded_tubes(built.tubes, mesh, where, quiet);
+  report_unfolded_tubes(built.tubes, built.mesh(mesh), where, quiet);
+  if (!quiet && built.refinement.levels > 0)
+    fmt::print(stderr, "stitch: note: {}: {}; --sharp-from rounds them instead\n", where,
+               built.refinement.summary());
   return built;
 }
 

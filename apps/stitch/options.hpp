@@ -55,14 +55,17 @@ struct KgonCliOptions {
   KgonOptions from_input;
   bool input_has_global = false;
   const CLI::Option *scale_option = nullptr, *rotate_option = nullptr, *regularize_option = nullptr;
+  /// Given: semi-sharp tags rounded at sharp_from (SemiSharp::round); not given: honoured by
+  /// refinement.
+  const CLI::Option* sharp_from_option = nullptr;
 };
 /// Adds --kgon-scale, --kgon-rotate, --regularize, --kgon-controls, --kgon-construction,
 /// --no-unfold-tubes, --boundary and --sharp-from.
 /// With `in`, a .stitch input's K-gon controls reach `k` through load_input.
 void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in = nullptr);
 KgonOptions to_kgon_options(const KgonCliOptions& k);
-/// The request the options make: the method, to_kgon_options, and unless --no-unfold-tubes the
-/// tube policy.
+/// The request the options make: the method, to_kgon_options, unless --no-unfold-tubes the
+/// tube policy, and with --sharp-from the rounding of semi-sharp tags.
 SurfaceSpec surface_spec(const KgonCliOptions& k, Method method);
 /// build_surface of that request, each tube unfold_tubes found reported on stderr against
 /// `where` (the input): what was chosen as a note (not under `quiet`), a tube that still folds

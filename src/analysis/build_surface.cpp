@@ -1,6 +1,163 @@
 #include "stitch/analysis/build_surface.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "topology/catmark_refinement.hpp"
+
 namespace stitch {
+
+namespace {
+
+bool semi_sharp(double s) {
+  return s > 0 && s < infinitely_sharp;
+}
+
+/// The largest semi-sharp tag OpenSubdiv would refine with: boundary edges are infinitely sharp
+/// whatever they carry.
+double largest_semi_sharp_tag(const HalfedgeMesh& mesh) {
+  double largest = 0;
+  for (Edge e : mesh.edges())
+    if (!mesh.is_boundary(e) && semi_sharp(mesh.sharpness(e)))
+      largest = std::max(largest, mesh.sharpness(e));
+  for (Vertex v : mesh.vertices())
+    if (semi_sharp(mesh.sharpness(v))) largest = std::max(largest, mesh.sharpness(v));
+  return largest;
+}
+
+}  // namespace
+
+std::string SemiSharpRefinement::summary() const {
+  if (levels == 0) return "";
+  std::string cut;
+  if (levels < levels_wanted)
+    cut =
+        fmt::format(" (of the {} they need: the rest rounded to infinitely sharp)", levels_wanted);
+  return fmt::format(
+      "semi-sharp tags up to {:g} honoured by {} level{} of uniform refinement{}: {} faces, {} "
+      "patches",
+      largest_tag, levels, levels == 1 ? "" : "s", cut, faces, patches);
+}
+
+SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
+  SemiSharpRefinement r;
+  if (spec.method == Method::cc || spec.semi_sharp != SemiSharp::refine) return r;
+  r.largest_tag = largest_semi_sharp_tag(mesh);
+  if (r.largest_tag <= 0) return r;
+  // Sdc takes sharpness as a float and lowers it by one per level: the tag as OpenSubdiv holds
+  // it decides how many levels leave it smooth.
+  r.levels_wanted = static_cast<int>(std::ceil(static_cast<float>(r.largest_tag)));
+  // Level 1 has one quad per corner (hole corners too); each further level four per quad.
+  const long long corners = mesh.num_halfedges();
+  const long long surface_corners = static_cast<long long>(mesh.patch_corners().size());
+  const int most = std::min(r.levels_wanted, max_semi_sharp_levels);
+  for (int l = 1; l <= most; ++l) {
+    const long long scale = 1LL << (2 * (l - 1));
+    if (corners * scale > max_semi_sharp_faces) break;
+    r.levels = l;
+    r.faces = surface_corners * scale;
+    r.patches = 4 * r.faces;
+  }
+  return r;
+}
+
+SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
+                                BoundaryInterpolation boundary) {
+  SemiSharpMesh out{mesh, {}};
+  HalfedgeMesh& fine = out.mesh;
+  for (int l = 0; l < levels; ++l) {
+    CatmullClarkRefinement step = catmark_refinement_with_features(fine, boundary);
+    std::vector<std::array<Corner, 4>> quads(static_cast<size_t>(fine.halfedge_capacity()));
+    for (Halfedge h : fine.halfedges()) {
+      Corner q = step.mesh.halfedge(step.corner_quad[h.idx]);
+      for (Corner& k : quads[h.idx]) {
+        k = q;
+        q = step.mesh.next(q);
+      }
+    }
+    fine = std::move(step.mesh);
+    out.quad_corners.push_back(std::move(quads));
+  }
+  // What the levels did not bring down to smooth stays sharp from here on (SemiSharpRefinement:
+  // the limits cut the refinement short).
+  for (Edge e : fine.edges())
+    if (!fine.is_boundary(e) && semi_sharp(fine.sharpness(e)))
+      fine.set_sharpness(e, infinitely_sharp);
+  for (Vertex v : fine.vertices())
+    if (semi_sharp(fine.sharpness(v))) fine.set_sharpness(v, infinitely_sharp);
+  return out;
+}
+
+SemiSharpMesh::Point SemiSharpMesh::point(Corner c, double u, double v) const {
+  // Quad corner k sits at (u, v) = kQuad[k]; its own (a, b) run from there towards the
+  // midpoints of its next and previous sides (CatmullClarkSurface::evaluate_refined_quad).
+  static constexpr double kQuad[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  Point p{c, u, v};
+  for (const std::vector<std::array<Corner, 4>>& level : quad_corners) {
+    const int k = p.u < 0.5 ? (p.v < 0.5 ? 0 : 3) : (p.v < 0.5 ? 1 : 2);
+    const double* p0 = kQuad[k];
+    const double* pn = kQuad[(k + 1) % 4];
+    const double* pp = kQuad[(k + 3) % 4];
+    // (u, v) - p0 = a (pn - p0) / 2 + b (pp - p0) / 2, the columns orthogonal with entries 0, +-1.
+    const double du[2] = {0.5 * (pn[0] - p0[0]), 0.5 * (pn[1] - p0[1])};
+    const double dv[2] = {0.5 * (pp[0] - p0[0]), 0.5 * (pp[1] - p0[1])};
+    const double x = p.u - p0[0], y = p.v - p0[1];
+    const double det = du[0] * dv[1] - du[1] * dv[0];
+    const double a = (x * dv[1] - y * dv[0]) / det;
+    const double b = (du[0] * y - du[1] * x) / det;
+    // (a, b) = A ((u, v) - p0) with A the inverse of the columns du, dv.
+    const double inv[2][2] = {{dv[1] / det, -dv[0] / det}, {-du[1] / det, du[0] / det}};
+    double j[2][2];
+    for (int r = 0; r < 2; ++r)
+      for (int col = 0; col < 2; ++col)
+        j[r][col] = inv[r][0] * p.jacobian[0][col] + inv[r][1] * p.jacobian[1][col];
+    p.corner = level[p.corner.idx][k];
+    p.u = a;
+    p.v = b;
+    std::copy(&j[0][0], &j[0][0] + 4, &p.jacobian[0][0]);
+  }
+  return p;
+}
+
+SurfacePoint SemiSharpMesh::Point::to_input(SurfacePoint p) const {
+  // d/du of the input = sum over r of d(refined r)/du times d/d(refined r).
+  const Vec3 du = jacobian[0][0] * p.du + jacobian[1][0] * p.dv;
+  const Vec3 dv = jacobian[0][1] * p.du + jacobian[1][1] * p.dv;
+  p.du = du;
+  p.dv = dv;
+  return p;
+}
+
+std::vector<Corner> SemiSharpMesh::patches_of(Corner c) const {
+  std::vector<Corner> out{c};
+  for (const std::vector<std::array<Corner, 4>>& level : quad_corners) {
+    std::vector<Corner> next;
+    next.reserve(4 * out.size());
+    for (Corner x : out) next.insert(next.end(), level[x.idx].begin(), level[x.idx].end());
+    out = std::move(next);
+  }
+  return out;
+}
+
+std::vector<Corner> SemiSharpMesh::input_corners() const {
+  std::vector<Corner> of(static_cast<size_t>(quad_corners.empty() ? mesh.halfedge_capacity()
+                                                                  : quad_corners.front().size()));
+  for (size_t h = 0; h < of.size(); ++h) of[h] = Corner(static_cast<int>(h));
+  for (const std::vector<std::array<Corner, 4>>& level : quad_corners) {
+    size_t size = 0;
+    for (const auto& quad : level)
+      for (Corner k : quad)
+        if (k.valid()) size = std::max(size, static_cast<size_t>(k.idx) + 1);
+    std::vector<Corner> below(size);
+    for (size_t h = 0; h < level.size(); ++h)
+      for (Corner k : level[h])
+        if (k.valid()) below[k.idx] = of[h];
+    of = std::move(below);
+  }
+  return of;
+}
 
 SurfaceKgons surface_kgons(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
   SurfaceKgons out{spec.kgons, {}};
@@ -13,9 +170,23 @@ SurfaceKgons surface_kgons(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
 }
 
 BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
-  SurfaceKgons k = surface_kgons(mesh, spec);
-  Surface surface(mesh, spec.method, k.kgons);
-  return {std::move(surface), std::move(k.kgons), std::move(k.tubes)};
+  const SemiSharpRefinement refinement = semi_sharp_refinement(mesh, spec);
+  std::optional<SemiSharpMesh> refined;
+  if (refinement.levels > 0) {
+    if (!spec.kgons.face.empty() || !spec.kgons.edge.empty()) {
+      throw UsageError(fmt::format(
+          "per-element K-gon controls of faces or edges name elements of the input mesh, which "
+          "the refinement for its semi-sharp tags replaces; round the tags instead (sharp_from, "
+          "--sharp-from) to use them ({})",
+          refinement.summary()));
+    }
+    refined.emplace(refine_semi_sharp(mesh, refinement.levels, spec.kgons.boundary));
+  }
+  const HalfedgeMesh& m = refined ? refined->mesh : mesh;
+  SurfaceKgons k = surface_kgons(m, spec);
+  Surface surface(m, spec.method, k.kgons);
+  return {std::move(surface), std::move(k.kgons), std::move(k.tubes), refinement,
+          std::move(refined)};
 }
 
 }  // namespace stitch

@@ -262,9 +262,10 @@ std::string tag_numbers(int line, int a, int b = -1) {
                      b < 0 ? "" : fmt::format(" {}", b));
 }
 
-/// One warning for each kind of element whose sharpness is finite but not zero: stitch's own
-/// methods have no rule for semi-sharp features and round them (KgonOptions::sharp_from), so the
-/// user should know where that happens.
+/// One warning for each kind of element whose sharpness is finite but not zero: the K-gon
+/// methods honour them only by refining the mesh first (build_surface), which multiplies the
+/// patches, or round them when asked (KgonOptions::sharp_from), so the user should know where
+/// they are.
 void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
                      const std::vector<int>& vertex_source, std::vector<std::string>& warnings) {
   auto semi = [](double s) { return s > 0 && s < infinitely_sharp; };
@@ -283,16 +284,16 @@ void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
   // The first few are enough to find them in the file; the count says the rest.
   if (!edges.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite sharpness (semi-sharp): the K-gon construction makes those of sharpness "
-        ">= --sharp-from (default 4) infinitely sharp and the others smooth; the Catmull-Clark "
-        "method honours the values (vertices numbered {}): {}",
+        "{} {} finite sharpness (semi-sharp): the K-gon methods honour them by refining the "
+        "mesh ceil(sharpness) levels before the patches, or with --sharp-from S make those of "
+        "sharpness >= S infinitely sharp and the others smooth (vertices numbered {}): {}",
         edges.size(), edges.size() == 1 ? "edge has" : "edges have", numbered,
         soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite corner sharpness (semi-sharp): the K-gon construction makes those of "
-        "sharpness >= --sharp-from (default 4) corners and ignores the others; the Catmull-Clark "
-        "method honours the values (numbered {}): {}",
+        "{} {} finite corner sharpness (semi-sharp): the K-gon methods honour them by refining "
+        "the mesh ceil(sharpness) levels before the patches, or with --sharp-from S make those "
+        "of sharpness >= S corners and ignore the others (numbered {}): {}",
         vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", numbered,
         soup_places::listed(vertices)));
 }

@@ -1,15 +1,41 @@
 // The one recipe of a smooth surface that every front end asks for: a method, the user's K-gon
-// controls, and the policy for tubes whose fitted K-gons fold (unfold_tubes). `stitch smooth`,
-// Python's stitch.Surface and the modeler build through it, so the same request gives the same
-// surface wherever it is made.
+// controls, how semi-sharp tags are taken, and the policy for tubes whose fitted K-gons fold
+// (unfold_tubes). `stitch smooth`, Python's stitch.Surface and the modeler build through it, so
+// the same request gives the same surface wherever it is made.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
 
 namespace stitch {
+
+/// How mdc and asc take semi-sharp tags (edge or vertex sharpness s with 0 < s <
+/// infinitely_sharp). cc honours them itself, so nothing is done for it.
+enum class SemiSharp {
+  /// As OpenSubdiv means them: the mesh is refined uniformly with Sdc's Catmull-Clark rules
+  /// (creases, corners and boundaries as Far refines them, sharpness going down by one per
+  /// level) for ceil(largest semi-sharp tag) levels, after which every tag is smooth or
+  /// infinitely sharp, and the surface is built on the refined mesh (docs/method.md).
+  refine,
+  /// Today's rounding, no refinement: tags from KgonOptions::sharp_from on are infinitely sharp,
+  /// the others smooth.
+  round,
+};
+
+/// Refinement beyond this many levels is not done: OpenSubdiv's own surface (cc, Bfr's sharp
+/// approximation level) resolves semi-sharp features to 6 levels as well. Tags that would need
+/// more are infinitely sharp from the last level on (the band they would still round is under
+/// 2^-6 of an input face).
+inline constexpr int max_semi_sharp_levels = 6;
+/// Nor beyond this many faces of the refined mesh, hole quads included (each face is four
+/// patches of about 1 kB, and uniform refinement multiplies them by four per level): fewer
+/// levels are taken and the rest rounded the same way.
+inline constexpr long long max_semi_sharp_faces = 250'000;
 
 struct SurfaceSpec {
   Method method = Method::mdc;
@@ -20,21 +46,91 @@ struct SurfaceSpec {
   /// choose K-gon controls that unfold it (unfold_tubes.hpp); off keeps the fitted ones. Nothing
   /// is searched for cc, whose surface does not come from the K-gons.
   bool unfold_tubes = true;
+  /// Semi-sharp tags honoured by refinement (the default) or rounded at kgons.sharp_from.
+  SemiSharp semi_sharp = SemiSharp::refine;
 };
+
+/// What honouring the semi-sharp tags takes: the levels of uniform refinement and the faces
+/// that gives. levels == 0: nothing to refine (no semi-sharp tag, method cc, or rounding asked).
+struct SemiSharpRefinement {
+  int levels = 0;
+  /// ceil(largest semi-sharp tag): more than `levels` when a limit above cut the refinement
+  /// short and the tags left were made infinitely sharp.
+  int levels_wanted = 0;
+  double largest_tag = 0;  ///< the largest semi-sharp sharpness (0: none)
+  long long faces = 0;     ///< faces of the refined mesh outside holes
+  long long patches = 0;   ///< its corners outside holes: the surface's patches
+  /// "semi-sharp tags up to 1.5 honoured by 2 levels of refinement: 96 faces, 384 patches"
+  /// (empty when levels == 0), for the front ends' notes.
+  [[nodiscard]] std::string summary() const;
+};
+/// The refinement build_surface does for this request, found from the tags alone (no work on
+/// the points).
+SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, const SurfaceSpec& spec);
+
+/// A mesh refined for its semi-sharp tags, and where each point of the input's corner patches
+/// went.
+struct SemiSharpMesh {
+  HalfedgeMesh mesh;
+  /// Per level, per half-edge of the mesh above: the corners of that corner's quad in the level
+  /// below (CatmullClarkRefinement::corner_quad), from the one at the corner's vertex on, in
+  /// loop order; invalid for deleted half-edges.
+  std::vector<std::vector<std::array<Corner, 4>>> quad_corners;
+
+  /// The corner of `mesh` and its (u, v) at the point (c, u, v) of an input corner's patch. Each
+  /// level splits a corner's patch into the four corner patches of its quad, as Catmull-Clark's
+  /// parameterization does (exact for cc, the same domain for mdc and asc).
+  struct Point {
+    Corner corner;
+    double u = 0, v = 0;
+    /// d(u, v) of `corner` / d(u, v) of the input's corner: row 0 d/du, row 1 d/dv (a rotation
+    /// by quarter turns times 2^levels).
+    double jacobian[2][2] = {{1, 0}, {0, 1}};
+    /// The derivatives of the input corner's patch from those of the refined one.
+    [[nodiscard]] SurfacePoint to_input(SurfacePoint p) const;
+  };
+  [[nodiscard]] Point point(Corner c, double u, double v) const;
+  /// The corners of `mesh` whose patches tile corner c's patch of the input (4^levels of them).
+  [[nodiscard]] std::vector<Corner> patches_of(Corner c) const;
+  /// By half-edge of `mesh`: the input corner whose patch holds that corner's patch (invalid
+  /// where none: hole corners included, as hole quads follow hole corners).
+  [[nodiscard]] std::vector<Corner> input_corners() const;
+};
+
+/// The mesh refined `levels` times with OpenSubdiv's Catmull-Clark rules and the mesh's
+/// features (topology/catmark_refinement.hpp, each step checked against Far's uniform level),
+/// semi-sharp tags left after the last level made infinitely sharp. Vertices of `mesh` keep
+/// their numbers; faces and edges are new. Throws stitch::Error where OpenSubdiv cannot refine
+/// the mesh (a vertex where boundary loops meet).
+SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
+                                BoundaryInterpolation boundary);
 
 /// The K-gon options a request's surface is built with.
 struct SurfaceKgons {
   KgonOptions kgons;                 ///< spec.kgons and the controls chosen for folding tubes
   std::vector<TubeUnfolding> tubes;  ///< what unfold_tubes found, for the front end to report
 };
+/// For `mesh` as it is: no refinement (the modeler and IncrementalSurface, which round
+/// semi-sharp tags, and build_surface on its refined mesh).
 SurfaceKgons surface_kgons(const HalfedgeMesh& mesh, const SurfaceSpec& spec);
 
 struct BuiltSurface {
   Surface surface;
-  KgonOptions kgons;  ///< what `surface` was built with
-  std::vector<TubeUnfolding> tubes;
+  KgonOptions kgons;                 ///< what `surface` was built with
+  std::vector<TubeUnfolding> tubes;  ///< numbered in mesh(input)
+  SemiSharpRefinement refinement;
+  /// The mesh `surface` is built on when the request refined the input (refinement.levels > 0),
+  /// empty otherwise. The surface's corners, the tubes and the tessellation's layout are this
+  /// mesh's: use mesh(input) wherever the surface goes with a mesh.
+  std::optional<SemiSharpMesh> refined;
+  [[nodiscard]] const HalfedgeMesh& mesh(const HalfedgeMesh& input) const {
+    return refined ? refined->mesh : input;
+  }
 };
-/// The surface of the request: Surface(mesh, spec.method, surface_kgons(mesh, spec).kgons).
+/// The surface of the request: with semi-sharp tags to honour, the mesh refined first
+/// (refine_semi_sharp); then Surface(m, spec.method, surface_kgons(m, spec).kgons) on that mesh
+/// m. Per-element face and edge K-gon controls name elements of the input and are refused
+/// (UsageError) when the mesh is refined; vertex controls keep their vertices.
 BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec);
 
 }  // namespace stitch
