@@ -38,18 +38,20 @@ struct SurfaceHandle {
   [[nodiscard]] const Surface& surface() const { return built->surface; }
   /// The mesh whose corners are the patches: `mesh`, or its refinement for semi-sharp tags.
   [[nodiscard]] const HalfedgeMesh& patch_mesh() const { return built->mesh(*mesh); }
-  /// The texture coordinates that go with patch_mesh() (null: none; not refined yet).
+  /// The texture coordinates that go with patch_mesh() (null: none): refined with it.
   [[nodiscard]] std::shared_ptr<const CornerUvs> patch_uvs() const {
-    return built->refined ? nullptr : uvs;
+    if (!uvs || !built->refined) return uvs;
+    return {built, &built->refined->uvs};
   }
 };
 
 SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method,
                            const KgonKeywords& kgons, bool unfold) {
-  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold,
-                         kgons.sharp_from ? SemiSharp::round : SemiSharp::refine};
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
   const MeshHandle snapshot = mesh;
+  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold,
+                         kgons.sharp_from ? SemiSharp::round : SemiSharp::refine,
+                         snapshot.uvs.get()};
   py::gil_scoped_release release;
   auto built = std::make_shared<const BuiltSurface>(build_surface(*snapshot.mesh, spec));
   return {snapshot.mesh, snapshot.uvs, std::move(built)};
@@ -246,17 +248,13 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
     py::gil_scoped_release release;
     std::unique_ptr<UvSurface> uvs;
     if (s.patch_uvs() && !none && writes_uvs(format, spec)) {
-      uvs = std::make_unique<UvSurface>(s.patch_mesh(), *s.uvs, mode, s.built->kgons);
+      uvs = std::make_unique<UvSurface>(s.patch_mesh(), *s.patch_uvs(), mode, s.built->kgons);
       warnings = uvs->warnings();
       spec.uvs = uvs.get();
     }
     report = write_surface(path, s.patch_mesh(), s.surface(), spec);
   }
-  if (s.uvs && !s.patch_uvs() && !none)
-    warnings.push_back(
-        "the mesh's texture coordinates are not written: they are not refined with the mesh for "
-        "its semi-sharp tags yet (sharp_from= rounds the tags and keeps them)");
-  else if (asked && report.texcoords == 0)
+  if (asked && report.texcoords == 0)
     warnings.push_back(
         s.uvs ? fmt::format("uv='{}': no texture coordinates were written to '{}': {} has no "
                             "place for them {}(see stitch.output_formats())",
@@ -279,16 +277,18 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
 /// mesh's UVs, as the writers evaluate them (the OBJ writer's `vt` lines, in the same order).
 py::array_t<double> texcoords(const SurfaceHandle& s, int resolution,
                               const std::optional<std::string>& uv, py::handle other) {
-  if (s.built->refined)
+  // Refined for semi-sharp tags, the mesh's own coordinates were refined with it; other ones
+  // would have to be refined again.
+  if (s.built->refined && !other.is_none())
     throw py::value_error(
-        "texcoords: the texture coordinates are not refined with the mesh for its semi-sharp "
-        "tags yet; sharp_from= rounds the tags instead");
+        "texcoords: uvs= cannot be given for a surface refined for semi-sharp tags (its "
+        "patches are refined_mesh's corners); sharp_from= rounds the tags instead");
   const std::shared_ptr<const CornerUvs> given =
-      other.is_none() ? s.uvs : corner_uvs(*s.mesh, other);
+      other.is_none() ? s.patch_uvs() : corner_uvs(*s.mesh, other);
   if (!given)
     throw py::value_error(
         "texcoords: the mesh has no texture coordinates (has_uvs); give them with uvs=");
-  check_tessellation_size(*s.mesh, resolution);
+  check_tessellation_size(s.patch_mesh(), resolution);
   const UvMode mode = uv ? parse_uv_mode(*uv) : uv_mode_table().front().value;
   const std::vector<Corner>& corners = s.surface().corners();
   const auto per = static_cast<py::ssize_t>(resolution + 1) * (resolution + 1);
@@ -298,7 +298,7 @@ py::array_t<double> texcoords(const SurfaceHandle& s, int resolution,
   std::vector<std::string> warnings;
   {
     py::gil_scoped_release release;
-    const UvSurface uvs(*s.mesh, *given, mode, s.built->kgons);
+    const UvSurface uvs(s.patch_mesh(), *given, mode, s.built->kgons);
     warnings = uvs.warnings();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, corners.size(), 64), [&](const auto& r) {
       for (size_t k = r.begin(); k < r.end(); ++k)

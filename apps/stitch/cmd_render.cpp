@@ -84,23 +84,20 @@ void run_render(const RenderArgs& a) {
   }
   stage.begin(fmt::format("building and tessellating the {} surface", a.method));
   const Method method = parse_method(a.method);
-  const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
+  const BuiltSurface built =
+      build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet, &report.corner_uvs);
   const Surface& surface = built.surface;
   const KgonOptions& kgons = built.kgons;
-  if (checker && built.refined) {
-    throw UsageError(fmt::format(
-        "--mode {}: the texture coordinates are not refined with the mesh for its semi-sharp "
-        "tags yet; --sharp-from rounds the tags instead",
-        to_string(ShadingMode::checker)));
-  }
   // Refined for semi-sharp tags, the surface (and the control mesh drawn over it) is the
-  // refined mesh's.
-  SceneGeometry scene = build_scene(built.mesh(mesh), surface, a.resolution, style.overlays);
+  // refined mesh's, and so are the texture coordinates.
+  const HalfedgeMesh& surface_mesh = built.mesh(mesh);
+  const CornerUvs& corner_uvs = built.refined ? built.refined->uvs : report.corner_uvs;
+  SceneGeometry scene = build_scene(surface_mesh, surface, a.resolution, style.overlays);
   stage.end();
   if (checker) {
     stage.begin("evaluating the texture coordinates");
-    const UvSurface uvs(mesh, report.corner_uvs, uv_mode, kgons);
-    add_texcoords(scene, mesh, report.corner_uvs, uvs);
+    const UvSurface uvs(surface_mesh, corner_uvs, uv_mode, kgons);
+    add_texcoords(scene, surface_mesh, corner_uvs, uvs);
     stage.end();
     for (const std::string& w : uvs.warnings())
       fmt::print(stderr, "stitch: warning: {}: {}\n", a.in.path, w);

@@ -145,18 +145,15 @@ void run_smooth(SmoothArgs& a) {
   const Method method = parse_method(a.method);
   stage.begin(fmt::format("building the {} surface ({} patches)", a.method,
                           static_cast<int>(mesh.patch_corners().size())));
-  const BuiltSurface built = build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet);
+  const BuiltSurface built =
+      build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet, &report.corner_uvs);
   stage.end();
-  // Refined for semi-sharp tags, the surface's patches are the refined mesh's corners.
+  // Refined for semi-sharp tags, the surface's patches are the refined mesh's corners, and the
+  // texture coordinates were refined with it.
   const HalfedgeMesh& surface_mesh = built.mesh(mesh);
   if (built.refined) {
     check_memory(a, surface_mesh, format);
-    if (!report.corner_uvs.empty() && a.uv != "none") {
-      warn(a.out,
-           "the input's texture coordinates are not written: they are not refined with the mesh "
-           "for its semi-sharp tags yet (--sharp-from rounds the tags and keeps them)");
-      report.corner_uvs = {};
-    }
+    report.corner_uvs = built.refined->uvs;
   }
   const std::unique_ptr<UvSurface> uvs =
       uv_surface(a, surface_mesh, built.kgons, report, format, stage);

@@ -162,8 +162,10 @@ SurfaceSpec surface_spec(const KgonCliOptions& k, Method method) {
 }
 
 BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
-                               const std::string& where, bool quiet) {
-  BuiltSurface built = build_surface(mesh, surface_spec(k, method));
+                               const std::string& where, bool quiet, const CornerUvs* uvs) {
+  SurfaceSpec spec = surface_spec(k, method);
+  spec.uvs = uvs;
+  BuiltSurface built = build_surface(mesh, spec);
   report_unfolded_tubes(built.tubes, built.mesh(mesh), where, quiet);
   if (!quiet && built.refinement.levels > 0)
     fmt::print(stderr, "stitch: note: {}: {}; --sharp-from rounds them instead\n", where,

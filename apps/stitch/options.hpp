@@ -70,8 +70,10 @@ SurfaceSpec surface_spec(const KgonCliOptions& k, Method method);
 /// build_surface of that request, each tube unfold_tubes found reported on stderr against
 /// `where` (the input): what was chosen as a note (not under `quiet`), a tube that still folds
 /// as a warning.
+/// `uvs` (optional): the mesh's texture coordinates, refined with it (SurfaceSpec::uvs).
 BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh, Method method,
-                               const std::string& where, bool quiet = false);
+                               const std::string& where, bool quiet = false,
+                               const CornerUvs* uvs = nullptr);
 /// Reports unfold_tubes' results for `mesh` on stderr, as surface_kgon_options does.
 void report_unfolded_tubes(const std::vector<TubeUnfolding>& tubes, const HalfedgeMesh& mesh,
                            const std::string& where, bool quiet);

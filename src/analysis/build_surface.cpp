@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 #include "topology/catmark_refinement.hpp"
 
@@ -25,6 +27,95 @@ double largest_semi_sharp_tag(const HalfedgeMesh& mesh) {
   for (Vertex v : mesh.vertices())
     if (semi_sharp(mesh.sharpness(v))) largest = std::max(largest, mesh.sharpness(v));
   return largest;
+}
+
+/// One level of linear face-varying refinement (SemiSharpMesh::uvs). Corners that share
+/// coordinates keep sharing them: a vertex corner keeps its index, an edge corner's is found by
+/// the edge and its ends' indices, a face corner's by the face.
+CornerUvs refine_uvs(const HalfedgeMesh& coarse, const CatmullClarkRefinement& step,
+                     const CornerUvs& uvs) {
+  CornerUvs out;
+  out.uv = uvs.uv;
+  out.index.assign(static_cast<size_t>(step.mesh.halfedge_capacity()), -1);
+  std::map<std::array<int, 3>, int> edge_points;
+  std::vector<int> face_point(static_cast<size_t>(coarse.face_capacity()), -1);
+  auto edge_point = [&](Edge e, int a, int b) {
+    const std::array<int, 3> key{e.idx, std::min(a, b), std::max(a, b)};
+    const auto [it, added] = edge_points.try_emplace(key, static_cast<int>(out.uv.size()));
+    if (added) out.uv.push_back(0.5 * (uvs.uv[a] + uvs.uv[b]));
+    return it->second;
+  };
+  for (Face f : coarse.faces()) {
+    const std::vector<Halfedge> loop = coarse.face_loop(f);
+    // Holes, and faces --fill-holes added, have no coordinates: their quads have none either.
+    if (std::any_of(loop.begin(), loop.end(), [&](Halfedge h) { return uvs.index[h.idx] < 0; }))
+      continue;
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (Halfedge h : loop) centre += uvs.uv[uvs.index[h.idx]];
+    face_point[f.idx] = static_cast<int>(out.uv.size());
+    out.uv.push_back(centre / static_cast<double>(loop.size()));
+    for (Halfedge h : loop) {
+      const int here = uvs.index[h.idx];
+      Halfedge q = step.mesh.halfedge(step.corner_quad[h.idx]);
+      // The quad runs from the vertex point to the edge point of edge(h), the face point and the
+      // edge point of edge(prev(h)).
+      const int indices[4] = {
+          here, edge_point(HalfedgeMesh::edge(h), here, uvs.index[coarse.next(h).idx]),
+          face_point[f.idx],
+          edge_point(HalfedgeMesh::edge(coarse.prev(h)), here, uvs.index[coarse.prev(h).idx])};
+      for (int index : indices) {
+        out.index[q.idx] = index;
+        q = step.mesh.next(q);
+      }
+    }
+  }
+  return out;
+}
+
+/// Refinement splits a hole into hole quads, which share edges and vertices; the surface's
+/// stages take one hole face per boundary loop (halfedge_mesh.hpp). The mesh is built again from
+/// its faces outside holes, as a file of it would read back: the same faces in the same order,
+/// the input's vertices first with their numbers (only the points inside holes are dropped),
+/// the tags; the corner maps and coordinates follow.
+void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
+  const HalfedgeMesh& old = refined.mesh;
+  bool holes = false;
+  for (Face f : old.faces()) holes = holes || old.is_hole(f);
+  if (!holes) return;
+  BuildOptions options;
+  options.allow_two_gons = true;
+  options.repair = false;
+  BuildReport report;
+  HalfedgeMesh mesh = build_mesh(to_polygon_soup(old), options, &report);
+  // Soup vertices are the live ones in index order; the build keeps the used ones in order.
+  std::vector<int> soup_vertex;
+  for (Vertex v : old.vertices()) soup_vertex.push_back(v.idx);
+  std::vector<int> new_vertex(static_cast<size_t>(old.vertex_capacity()), -1);
+  for (size_t v = 0; v < report.vertex_source.size(); ++v)
+    new_vertex[static_cast<size_t>(soup_vertex[report.vertex_source[v]])] = static_cast<int>(v);
+  // Surface face i of the old mesh is face i of the new one (to_polygon_soup's order, boundary
+  // loops' hole faces after them); its corners are matched by their vertices.
+  std::vector<Corner> new_corner(static_cast<size_t>(old.halfedge_capacity()));
+  int i = 0;
+  for (Face f : old.surface_faces()) {
+    const std::vector<Halfedge> before = old.face_loop(f);
+    const std::vector<Halfedge> after = mesh.face_loop(Face(i++));
+    for (Halfedge h : before)
+      for (Halfedge k : after)
+        if (mesh.origin(k).idx == new_vertex[old.origin(h).idx] &&
+            mesh.origin(mesh.next(k)).idx == new_vertex[old.origin(old.next(h)).idx])
+          new_corner[h.idx] = k;
+  }
+  for (std::array<Corner, 4>& quad : refined.quad_corners.back())
+    for (Corner& c : quad)
+      if (c.valid()) c = new_corner[c.idx];
+  if (!refined.uvs.empty()) {
+    std::vector<int> index(static_cast<size_t>(mesh.halfedge_capacity()), -1);
+    for (size_t h = 0; h < new_corner.size(); ++h)
+      if (new_corner[h].valid()) index[new_corner[h].idx] = refined.uvs.index[h];
+    refined.uvs.index = std::move(index);
+  }
+  refined.mesh = std::move(mesh);
 }
 
 }  // namespace
@@ -64,11 +155,12 @@ SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, const Surfac
 }
 
 SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
-                                BoundaryInterpolation boundary) {
-  SemiSharpMesh out{mesh, {}};
+                                BoundaryInterpolation boundary, const CornerUvs* uvs) {
+  SemiSharpMesh out{mesh, {}, uvs ? *uvs : CornerUvs{}};
   HalfedgeMesh& fine = out.mesh;
   for (int l = 0; l < levels; ++l) {
     CatmullClarkRefinement step = catmark_refinement_with_features(fine, boundary);
+    if (!out.uvs.empty()) out.uvs = refine_uvs(fine, step, out.uvs);
     std::vector<std::array<Corner, 4>> quads(static_cast<size_t>(fine.halfedge_capacity()));
     for (Halfedge h : fine.halfedges()) {
       Corner q = step.mesh.halfedge(step.corner_quad[h.idx]);
@@ -87,6 +179,7 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
       fine.set_sharpness(e, infinitely_sharp);
   for (Vertex v : fine.vertices())
     if (semi_sharp(fine.sharpness(v))) fine.set_sharpness(v, infinitely_sharp);
+  if (levels > 0) one_hole_per_boundary_loop(out);
   return out;
 }
 
@@ -180,7 +273,9 @@ BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
           "--sharp-from) to use them ({})",
           refinement.summary()));
     }
-    refined.emplace(refine_semi_sharp(mesh, refinement.levels, spec.kgons.boundary));
+    refined.emplace(
+        refine_semi_sharp(mesh, refinement.levels, spec.kgons.boundary,
+                          spec.uvs != nullptr && !spec.uvs->empty() ? spec.uvs : nullptr));
   }
   const HalfedgeMesh& m = refined ? refined->mesh : mesh;
   SurfaceKgons k = surface_kgons(m, spec);

@@ -11,6 +11,7 @@
 
 #include "stitch/analysis/unfold_tubes.hpp"
 #include "stitch/eval/surface.hpp"
+#include "stitch/mesh/build.hpp"
 
 namespace stitch {
 
@@ -48,6 +49,9 @@ struct SurfaceSpec {
   bool unfold_tubes = true;
   /// Semi-sharp tags honoured by refinement (the default) or rounded at kgons.sharp_from.
   SemiSharp semi_sharp = SemiSharp::refine;
+  /// The mesh's texture coordinates, if any (not owned): refined with the mesh
+  /// (SemiSharpMesh::uvs), so that they go with the refined surface.
+  const CornerUvs* uvs = nullptr;
 };
 
 /// What honouring the semi-sharp tags takes: the levels of uniform refinement and the faces
@@ -76,6 +80,11 @@ struct SemiSharpMesh {
   /// below (CatmullClarkRefinement::corner_quad), from the one at the corner's vertex on, in
   /// loop order; invalid for deleted half-edges.
   std::vector<std::vector<std::array<Corner, 4>>> quad_corners;
+  /// The input's texture coordinates on `mesh` when they were given (empty otherwise),
+  /// refined linearly in each face: a new corner takes its vertex's coordinates, the mean of
+  /// its edge's two ends or of its face's corners in that face, so seams stay seams and the
+  /// UV layout is the input's (OpenSubdiv's "linear all" face-varying rule).
+  CornerUvs uvs;
 
   /// The corner of `mesh` and its (u, v) at the point (c, u, v) of an input corner's patch. Each
   /// level splits a corner's patch into the four corner patches of its quad, as Catmull-Clark's
@@ -103,7 +112,7 @@ struct SemiSharpMesh {
 /// their numbers; faces and edges are new. Throws stitch::Error where OpenSubdiv cannot refine
 /// the mesh (a vertex where boundary loops meet).
 SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
-                                BoundaryInterpolation boundary);
+                                BoundaryInterpolation boundary, const CornerUvs* uvs = nullptr);
 
 /// The K-gon options a request's surface is built with.
 struct SurfaceKgons {
