@@ -17,6 +17,7 @@
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/topology/remesh.hpp"
 #include "test_support.hpp"
 
 namespace stitch {
@@ -176,12 +177,40 @@ TEST(SemiSharp, RefinesCeilOfTheLargestTagLevels) {
     EXPECT_FALSE(build_surface(mesh, {Method::mdc, {}, true, SemiSharp::round}).refined);
     EXPECT_FALSE(build_surface(mesh, {Method::cc, {}, true}).refined);
   }
-  // More than max_semi_sharp_levels: cut there, the rest infinitely sharp, and said.
-  const BuiltSurface cut = build_surface(creased_cube(8.5), {Method::mdc, {}, true});
-  EXPECT_EQ(cut.refinement.levels, max_semi_sharp_levels);
-  EXPECT_EQ(cut.refinement.levels_wanted, 9);
-  EXPECT_NE(cut.refinement.summary().find("rounded to infinitely sharp"), std::string::npos)
-      << cut.refinement.summary();
+  // From semi_sharp_refined_below on, taken as infinitely sharp: nothing refined for them,
+  // alone or beside a smaller tag, and the surface is the infinitely sharp one.
+  HalfedgeMesh high = creased_cube(8.5);
+  const BuiltSurface sharp = build_surface(high, {Method::mdc, {}, true});
+  EXPECT_FALSE(sharp.refined);
+  EXPECT_EQ(sharp.refinement.sharpened, 4);
+  const BuiltSurface infinite =
+      build_surface(creased_cube(infinitely_sharp), {Method::mdc, {}, true});
+  for (Corner c : high.patch_corners())
+    ASSERT_EQ(sharp.surface.evaluate(c, 0.3, 0.6).position,
+              infinite.surface.evaluate(c, 0.3, 0.6).position);
+  high.set_sharpness(Vertex(0), 1.0);
+  const BuiltSurface both = build_surface(high, {Method::mdc, {}, true});
+  EXPECT_EQ(both.refinement.levels, 1);
+  EXPECT_NE(both.refinement.summary().find("4 tags of sharpness 6 or more taken as infinitely "
+                                           "sharp"),
+            std::string::npos)
+      << both.refinement.summary();
+  for (Edge e : both.refined->mesh.edges())
+    EXPECT_TRUE(both.refined->mesh.sharpness(e) == 0.0 ||
+                both.refined->mesh.sharpness(e) >= infinitely_sharp);
+  // More faces than max_semi_sharp_faces: cut short, the rest infinitely sharp, and said. The
+  // cube refined 4 times (1536 faces) with one tag of 5.5 would need 6 levels (6.3 million
+  // faces); 3 levels give 98,304.
+  HalfedgeMesh fine = test::cube_mesh();
+  for (int i = 0; i < 4; ++i) fine = catmull_clark_step(fine);
+  fine.set_sharpness(Edge(0), 5.5);
+  const SemiSharpRefinement cut = semi_sharp_refinement(fine, {Method::mdc, {}, true});
+  EXPECT_EQ(cut.levels_wanted, 6);
+  EXPECT_EQ(cut.levels, 3);
+  EXPECT_EQ(cut.faces, 1536 * 64);
+  EXPECT_NE(cut.summary().find("of the 6 they need: the rest rounded to infinitely sharp"),
+            std::string::npos)
+      << cut.summary();
 }
 
 // The point map follows the refinement's parameterization: on cc, whose limit surface does not
@@ -381,9 +410,13 @@ TEST_P(SemiSharpShapes, CreaseResponseFollowsOpenSubdiv) {
   // catmark_gregory_test3 26.6% (0.9), catmark_val2_interior 182% (valence-2 vertices, whose
   // K-gons have no plane). On catmark_edgeonly and loop_triangle_edgeonly the tags do not move
   // cc's surface at all (semi-sharp corners on straight boundaries), so there is no ratio.
+  // catmark_helmet (7) and catmark_hole_test2 (7.5) are not refined: tags from
+  // semi_sharp_refined_below on are taken as infinitely sharp, which measures 32.5% and 32.3%
+  // (refining them 5 and 6 levels, at 4^5 and 4^6 patches per corner, measured 5.8% and 1.7%).
   const std::string& name = GetParam();
   const bool missed = name == "catmark_cube_corner0" || name == "catmark_gregory_test3" ||
-                      name == "catmark_val2_interior";
+                      name == "catmark_val2_interior" || name == "catmark_helmet" ||
+                      name == "catmark_hole_test2";
   if (r.cc > 1e-9 * mesh_size(mesh) && !missed) {
     EXPECT_LE(r.error_same_levels, 0.25);
   }

@@ -132,10 +132,11 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                  "round semi-sharp crease and corner tags (0 < sharpness < 10) for {} and {}: "
                  "those of at least this sharpness infinitely sharp, smaller ones smooth ({:g} "
                  "was the default before tags were honoured). Without it they are honoured as "
-                 "OpenSubdiv means them, by refining the mesh ceil(sharpness) levels (at most "
-                 "{}) before the patches (docs/method.md); {} honours them itself",
+                 "OpenSubdiv means them, by refining the mesh ceil(sharpness) levels before the "
+                 "patches, those from {:g} on taken as infinitely sharp (docs/method.md); {} "
+                 "honours them itself",
                  to_string(Method::mdc), to_string(Method::asc), KgonOptions{}.sharp_from,
-                 max_semi_sharp_levels, to_string(Method::cc)))
+                 semi_sharp_refined_below, to_string(Method::cc)))
           ->check(finite_range(0, 10));
 }
 

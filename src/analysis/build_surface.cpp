@@ -16,17 +16,20 @@ namespace {
 bool semi_sharp(double s) {
   return s > 0 && s < infinitely_sharp;
 }
+bool refined_for(double s) {
+  return s > 0 && s < semi_sharp_refined_below;
+}
 
-/// The largest semi-sharp tag OpenSubdiv would refine with: boundary edges are infinitely sharp
-/// whatever they carry.
-double largest_semi_sharp_tag(const HalfedgeMesh& mesh) {
-  double largest = 0;
+/// The largest tag to refine for, and how many are taken as infinitely sharp instead. Boundary
+/// edges are infinitely sharp whatever they carry.
+void count_tags(const HalfedgeMesh& mesh, SemiSharpRefinement& r) {
+  auto count = [&r](double s) {
+    if (refined_for(s)) r.largest_tag = std::max(r.largest_tag, s);
+    if (semi_sharp(s) && !refined_for(s)) ++r.sharpened;
+  };
   for (Edge e : mesh.edges())
-    if (!mesh.is_boundary(e) && semi_sharp(mesh.sharpness(e)))
-      largest = std::max(largest, mesh.sharpness(e));
-  for (Vertex v : mesh.vertices())
-    if (semi_sharp(mesh.sharpness(v))) largest = std::max(largest, mesh.sharpness(v));
-  return largest;
+    if (!mesh.is_boundary(e)) count(mesh.sharpness(e));
+  for (Vertex v : mesh.vertices()) count(mesh.sharpness(v));
 }
 
 /// One level of linear face-varying refinement (SemiSharpMesh::uvs). Corners that share
@@ -122,20 +125,23 @@ void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
 
 std::string SemiSharpRefinement::summary() const {
   if (levels == 0) return "";
-  std::string cut;
+  std::string cut, sharp;
   if (levels < levels_wanted)
     cut =
         fmt::format(" (of the {} they need: the rest rounded to infinitely sharp)", levels_wanted);
+  if (sharpened > 0)
+    sharp = fmt::format("; {} tag{} of sharpness {:g} or more taken as infinitely sharp", sharpened,
+                        sharpened == 1 ? "" : "s", semi_sharp_refined_below);
   return fmt::format(
       "semi-sharp tags up to {:g} honoured by {} level{} of uniform refinement{}: {} faces, {} "
-      "patches",
-      largest_tag, levels, levels == 1 ? "" : "s", cut, faces, patches);
+      "patches{}",
+      largest_tag, levels, levels == 1 ? "" : "s", cut, faces, patches, sharp);
 }
 
 SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
   SemiSharpRefinement r;
   if (spec.method == Method::cc || spec.semi_sharp != SemiSharp::refine) return r;
-  r.largest_tag = largest_semi_sharp_tag(mesh);
+  count_tags(mesh, r);
   if (r.largest_tag <= 0) return r;
   // Sdc takes sharpness as a float and lowers it by one per level: the tag as OpenSubdiv holds
   // it decides how many levels leave it smooth.
@@ -158,6 +164,14 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
                                 BoundaryInterpolation boundary, const CornerUvs* uvs) {
   SemiSharpMesh out{mesh, {}, uvs ? *uvs : CornerUvs{}};
   HalfedgeMesh& fine = out.mesh;
+  // Sharp enough to be taken as infinitely sharp (semi_sharp_refined_below): so from the start,
+  // or the levels would bring them down.
+  for (Edge e : fine.edges())
+    if (!fine.is_boundary(e) && semi_sharp(fine.sharpness(e)) && !refined_for(fine.sharpness(e)))
+      fine.set_sharpness(e, infinitely_sharp);
+  for (Vertex v : fine.vertices())
+    if (semi_sharp(fine.sharpness(v)) && !refined_for(fine.sharpness(v)))
+      fine.set_sharpness(v, infinitely_sharp);
   for (int l = 0; l < levels; ++l) {
     CatmullClarkRefinement step = catmark_refinement_with_features(fine, boundary);
     if (!out.uvs.empty()) out.uvs = refine_uvs(fine, step, out.uvs);
@@ -278,7 +292,13 @@ BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
                           spec.uvs != nullptr && !spec.uvs->empty() ? spec.uvs : nullptr));
   }
   const HalfedgeMesh& m = refined ? refined->mesh : mesh;
-  SurfaceKgons k = surface_kgons(m, spec);
+  SurfaceSpec on_m = spec;
+  // Honoured tags are gone from the refined mesh; those left are the ones taken as infinitely
+  // sharp (from semi_sharp_refined_below on), on the refined mesh or, with nothing to refine,
+  // on the input.
+  if (spec.semi_sharp == SemiSharp::refine && spec.method != Method::cc)
+    on_m.kgons.sharp_from = semi_sharp_refined_below;
+  SurfaceKgons k = surface_kgons(m, on_m);
   Surface surface(m, spec.method, k.kgons);
   return {std::move(surface), std::move(k.kgons), std::move(k.tubes), refinement,
           std::move(refined)};

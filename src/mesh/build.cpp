@@ -285,15 +285,17 @@ void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
   if (!edges.empty())
     warnings.push_back(fmt::format(
         "{} {} finite sharpness (semi-sharp): the K-gon methods honour them by refining the "
-        "mesh ceil(sharpness) levels before the patches, or with --sharp-from S make those of "
-        "sharpness >= S infinitely sharp and the others smooth (vertices numbered {}): {}",
+        "mesh ceil(sharpness) levels before the patches (those of 6 or more: infinitely sharp), "
+        "or with --sharp-from S make those of sharpness >= S infinitely sharp and the others "
+        "smooth (vertices numbered {}): {}",
         edges.size(), edges.size() == 1 ? "edge has" : "edges have", numbered,
         soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
         "{} {} finite corner sharpness (semi-sharp): the K-gon methods honour them by refining "
-        "the mesh ceil(sharpness) levels before the patches, or with --sharp-from S make those "
-        "of sharpness >= S corners and ignore the others (numbered {}): {}",
+        "the mesh ceil(sharpness) levels before the patches (those of 6 or more: corners), or "
+        "with --sharp-from S make those of sharpness >= S corners and ignore the others "
+        "(numbered {}): {}",
         vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", numbered,
         soup_places::listed(vertices)));
 }

@@ -20,7 +20,9 @@ Session::Session(HalfedgeMesh mesh) {
 }
 
 void Session::load(DocumentState state) {
-  // build_surface's recipe, so that a document shows the surface `stitch smooth` writes for it.
+  // build_surface's recipe, so that a document shows the surface `stitch smooth` writes for it,
+  // but for semi-sharp tags: the live surface keeps one patch per corner of the edited mesh and
+  // rounds them (KgonOptions::sharp_from), where build_surface refines (open_file says so).
   const auto start = std::chrono::steady_clock::now();
   SurfaceKgons chosen =
       surface_kgons(state.mesh, {display.method, std::move(state.kgons), unfold_folding_tubes});
@@ -208,6 +210,13 @@ std::string open_file(Session& session, const std::string& path) {
   for (const std::string& line : report.repair.summary()) message += "; repaired: " + line;
   if (const auto& u = session.tube_unfoldings(); !u.empty())
     message += "; " + describe_unfoldings(session.document.mesh(), u);
+  const SemiSharpRefinement refinement =
+      semi_sharp_refinement(session.document.mesh(), {session.display.method, {}, true});
+  if (refinement.levels > 0)
+    message += fmt::format(
+        "; semi-sharp tags rounded here (infinitely sharp from {:g}); stitch smooth honours them: "
+        "{}",
+        session.document.kgon_options().sharp_from, refinement.summary());
   return message;
 }
 

@@ -281,5 +281,17 @@ TEST(ModelerSession, OpeningAMeshSaysWhatReadingRepaired) {
             "opened " + test::example_path("cube.obj"));
 }
 
+TEST(ModelerSession, OpeningSemiSharpTagsSaysTheyAreRoundedHere) {
+  // The live surface rounds them; stitch smooth refines (build_surface): the message says both.
+  Session s;
+  const std::string message = open_file(s, test::opensubdiv_shape("catmark_cube_creases0.obj"));
+  EXPECT_NE(message.find("semi-sharp tags rounded here (infinitely sharp from 4)"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("2 levels of uniform refinement: 96 faces, 384 patches"),
+            std::string::npos)
+      << message;
+}
+
 }  // namespace
 }  // namespace stitch::modeler

@@ -42,6 +42,25 @@ def test_semi_sharp_tags_warn_as_a_file_does():
         stitch.Mesh(CUBE_VERTICES, CUBE_FACES, creases=[[0, 1]], crease_sharpness=[2.5])
 
 
+def test_semi_sharp_tags_are_honoured_by_refinement_unless_sharp_from_rounds_them(tmp_path):
+    """Sharpness 2.5 on one edge: three levels of refinement, 4^3 patches per corner, the
+    patches numbered on refined_mesh; sharp_from= rounds as before (one patch per corner)."""
+    with pytest.warns(UserWarning, match="semi-sharp"):
+        mesh = stitch.Mesh(CUBE_VERTICES, CUBE_FACES, creases=[[0, 1]], crease_sharpness=[2.5])
+    surface = stitch.Surface(mesh)
+    assert surface.refinement["levels"] == 3
+    assert surface.refinement["patches"] == 24 * 4**3 == len(surface.patches)
+    refined = surface.refined_mesh
+    assert refined is not None and len(refined.faces) == 6 * 4**3
+    assert surface.tessellate(1, welded=False).patches.max() < 4 * len(refined.faces)
+    name = surface.corner_name(int(surface.patches[-1]))
+    assert surface.patch(name) == surface.patches[-1]
+    assert surface.export(str(tmp_path / "s.bez.json"))["faces"] >= 24 * 4**3
+    rounded = stitch.Surface(mesh, sharp_from=4)
+    assert rounded.refinement["levels"] == 0 and rounded.refined_mesh is None
+    assert len(rounded.patches) == 24
+
+
 def test_tags_are_checked_like_a_files():
     with pytest.raises(stitch.InputError, match="names edge"):
         stitch.Mesh(CUBE_VERTICES, CUBE_FACES, creases=[[0, 6]])  # a diagonal, not an edge

@@ -28,14 +28,17 @@ enum class SemiSharp {
   round,
 };
 
-/// Refinement beyond this many levels is not done: OpenSubdiv's own surface (cc, Bfr's sharp
-/// approximation level) resolves semi-sharp features to 6 levels as well. Tags that would need
-/// more are infinitely sharp from the last level on (the band they would still round is under
-/// 2^-6 of an input face).
+/// Tags from this sharpness on are taken as infinitely sharp, not refined: OpenSubdiv rounds
+/// them over less than 2^-6 of the faces beside them, and its own surface (cc, Bfr's sharp
+/// approximation level) resolves semi-sharp features to 6 levels too. So at most 6 levels are
+/// refined, and OpenSubdiv's chess pieces (creases of 6 and 7.9) keep their sharp rims without
+/// 4^6 patches per corner.
+inline constexpr double semi_sharp_refined_below = 6.0;
 inline constexpr int max_semi_sharp_levels = 6;
-/// Nor beyond this many faces of the refined mesh, hole quads included (each face is four
-/// patches of about 1 kB, and uniform refinement multiplies them by four per level): fewer
-/// levels are taken and the rest rounded the same way.
+/// Refinement stops before the refined mesh has more faces than this, hole quads included (each
+/// face is four patches of about 1 kB, and uniform refinement multiplies them by four per
+/// level): tags left semi-sharp after the last level are made infinitely sharp (the band they
+/// would still round is under 2^-levels of an input face).
 inline constexpr long long max_semi_sharp_faces = 250'000;
 
 struct SurfaceSpec {
@@ -47,7 +50,8 @@ struct SurfaceSpec {
   /// choose K-gon controls that unfold it (unfold_tubes.hpp); off keeps the fitted ones. Nothing
   /// is searched for cc, whose surface does not come from the K-gons.
   bool unfold_tubes = true;
-  /// Semi-sharp tags honoured by refinement (the default) or rounded at kgons.sharp_from.
+  /// Semi-sharp tags honoured by refinement (the default; kgons.sharp_from is then
+  /// semi_sharp_refined_below) or rounded at kgons.sharp_from.
   SemiSharp semi_sharp = SemiSharp::refine;
   /// The mesh's texture coordinates, if any (not owned): refined with the mesh
   /// (SemiSharpMesh::uvs), so that they go with the refined surface.
@@ -61,11 +65,13 @@ struct SemiSharpRefinement {
   /// ceil(largest semi-sharp tag): more than `levels` when a limit above cut the refinement
   /// short and the tags left were made infinitely sharp.
   int levels_wanted = 0;
-  double largest_tag = 0;  ///< the largest semi-sharp sharpness (0: none)
-  long long faces = 0;     ///< faces of the refined mesh outside holes
-  long long patches = 0;   ///< its corners outside holes: the surface's patches
-  /// "semi-sharp tags up to 1.5 honoured by 2 levels of refinement: 96 faces, 384 patches"
-  /// (empty when levels == 0), for the front ends' notes.
+  double largest_tag = 0;  ///< the largest tag refined for (0: none)
+  /// Tags from semi_sharp_refined_below up to infinitely sharp, taken as infinitely sharp.
+  int sharpened = 0;
+  long long faces = 0;    ///< faces of the refined mesh outside holes
+  long long patches = 0;  ///< its corners outside holes: the surface's patches
+  /// "semi-sharp tags up to 1.5 honoured by 2 levels of uniform refinement: 96 faces, 384
+  /// patches" (empty when levels == 0), for the front ends' notes.
   [[nodiscard]] std::string summary() const;
 };
 /// The refinement build_surface does for this request, found from the tags alone (no work on
@@ -108,7 +114,8 @@ struct SemiSharpMesh {
 
 /// The mesh refined `levels` times with OpenSubdiv's Catmull-Clark rules and the mesh's
 /// features (topology/catmark_refinement.hpp, each step checked against Far's uniform level),
-/// semi-sharp tags left after the last level made infinitely sharp. Vertices of `mesh` keep
+/// tags from semi_sharp_refined_below on made infinitely sharp first, semi-sharp tags left after
+/// the last level made infinitely sharp, one hole face per boundary loop. Vertices of `mesh` keep
 /// their numbers; faces and edges are new. Throws stitch::Error where OpenSubdiv cannot refine
 /// the mesh (a vertex where boundary loops meet).
 SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
