@@ -101,7 +101,7 @@ class StitchSettings(bpy.types.PropertyGroup):
         description="Sharpness (crease c is 10 c^2, as Blender gives OpenSubdiv) from which mdc "
         "and asc make an edge or corner infinitely sharp, smaller ones smooth; cc honours every "
         "value (--sharp-from)",
-        default=4.0,  # stitch smooth's
+        default=4.0,  # --sharp-from's before semi-sharp tags were honoured by refinement
         soft_min=0.0,
         soft_max=10.0,
         update=settings_changed,

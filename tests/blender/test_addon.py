@@ -135,8 +135,10 @@ def cli_smooth(me, name, *options, extension=".obj"):
     source = WORK / f"{name}.obj"
     write_obj(source, me)
     out = WORK / f"{name}-cli{extension}"
+    # The add-on always passes its Sharp From (default 4), as --sharp-from: semi-sharp creases
+    # are rounded there, where stitch smooth without it refines the mesh for them.
     result = subprocess.run(
-        [CLI, "smooth", str(source), "-o", str(out), *options],
+        [CLI, "smooth", str(source), "-o", str(out), "--sharp-from", "4", *options],
         capture_output=True,
         text=True,
         check=True,
