@@ -79,10 +79,11 @@ void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh, const OutputFor
         a.in.path, static_cast<int>(mesh.patch_corners().size()), a.spec.resolution,
         a.spec.unwelded ? " unwelded" : "", need / 1e9, limit / 1e9,
         a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
-        format.memory == MemoryModel::streamed && !a.spec.unwelded
+        output_streams(format, a.spec)
             ? "the mesh itself is too large for this machine"
-            : fmt::format("write a welded {} (streamed) or lower --resolution",
-                          output_formats().front().extensions[0])));
+            : fmt::format("write a welded {} (streamed){} or lower --resolution",
+                          output_formats().front().extensions[0],
+                          a.spec.uvs ? ", or without texture coordinates (--uv none)" : "")));
 }
 
 /// The UVs to write, or null with a warning saying why the input's are not written.
@@ -149,6 +150,7 @@ void run_smooth(SmoothArgs& a) {
   stage.end();
   const std::unique_ptr<UvSurface> uvs = uv_surface(a, mesh, built.kgons, report, format, stage);
   a.spec.uvs = uvs.get();
+  if (uvs) check_memory(a, mesh, format);  // glTF holds a tessellation with UVs whole
   a.spec.progress = [&stage](double done) { stage.fraction(done); };
   a.spec.note = [&stage](const std::string& line) { stage.note(line); };
   if (!a.patches.empty()) {

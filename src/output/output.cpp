@@ -234,7 +234,7 @@ std::span<const OutputFormat> output_formats() {
        false,
        true,
        false,
-       M::positions,
+       M::streamed,
        "triangles with facet normals",
        write_mesh},
       {"glTF 2.0 binary",
@@ -246,8 +246,9 @@ std::span<const OutputFormat> output_formats() {
        false,
        false,
        false,
-       M::whole,
-       "positions, normals, TEXCOORD_0 (vertices split at seams)",
+       M::streamed,
+       "positions, normals, TEXCOORD_0 (vertices split at seams, for which the tessellation is "
+       "held whole)",
        write_mesh},
       {"glTF 2.0",
        {".gltf", ""},
@@ -258,8 +259,8 @@ std::span<const OutputFormat> output_formats() {
        false,
        false,
        false,
-       M::whole,
-       "as .glb, with the buffer in a .bin beside it",
+       M::streamed,
+       "as .glb, with the buffer in a .bin beside it (no 4 GB limit)",
        write_mesh},
       {"Bezier JSON",
        {".bez.json", ".json"},
@@ -344,8 +345,6 @@ std::string_view describe(MemoryModel memory) {
   switch (memory) {
     case MemoryModel::streamed:
       return "written block by block as it is evaluated: memory does not grow with the resolution";
-    case MemoryModel::positions:
-      return "holds every position of the tessellation (the format repeats them per triangle)";
     case MemoryModel::whole:
       return "holds the whole tessellation and the file's buffer";
     case MemoryModel::patch_set:
@@ -365,9 +364,9 @@ void set_tolerance(OutputSpec& spec, const OutputFormat& format, double toleranc
   if (resolution_given)
     throw UsageError("a tolerance and a resolution exclude each other for a mesh output");
   if (!format.adaptive)
-    throw UsageError(fmt::format(
-        "a tolerance asks a mesh output for adaptive triangles, which {} does not take",
-        format.name));
+    throw UsageError(
+        fmt::format("a tolerance asks a mesh output for adaptive triangles, which {} does not take",
+                    format.name));
   spec.adaptive_tolerance = tolerance;
 }
 
@@ -423,6 +422,12 @@ OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
   return format.write(path, mesh, surface, spec, format);
 }
 
+bool output_streams(const OutputFormat& format, const OutputSpec& spec) {
+  return format.kind == OutputKind::tessellated && format.memory == MemoryModel::streamed &&
+         !spec.unwelded && spec.adaptive_tolerance == 0 &&
+         !(spec.uvs && format.mesh_format && is_gltf(*format.mesh_format));
+}
+
 std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat& format,
                                     const OutputSpec& spec) {
   // Measured peak resident size of `stitch smooth` to binary PLY divided by the corners: 806
@@ -432,16 +437,16 @@ std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat
   const std::int64_t n = spec.resolution;
   std::int64_t bytes = kBytesPerCorner * corners;
   if (format.kind == OutputKind::exact || spec.adaptive_tolerance > 0) return bytes;
+  if (output_streams(format, spec)) return bytes;
   if (spec.unwelded)  // positions, normals, uv, patch and level per sample, 4 ints per quad
     return bytes + corners * ((n + 1) * (n + 1) * 72 + n * n * 16);
-  switch (format.memory) {
-    case MemoryModel::whole:  // the tessellation, then its buffer: positions, normals, quads
-      return bytes + corners * n * n * (48 + 16) * 2;
-    case MemoryModel::positions:  // every position (about n^2 per corner)
-      return bytes + corners * n * n * 24;
-    default:
-      return bytes;
-  }
+  if (format.mesh_format && is_gltf(*format.mesh_format) && spec.uvs)
+    // Split at seams over the whole tessellation (about n^2 vertices and quads per corner): the
+    // welded one (48 bytes per vertex and a 4-byte chain head, 16 per quad), every patch's grid
+    // of UVs (16 bytes per sample), the split copies (48 + 16 + 4 per vertex, 16 per quad).
+    return bytes + corners * ((n + 1) * (n + 1) * 16 + n * n * (68 + 84));
+  // The tessellation, then its buffer.
+  return bytes + corners * n * n * (48 + 16) * 2;
 }
 
 }  // namespace stitch
