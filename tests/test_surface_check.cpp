@@ -229,7 +229,7 @@ TEST(SurfaceCheck, TheSurfacesCheckIsTheCheckOfItsTessellation) {
     for (const Method method : {Method::mdc, Method::cc})
       for (const int n : {3, 8}) {
         const Surface surface(mesh, method);
-        const TessellatedMesh t = tessellate(mesh, surface, {n, true, false});
+        const TessellatedMesh t = tessellate(mesh, surface, {.resolution = n});
         const SurfaceCheckReport whole = check_surface(triangulate(t));
         const SurfaceCheckReport streamed = check_surface(mesh, surface, n);
         const std::string what = name + " " + to_string(method) + " " + std::to_string(n);
@@ -282,7 +282,7 @@ TEST(SurfaceCheck, CreasesAndConePointsAreNoFolds) {
     // A file has no crease tags: there the rule is the fold angle, which faces meeting at a right
     // angle (the cubes' creases) pass and sharper creases (the tetrahedron's) do not.
     const SurfaceCheckReport file =
-        check_surface(triangulate(tessellate(mesh, surface, {8, true, false})));
+        check_surface(triangulate(tessellate(mesh, surface, {.resolution = 8})));
     EXPECT_EQ(file.folds > 0, name == "creased tetrahedron") << name << "\n" << file.folds;
   }
 }

@@ -109,7 +109,9 @@ TEST(SmoothSurfaceFile, TessellationDoesNotDependOnThreads) {
   const Surface surface(mesh, Method::mdc);
   const auto run = [&](int threads, bool welded) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return tessellate(mesh, surface, {7, welded});
+    return tessellate(
+        mesh, surface,
+        {.resolution = 7, .welded = welded, .uv = true, .patch = true, .level = true});
   };
   for (const bool welded : {true, false}) {
     const TessellatedMesh a = run(1, welded), b = run(2, welded);

@@ -59,7 +59,8 @@ OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const
     return r;
   }
   if (spec.unwelded) {
-    const TessellatedMesh samples = tessellate(mesh, surface, {spec.resolution, false});
+    const TessellatedMesh samples = tessellate(
+        mesh, surface, {.resolution = spec.resolution, .welded = false, .uv = true, .patch = true});
     write_surface_samples_ply(path, samples, spec.uvs);
     r.vertices = samples.num_vertices();
     r.faces = static_cast<std::int64_t>(samples.quads.size());

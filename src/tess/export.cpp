@@ -69,7 +69,7 @@ struct TexturedMesh {
 
 TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                            const UvSurface& uvs) {
-  const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true, false});
+  const TessellatedMesh whole = tessellate(mesh, surface, {.resolution = resolution});
   const std::vector<Eigen::Vector2d> grid = grid_uvs(uvs, surface.corners(), resolution);
   const int n = resolution;
   const auto stored = [](const Eigen::Vector2d& uv) {  // as the glTF writer stores it
