@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -52,11 +53,16 @@ struct PatchSamples {
 
 }  // namespace
 
-SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
-                                 const SurfaceCheckOptions& options) {
+namespace {
+
+/// check_surface of the patches of `corners`, evaluated by samplers from `sampler`, with the
+/// creases and cone points of `kgons`.
+SurfaceCheckReport check_patches_surface(const HalfedgeMesh& mesh,
+                                         const std::vector<Corner>& corners, const KgonSet& kgons,
+                                         const std::function<PatchSampler()>& sampler,
+                                         int resolution, const SurfaceCheckOptions& options) {
   limits::check_resolution(resolution, "check_surface: the resolution");
   const int n = resolution, side = n + 1;
-  const std::vector<Corner>& corners = surface.corners();
   const TessellationLayout layout(mesh, corners, n, true);
   const std::int64_t triangles = 2 * layout.num_quads();
   if (triangles > std::numeric_limits<int>::max())
@@ -67,7 +73,7 @@ SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surfac
   if (corners.empty()) return {};
   const auto samples = static_cast<size_t>(side) * side;
   tbb::enumerable_thread_specific<PatchSamples> grids([&] {
-    return PatchSamples{PatchSampler(surface, n),
+    return PatchSamples{sampler(),
                         std::vector<Vec3>(samples),
                         {},
                         std::vector<std::int64_t>(samples),
@@ -128,7 +134,6 @@ SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surfac
     }
   starts.push_back(in_tile.size());
 
-  const KgonSet& kgons = surface.bezier().kgons;
   const std::vector<std::uint8_t> cone = cone_points(mesh, kgons);
   const auto gather = [&](size_t t, detail::TileTriangles& out) {
     PatchSamples& g = grids.local();
@@ -186,6 +191,26 @@ SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surfac
     }
   };
   return detail::check_tiles(keys, grid, gather, static_cast<int>(triangles), options);
+}
+
+}  // namespace
+
+SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                                 const SurfaceCheckOptions& options) {
+  return check_patches_surface(
+      mesh, surface.corners(), surface.bezier().kgons,
+      [&] { return PatchSampler(surface, resolution); }, resolution, options);
+}
+
+SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, Method method, const KgonSet& kgons,
+                                 const std::vector<ControlNet>& nets, int resolution,
+                                 const SurfaceCheckOptions& options) {
+  if (method == Method::cc)
+    throw UsageError("check_surface: the Catmull-Clark surface has no nets of its own");
+  const std::vector<Corner> corners = mesh.patch_corners();
+  return check_patches_surface(
+      mesh, corners, kgons, [&] { return PatchSampler(method, nets, resolution); }, resolution,
+      options);
 }
 
 }  // namespace stitch

@@ -86,6 +86,11 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOpt
 /// their angle. Throws InputError when the surface is not finite.
 SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                                  const SurfaceCheckOptions& options = {});
+/// The same for Bézier patches kept apart from a Surface (an IncrementalSurface's K-gons and nets,
+/// nets indexed by corner) under `method`, mdc or asc; the patches are mesh.patch_corners()'s.
+SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, Method method, const KgonSet& kgons,
+                                 const std::vector<ControlNet>& nets, int resolution,
+                                 const SurfaceCheckOptions& options = {});
 /// The same checks for the part of a surface near an edit (local_check.hpp): only triangles
 /// with focus[t] != 0 count as degenerate, and only pairs with at least one such triangle count
 /// as folded, crossing or inconsistent. The others are there to be met. Throws
