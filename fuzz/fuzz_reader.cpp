@@ -1,7 +1,8 @@
 // libFuzzer target for one mesh reader (STITCH_FUZZ_READ: read_obj, read_off, read_ply, read_gltf
-// or read_stl) on arbitrary bytes, then build_mesh. A file must either be refused with a MeshError
-// or give a mesh that is valid and, written out, reads back as the same surface. Anything else (a
-// crash, a sanitizer report, another exception, a broken invariant) is a finding.
+// or read_stl) on arbitrary bytes, then build_mesh with the repair (as stitch reads files) and
+// without it (--strict). A file must either be refused with a MeshError or give a mesh that is
+// valid and, written out, reads back as the same surface. Anything else (a crash, a sanitizer
+// report, another exception, a broken invariant) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -23,10 +24,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const MeshError&) {
     return 0;
   }
-  for (const bool fill_holes : {false, true}) {
+  for (const int variant : {0, 1, 2}) {
     BuildOptions options;
     options.allow_two_gons = true;
-    options.fill_holes = fill_holes;
+    options.fill_holes = variant == 1;
+    options.repair = variant < 2;
     HalfedgeMesh mesh;
     try {
       mesh = build_mesh(soup, options);

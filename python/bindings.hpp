@@ -46,6 +46,13 @@ Corner corner_arg(const HalfedgeMesh& mesh, py::handle corner);
 /// 0 when the vertex is on the face once).
 Corner corner_of(const HalfedgeMesh& mesh, int face, int vertex, int occurrence);
 
+/// Texture coordinates given per corner, an (c, 2) array with one row per corner of the faces in
+/// the order of Mesh.faces, as the mesh's CornerUvs: corners at one vertex with equal coordinates
+/// share one, so the UV layout is connected there, and a vertex whose corners differ lies on a
+/// seam (the rule Blender and OpenSubdiv's face-varying data follow). Raises ValueError for a
+/// wrong shape, StitchError for a value that is not finite.
+std::shared_ptr<const CornerUvs> corner_uvs(const HalfedgeMesh& mesh, py::handle uvs);
+
 /// Raises ValueError unless 1 <= resolution <= limits::max_resolution and a tessellation of
 /// `mesh` at that resolution, (resolution + 1)^2 samples per half-edge, can number its samples
 /// with int.

@@ -2,8 +2,13 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
 #include <string_view>
+#include <tuple>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -18,9 +23,10 @@ namespace stitch::python {
 
 namespace {
 
-BuildOptions build_options(bool fill_holes) {
+BuildOptions build_options(bool fill_holes, bool repair) {
   BuildOptions o;
   o.fill_holes = fill_holes;
+  o.repair = repair;
   // The topology operators make 2-sided faces and edited meshes must read back, as in the CLI.
   o.allow_two_gons = true;
   return o;
@@ -31,29 +37,82 @@ void warn(const std::vector<std::string>& messages) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
 }
 
-MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes) {
+/// Crease tags on the edges joining the vertex pairs of `creases`, and corner tags on the
+/// vertices whose `corner_sharpness` is not 0: the soup's tags, as a file's `t crease` and
+/// `t corner` lines give them, so build_mesh checks them the same way.
+void add_tags(py::handle creases, py::handle crease_sharpness, py::handle corner_sharpness,
+              PolygonSoup& soup) {
+  if (!creases.is_none()) {
+    const auto pairs = checked_array<std::int64_t>(creases, "iu", "creases");
+    if (pairs.ndim() != 2 || pairs.shape(1) != 2)
+      throw py::value_error("creases must have shape (k, 2): the two vertices of each edge");
+    const py::ssize_t k = pairs.shape(0);
+    std::vector<double> sharpness(static_cast<size_t>(k), infinitely_sharp);
+    if (!crease_sharpness.is_none()) {
+      const auto s = checked_array<double>(crease_sharpness, "fiu", "crease_sharpness");
+      if (s.ndim() != 1 || s.shape(0) != k)
+        throw py::value_error(
+            fmt::format("crease_sharpness must have shape ({},), one value per crease", k));
+      std::copy(s.data(), s.data() + k, sharpness.begin());
+    }
+    const auto p = pairs.unchecked<2>();
+    for (py::ssize_t i = 0; i < k; ++i) {
+      // Range checks of the vertices themselves are build_mesh's, as for a file's tags.
+      for (int end = 0; end < 2; ++end)
+        if (p(i, end) < std::numeric_limits<int>::min() ||
+            p(i, end) > std::numeric_limits<int>::max())
+          throw py::value_error(fmt::format("creases[{}][{}] is out of range", i, end));
+      soup.creases.push_back({static_cast<int>(p(i, 0)), static_cast<int>(p(i, 1)),
+                              sharpness[static_cast<size_t>(i)], 0});
+    }
+  } else if (!crease_sharpness.is_none()) {
+    throw py::value_error("crease_sharpness needs creases: the edges it applies to");
+  }
+  if (!corner_sharpness.is_none()) {
+    const auto s = checked_array<double>(corner_sharpness, "fiu", "corner_sharpness");
+    if (s.ndim() != 1 || static_cast<size_t>(s.shape(0)) != soup.positions.size())
+      throw py::value_error(fmt::format(
+          "corner_sharpness must have shape ({},), one value per vertex", soup.positions.size()));
+    for (py::ssize_t v = 0; v < s.shape(0); ++v)
+      if (s.data()[v] != 0) soup.corners.push_back({static_cast<int>(v), s.data()[v], 0});
+  }
+}
+
+MeshHandle build(py::handle vertices, py::handle faces, bool fill_holes, bool repair,
+                 py::handle uvs, py::handle creases, py::handle crease_sharpness,
+                 py::handle corner_sharpness) {
   PolygonSoup soup;
   soup.positions = to_positions(vertices);
   soup.faces = to_faces(faces);
+  add_tags(creases, crease_sharpness, corner_sharpness, soup);
   BuildReport report;
   std::shared_ptr<const HalfedgeMesh> mesh;
   {
     py::gil_scoped_release release;
-    mesh =
-        std::make_shared<const HalfedgeMesh>(build_mesh(soup, build_options(fill_holes), &report));
+    mesh = std::make_shared<const HalfedgeMesh>(
+        build_mesh(soup, build_options(fill_holes, repair), &report));
+  }
+  std::shared_ptr<const CornerUvs> texture;
+  if (!uvs.is_none()) {
+    // As read(): a UV surface needs every patch's corners to have UVs, which filled holes lack.
+    if (fill_holes && report.filled_holes > 0)
+      report.warnings.emplace_back(
+          "its texture coordinates are not kept: the faces fill_holes added have none");
+    else
+      texture = corner_uvs(*mesh, uvs);
   }
   warn(report.warnings);
-  return {std::move(mesh)};
+  return {std::move(mesh), std::move(texture)};
 }
 
-MeshHandle read(const std::string& path, bool fill_holes) {
+MeshHandle read(const std::string& path, bool fill_holes, bool repair) {
   BuildReport report;
   std::vector<std::string> warnings;
   std::shared_ptr<const HalfedgeMesh> mesh;
   {
     py::gil_scoped_release release;
     mesh = std::make_shared<const HalfedgeMesh>(
-        read_mesh(path, build_options(fill_holes), &report, &warnings));
+        read_mesh(path, build_options(fill_holes, repair), &report, &warnings));
   }
   warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
   std::shared_ptr<const CornerUvs> uvs;
@@ -146,6 +205,34 @@ py::dict topology(std::shared_ptr<const HalfedgeMesh> mesh) {
 
 }  // namespace
 
+std::shared_ptr<const CornerUvs> corner_uvs(const HalfedgeMesh& mesh, py::handle uvs) {
+  const auto a = checked_array<double>(uvs, "fiu", "uvs");
+  py::ssize_t corners = 0;
+  for (Face f : mesh.surface_faces()) corners += static_cast<py::ssize_t>(mesh.degree(f));
+  if (a.ndim() != 2 || a.shape(1) != 2 || a.shape(0) != corners)
+    throw py::value_error(
+        fmt::format("uvs must have shape ({}, 2), one row per corner of the faces in order, not {}",
+                    corners, py::str(py::handle(a).attr("shape")).cast<std::string>()));
+  const auto r = a.unchecked<2>();
+  auto out = std::make_shared<CornerUvs>();
+  out->index.assign(mesh.halfedge_capacity(), -1);
+  std::map<std::tuple<int, double, double>, int> joined;
+  py::ssize_t row = 0;
+  // The faces and their corners in the order of `faces`, as build_mesh gives a file's UVs.
+  for (Face f : mesh.surface_faces())
+    for (Halfedge h : mesh.face_loop(f)) {
+      const Eigen::Vector2d uv(r(row, 0), r(row, 1));
+      if (!uv.allFinite())
+        throw InputError(fmt::format("uvs[{}] = ({}, {}) is not finite", row, uv.x(), uv.y()));
+      const auto [at, added] = joined.try_emplace({mesh.origin(h).idx, uv.x(), uv.y()},
+                                                  static_cast<int>(out->uv.size()));
+      if (added) out->uv.push_back(uv);
+      out->index[h.idx] = at->second;
+      ++row;
+    }
+  return out;
+}
+
 Corner corner_arg(const HalfedgeMesh& mesh, py::handle corner) {
   if (py::isinstance<py::str>(corner)) return parse_corner(mesh, corner.cast<std::string>());
   int h = -1;
@@ -165,20 +252,35 @@ Corner corner_of(const HalfedgeMesh& mesh, int face, int vertex, int occurrence)
 void bind_mesh(py::module_& m) {
   const std::string read_doc = fmt::format(
       "Reads {} with every check of the command line; warnings (dropped unused vertices, "
-      "filled holes) become Python UserWarnings. The texture coordinates of the file, if any, "
+      "filled holes, each repair) become Python UserWarnings. repair (default True) fixes "
+      "what the mesh's building would refuse where it can, as `stitch smooth` does; "
+      "repair=False refuses it, as `--strict` does. The texture coordinates of the file, if any, "
       "stay with the mesh (has_uvs) until it is edited, for Surface.export(uv=...).",
       extension_list(kMeshReadExtensions));
   const std::string write_doc = fmt::format("Writes the mesh by extension ({}), atomically.",
                                             extension_list(kMeshWriteExtensions));
   py::class_<MeshHandle>(m, "Mesh",
-                         "A closed, oriented, manifold polygon mesh (faces of any degree). "
+                         "An oriented, manifold polygon mesh, closed or with boundaries (faces "
+                         "of any degree). "
                          "Immutable except through edit().")
       .def(py::init(&build), py::arg("vertices"), py::arg("faces"), py::kw_only(),
-           py::arg("fill_holes") = false,
+           py::arg("fill_holes") = false, py::arg("repair") = true, py::arg("uvs") = py::none(),
+           py::arg("creases") = py::none(), py::arg("crease_sharpness") = py::none(),
+           py::arg("corner_sharpness") = py::none(),
            "Builds a mesh from an (n, 3) array of positions and faces given as 0-based vertex "
-           "index lists of any length or an (m, k) integer array. Raises StitchError (a "
-           "ValueError) for anything but a closed oriented manifold; messages number vertices "
-           "and faces from 1, as files do. fill_holes closes each boundary loop with one face.")
+           "index lists of any length or an (m, k) integer array. repair (default True) fixes "
+           "what it can, each change named in a UserWarning: faces flipped to one orientation, "
+           "non-manifold edges and vertices split (the split edges infinitely sharp), repeated "
+           "vertices, degenerate and duplicate faces dropped; repair=False refuses them. Raises "
+           "StitchError (a ValueError) for what cannot be repaired (a non-orientable piece, "
+           "indices out of range); messages number vertices and faces from 1, as files do. "
+           "fill_holes closes each boundary loop with one face. "
+           "uvs: texture coordinates, an (c, 2) array with one row per corner of the faces in "
+           "order (corners at one vertex with equal coordinates are joined, others make a "
+           "seam), kept as has_uvs says. creases: a (k, 2) integer array of the vertex pairs of "
+           "crease edges, with crease_sharpness (k,) (default 10, infinitely sharp); "
+           "corner_sharpness: (n,) sharpness of every vertex (0: none). The tags of a file's "
+           "`t crease` and `t corner` lines, checked the same way.")
       .def_property_readonly("num_vertices",
                              [](const MeshHandle& h) { return h.mesh->num_vertices(); })
       .def_property_readonly("num_edges", [](const MeshHandle& h) { return h.mesh->num_edges(); })
@@ -282,7 +384,7 @@ void bind_mesh(py::module_& m) {
       });
 
   m.def("read", &read, py::arg("path"), py::kw_only(), py::arg("fill_holes") = false,
-        read_doc.c_str());
+        py::arg("repair") = true, read_doc.c_str());
   m.def(
       "primitive",
       [](const std::string& name, const py::args& params) {

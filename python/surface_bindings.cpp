@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -265,6 +266,37 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
   return d;
 }
 
+/// The texture coordinates of every sample of tessellate(resolution, welded=False), from the
+/// mesh's UVs, as the writers evaluate them (the OBJ writer's `vt` lines, in the same order).
+py::array_t<double> texcoords(const SurfaceHandle& s, int resolution,
+                              const std::optional<std::string>& uv, py::handle other) {
+  const std::shared_ptr<const CornerUvs> given =
+      other.is_none() ? s.uvs : corner_uvs(*s.mesh, other);
+  if (!given)
+    throw py::value_error(
+        "texcoords: the mesh has no texture coordinates (has_uvs); give them with uvs=");
+  check_tessellation_size(*s.mesh, resolution);
+  const UvMode mode = uv ? parse_uv_mode(*uv) : uv_mode_table().front().value;
+  const std::vector<Corner>& corners = s.surface().corners();
+  const auto per = static_cast<py::ssize_t>(resolution + 1) * (resolution + 1);
+  py::array_t<double> out({per * static_cast<py::ssize_t>(corners.size()), py::ssize_t{2}});
+  static_assert(sizeof(Eigen::Vector2d) == 2 * sizeof(double));
+  auto* rows = reinterpret_cast<Eigen::Vector2d*>(out.mutable_data());
+  std::vector<std::string> warnings;
+  {
+    py::gil_scoped_release release;
+    const UvSurface uvs(*s.mesh, *given, mode, s.built->kgons);
+    warnings = uvs.warnings();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, corners.size(), 64), [&](const auto& r) {
+      for (size_t k = r.begin(); k < r.end(); ++k)
+        uvs.evaluate_grid(corners[k], resolution, rows + static_cast<py::ssize_t>(k) * per);
+    });
+  }
+  for (const std::string& w : warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  return out;
+}
+
 /// The table of output formats, one dict per row.
 py::list output_format_rows() {
   py::list rows;
@@ -282,7 +314,7 @@ py::list output_format_rows() {
     d["name"] = py::str(f.name.data(), f.name.size());
     d["extensions"] = extensions;
     d["kind"] = f.kind == OutputKind::exact ? "exact" : "tessellated";
-    d["normals"] = f.normals;
+    d["normals"] = f.mesh_format && has_vertex_normals(*f.mesh_format);
     d["uvs"] = f.uvs;
     d["unwelded"] = f.unwelded;
     d["adaptive"] = f.adaptive;
@@ -294,6 +326,41 @@ py::list output_format_rows() {
     rows.append(std::move(d));
   }
   return rows;
+}
+
+template <class T>
+py::list rows_of(ChoiceTable<T> table) {
+  py::list rows;
+  for (const Choice<T>& c : table) {
+    py::dict d;
+    d["name"] = py::str(c.name.data(), c.name.size());
+    d["help"] = py::str(c.help.data(), c.help.size());
+    rows.append(std::move(d));
+  }
+  return rows;
+}
+
+/// Every table of names a keyword argument takes, keyed by the keyword, so front ends (the
+/// Blender add-on's menus) list what the library accepts without writing the names again.
+py::dict choice_rows() {
+  py::dict d;
+  d["method"] = rows_of(method_table());
+  d["kgon_construction"] = rows_of(kgon_construction_table());
+  d["boundary"] = rows_of(boundary_table());
+  d["uv"] = rows_of(uv_mode_table());
+  d["faces"] = rows_of(face_packing_table());
+  py::list units;  // STEP's and IGES's, "a, b, c" (none in a build without OpenCASCADE)
+  const std::string names = output_units();
+  for (size_t at = 0; at < names.size();) {
+    const size_t end = std::min(names.find(", ", at), names.size());
+    py::dict u;
+    u["name"] = names.substr(at, end - at);
+    u["help"] = "";
+    units.append(std::move(u));
+    at = end + 2;
+  }
+  d["units"] = units;
+  return d;
 }
 
 const TessellatedMesh& samples(const py::object& self) {
@@ -405,6 +472,12 @@ void bind_surface(py::module_& m) {
       PatchSetOptions{}.tolerance, PatchSetOptions{}.angle_tolerance_deg,
       choice_help(face_packing_table()), output_units());
 
+  const std::string texcoords_doc = fmt::format(
+      "The texture coordinates of the mesh's UVs (has_uvs) at every sample of "
+      "tessellate(resolution, welded=False), an (n, 2) float64 array in the order of its "
+      "vertices, as the writers evaluate them. uv: {} (default: the first). uvs: another UV "
+      "map of the same mesh instead, per corner as stitch.Mesh(uvs=...) takes it.",
+      choice_help(uv_mode_table()));
   py::class_<SurfaceHandle>(m, "Surface", "The smooth surface of a mesh: one patch per corner.")
       .def(py::init([](const MeshHandle& mesh, const std::string& method, double kgon_scale,
                        double kgon_rotate, bool regularize, const std::string& construction,
@@ -472,6 +545,19 @@ void bind_surface(py::module_& m) {
           "The patch number of vertex `vertex` on face `face`, both 0-based like mesh.faces "
           "and mesh.vertices (the name is f\"{vertex + 1}@{face + 1}\"). occurrence: k >= 1 "
           "picks the k-th appearance of a vertex that appears on the face more than once.")
+      .def_property_readonly(
+          "patch_faces",
+          [](const SurfaceHandle& s) {
+            const std::vector<Corner>& corners = s.surface().corners();
+            py::array_t<int> faces(static_cast<py::ssize_t>(corners.size()));
+            for (size_t k = 0; k < corners.size(); ++k)
+              faces.mutable_data()[k] = s.mesh->face(corners[k]).idx;
+            return faces;
+          },
+          "(p,) int32: the 0-based face (as in mesh.faces) of each patch, in the order of "
+          "patches: where each patch, and each quad of a tessellation, comes from")
+      .def("texcoords", &texcoords, py::arg("resolution") = kDefaultResolution, py::kw_only(),
+           py::arg("uv") = py::none(), py::arg("uvs") = py::none(), texcoords_doc.c_str())
       .def(
           "tessellate",
           [](const SurfaceHandle& s, int resolution, bool welded, bool uvs, bool patches,
@@ -482,9 +568,13 @@ void bind_surface(py::module_& m) {
           py::arg("resolution") = kDefaultResolution, py::arg("welded") = true, py::kw_only(),
           py::arg("uvs") = false, py::arg("patches") = false, py::arg("levels") = false,
           "Samples every patch on a (resolution + 1)^2 grid. welded: one watertight mesh "
-          "sharing samples on patch boundaries; otherwise every patch's own grid. The result has "
-          "vertices, normals and quads; uvs, patches, levels: also each sample's (u, v) in its "
-          "patch, its patch, its level (empty arrays unless asked: 24 bytes per vertex together).")
+          "sharing samples on patch boundaries; otherwise every patch's own grid. Both list "
+          "the same quads in the same order, patch after patch in the order of patches "
+          "(resolution^2 each), so quad q's corners are samples quads[q] of either: the "
+          "unwelded ones carry what differs between patches at a shared sample (normals across "
+          "a crease, texcoords across a seam). The result has vertices, normals and quads; uvs, "
+          "patches, levels: also each sample's (u, v) in its patch, its patch, its level (empty "
+          "arrays unless asked: 24 bytes per vertex together).")
       .def("evaluate", &evaluate, py::arg("patches"), py::arg("u"), py::arg("v"),
            "Exact evaluation at (patch, u, v), vectorised: the arguments broadcast against each "
            "other. A patch is its number (see patches) or its name \"V@F\"; an array of names "
@@ -519,6 +609,10 @@ void bind_surface(py::module_& m) {
                            s.surface().corners().size());
       });
 
+  m.def("choices", &choice_rows,
+        "The names the keyword arguments take, from the library's tables (as `stitch smooth "
+        "--help` lists them): a dict from the keyword (method, kgon_construction, boundary, uv, "
+        "faces, units) to a list of dicts of name and help, the default first.");
   m.def("output_formats", &output_format_rows,
         "The formats Surface.export writes, one dict per row of the library's table (as "
         "`stitch smooth --help` lists them): name, extensions, kind ('tessellated' or 'exact'), "

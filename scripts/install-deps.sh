@@ -13,6 +13,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest
   xvfb xauth gnuplot-nox
   freecad-python3
+  blender
 )
 packages+=("$@")
 missing=()

@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "edge_samples.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
@@ -73,28 +74,12 @@ HalfedgeMesh icosahedron_piece(bool cap) {
   });
 }
 
-/// Samples along every boundary half-edge curve: (rounded position of the vertex the half starts
-/// at, of the edge's other end, k) -> point at t = k / 8 from the vertex to the edge's midpoint.
-/// A patch holds such a half on its side 0 (edge(c)) or side 3 (edge(prev(c))).
+/// Samples along every boundary half-edge curve (edge_samples; a boundary has one patch there).
 std::map<std::array<long long, 7>, Vec3> boundary_samples(const HalfedgeMesh& m, const Surface& s) {
   std::map<std::array<long long, 7>, Vec3> out;
-  auto key = [](const Vec3& p) {
-    return std::array<long long, 3>{std::llround(p.x() * 1e6), std::llround(p.y() * 1e6),
-                                    std::llround(p.z() * 1e6)};
-  };
-  for (Corner c : s.corners()) {
-    const auto a = key(m.position(m.origin(c)));
-    if (m.is_boundary(HalfedgeMesh::edge(c))) {
-      const auto b = key(m.position(m.target(c)));
-      for (int k = 0; k <= 8; ++k)
-        out[{a[0], a[1], a[2], b[0], b[1], b[2], k}] = s.evaluate(c, k / 8.0, 0).position;
-    }
-    if (m.is_boundary(HalfedgeMesh::edge(m.prev(c)))) {
-      const auto b = key(m.position(m.origin(m.prev(c))));
-      for (int k = 0; k <= 8; ++k)
-        out[{a[0], a[1], a[2], b[0], b[1], b[2], k}] = s.evaluate(c, 0, k / 8.0).position;
-    }
-  }
+  for (const auto& [key, points] :
+       test::edge_samples(m, s, [&](Edge e) { return m.is_boundary(e); }))
+    out[key] = points.front().first;
   return out;
 }
 
@@ -369,13 +354,16 @@ TEST(Boundaries, WeldedOutputHasTheInputsBoundaryLoops) {
   }
 }
 
-TEST(Boundaries, TwoBoundaryLoopsMeetingAtAVertexAreRefused) {
+TEST(Boundaries, TwoBoundaryLoopsMeetingAtAVertexAreSplitOrRefusedWhenStrict) {
   // Two triangles sharing only a vertex: the vertex is where two boundary loops... one loop
-  // touches itself there, which is not a manifold.
+  // touches itself there, which is not a manifold. The repair splits it (test_repair.cpp).
   PolygonSoup soup;
   soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
   soup.faces = {{0, 1, 2}, {0, 3, 4}};
-  EXPECT_THROW(build_mesh(soup), Error);
+  BuildOptions strict;
+  strict.repair = false;
+  EXPECT_THROW(build_mesh(soup, strict), Error);
+  EXPECT_EQ(topology_stats(build_mesh(soup)).boundary_loops, 2);
 }
 
 class OpenSubdivFeatureShapes : public ::testing::TestWithParam<std::string> {};

@@ -19,6 +19,7 @@ using stitch::Error;
 using stitch::HalfedgeMesh;
 using stitch::PolygonSoup;
 using stitch::test::error_of;
+using stitch::test::signed_volume;
 
 std::string example(const std::string& name) {
   return stitch::test::example_path(name + ".obj");
@@ -26,22 +27,6 @@ std::string example(const std::string& name) {
 std::string opensubdiv_mesh(const std::string& name) {
   return stitch::test::opensubdiv_shape(name + ".obj");
 }
-/// Signed volume enclosed by the faces, each fanned from its first corner: positive when the
-/// faces are oriented outward.
-double signed_volume(const HalfedgeMesh& mesh) {
-  double volume = 0;
-  for (stitch::Face f : mesh.faces()) {
-    const auto loop = mesh.face_loop(f);
-    const stitch::Vec3& a = mesh.position(mesh.origin(loop[0]));
-    for (size_t i = 1; i + 1 < loop.size(); ++i)
-      volume +=
-          a.dot(
-              mesh.position(mesh.origin(loop[i])).cross(mesh.position(mesh.origin(loop[i + 1])))) /
-          6;
-  }
-  return volume;
-}
-
 struct ExpectedExample {
   std::string name;
   int vertices, edges, faces, components, genus;
@@ -191,11 +176,15 @@ void PrintTo(const NonManifoldShape& x, std::ostream* os) {
 
 class NonManifoldShapes : public ::testing::TestWithParam<NonManifoldShape> {};
 
-TEST_P(NonManifoldShapes, RefusedWithAMessageNamingTheProblem) {
+TEST_P(NonManifoldShapes, RepairedByDefaultRefusedWhenStrictNamingTheProblem) {
   const std::string path = opensubdiv_mesh(GetParam().name);
   for (bool fill_holes : {false, true}) {
     BuildOptions options;
     options.fill_holes = fill_holes;
+    BuildReport report;
+    EXPECT_TRUE(stitch::find_problems(stitch::read_mesh(path, options, &report)).empty());
+    EXPECT_FALSE(report.repair.empty());
+    options.repair = false;
     const std::string message = error_of([&] { (void)stitch::read_mesh(path, options); });
     EXPECT_NE(message.find(GetParam().problem), std::string::npos) << message;
     EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -206,21 +195,14 @@ TEST_P(NonManifoldShapes, RefusedWithAMessageNamingTheProblem) {
 INSTANTIATE_TEST_SUITE_P(OpenSubdiv, NonManifoldShapes,
                          ::testing::Values(
                              // Its quads collapse to triangles by repeating the pole vertex.
-                             NonManifoldShape{"catmark_nonman_quadpole8",
-                                              "repeats vertex 5 at consecutive positions"},
+                             NonManifoldShape{"catmark_nonman_quadpole8", "repeats vertex 5"},
                              NonManifoldShape{"loop_nonman_verts", "is non-manifold"},
                              NonManifoldShape{"catmark_fan", "non-manifold edge"}),
                          [](const auto& info) { return info.param.name; });
 
 // --- soups built in memory ---------------------------------------------------------------
 
-PolygonSoup cube_soup() {
-  PolygonSoup soup;
-  for (int i = 0; i < 8; ++i)
-    soup.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
-  soup.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  return soup;
-}
+using stitch::test::cube_soup;
 
 TEST(BuildMesh, CubeRoundTripsThroughPolygonSoup) {
   const PolygonSoup soup = cube_soup();
@@ -245,21 +227,26 @@ TEST(BuildMesh, DropsUnusedVerticesWithAWarning) {
   EXPECT_EQ(report.vertex_source.front(), 1);
 }
 
+// Without the repair (test_repair.cpp has it), as `--strict` reads.
 TEST(BuildMesh, RefusesInvalidSoups) {
   const auto refuse = [](PolygonSoup soup, const std::string& words) {
     soup.source = "soup.obj";
     soup.face_lines.assign(soup.faces.size(), 0);
     for (size_t f = 0; f < soup.faces.size(); ++f) soup.face_lines[f] = 10 + static_cast<int>(f);
-    const std::string message = error_of([&] { (void)stitch::build_mesh(soup); });
+    BuildOptions strict;
+    strict.repair = false;
+    const std::string message = error_of([&] { (void)stitch::build_mesh(soup, strict); });
     EXPECT_NE(message.find(words), std::string::npos)
         << "expected '" << words << "' in: " << message;
   };
   PolygonSoup soup = cube_soup();
   soup.faces[2] = {0, 1, 1, 5, 4};
-  refuse(soup, "face 3 (soup.obj, line 12) repeats vertex 2");
+  refuse(soup,
+         "soup.obj: refused as it is (repairing is off): 1 face that repeats a vertex: face 3 "
+         "(line 12) repeats vertex 2 at consecutive positions");
   soup = cube_soup();
   soup.faces[5] = {1, 3};
-  refuse(soup, "face 6 (soup.obj, line 15) has 2 vertices");
+  refuse(soup, "face 6 (line 15) has 2 vertices");
   soup = cube_soup();
   soup.faces[1] = {4, 6, 7, 5};  // flipped
   refuse(soup, "inconsistent orientation");
@@ -275,7 +262,8 @@ TEST(BuildMesh, RefusesInvalidSoups) {
 // Found by fuzz-obj: a thousand triangles on the same vertex pairs. Which of them are neighbours
 // cannot be decided within the search budget, so the soup is refused with a reason (each choice
 // is now charged its group's size: counted as one step, this soup took 2.7 s in Release and
-// more than the fuzzer's 10 s under ASan, against 0.09 s now).
+// more than the fuzzer's 10 s under ASan, against 0.09 s now). Without the repair, the refusal
+// names what the repair would have dropped.
 TEST(BuildMesh, RefusesFacesPiledOnOnePairOfVerticesWithAReason) {
   PolygonSoup soup;
   soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -285,9 +273,17 @@ TEST(BuildMesh, RefusesFacesPiledOnOnePairOfVerticesWithAReason) {
       soup.faces.push_back(face);
   BuildOptions options;
   options.allow_two_gons = true;  // as `stitch` and the modeler read files
+  options.repair = false;
   const std::string message = error_of([&] { (void)stitch::build_mesh(soup, options); });
-  EXPECT_NE(message.find("too many faces run along the same pairs of vertices"), std::string::npos)
+  EXPECT_NE(message.find("refused as it is (repairing is off): 996 duplicate faces"),
+            std::string::npos)
       << message;
+  // The repair drops the copies; the two pillows left share an edge, as one pinched sphere.
+  options.repair = true;
+  BuildReport report;
+  const HalfedgeMesh mesh = stitch::build_mesh(soup, options, &report);
+  EXPECT_EQ(report.repair.count(stitch::RepairKind::duplicate_face), 996);
+  EXPECT_EQ(stitch::topology_stats(mesh).faces, 4);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -286,10 +287,13 @@ void PrintTo(const Malformed& m, std::ostream* os) {
 
 class MalformedInput : public ::testing::TestWithParam<Malformed> {};
 
+// Under --strict (repairing off), so that what the repair would fix is refused too.
 TEST_P(MalformedInput, IsRefusedNamingFileAndLine) {
   TempFolder folder;
   const std::string path = folder.write(GetParam().name, GetParam().content);
-  const std::string message = error_of([&] { (void)stitch::read_mesh(path); });
+  stitch::BuildOptions strict;
+  strict.repair = false;
+  const std::string message = error_of([&] { (void)stitch::read_mesh(path, strict); });
   ASSERT_FALSE(message.empty()) << "accepted";
   EXPECT_NE(message.find(path), std::string::npos) << message;
   EXPECT_NE(message.find(GetParam().expected), std::string::npos)
@@ -332,14 +336,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "line 3: relative vertex index -3"},
         Malformed{"bad_entry.obj", kCubeVertices + "f 1/x 2 3\n", "line 9: 'x' is not an integer"},
         Malformed{"repeated_vertex.obj", kCubeVertices + "f 1 3 3 4 2\n" + kCubeFaces.substr(10),
-                  "line 9) repeats vertex 3 at consecutive positions"},
+                  "(line 9) repeats vertex 3 (line 3) at consecutive positions"},
         Malformed{"two_vertices.obj", kCubeVertices + "f 1 2\n", "line 9) has 2 vertices"},
         Malformed{"truncated.obj", kCubeVertices + kCubeFaces.substr(0, 55),
                   "line 14) has 2 vertices"},
         Malformed{"flipped.obj", kCubeVertices + "f 2 4 3 1\n" + kCubeFaces.substr(10),
                   "inconsistent orientation"},
         Malformed{"bowtie.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
-                  "line 1) is non-manifold: 2 boundary loops touch there"},
+                  "vertex 1 (line 1) is non-manifold: its faces"},
         Malformed{"truncated.off", kTetraOff.substr(0, 32),
                   "line 5: the file ends after 3 of the 4 vertices declared"},
         Malformed{"no_faces.off", kTetraOff, "line 6: the file ends after 0 of the 4 faces"},
@@ -369,6 +373,34 @@ INSTANTIATE_TEST_SUITE_P(
         if (c == '.') c = '_';
       return name;
     });
+
+// What --strict refuses above is repaired by default, each repair a warning.
+TEST(ReadMesh, RepairsByDefault) {
+  TempFolder folder;
+  const std::map<std::string, std::pair<std::string, std::string>> files{
+      {"repeated_vertex.obj",
+       {kCubeVertices + "f 1 3 3 4 2\n" + kCubeFaces.substr(10), "removed the repeats in 1 face"}},
+      {"truncated.obj",
+       {kCubeVertices + kCubeFaces.substr(0, 55),
+        "dropped 1 face with fewer than 3 distinct vertices: face 6 (line 14) has 2 vertices"}},
+      {"flipped.obj",
+       {kCubeVertices + "f 2 4 3 1\n" + kCubeFaces.substr(10),
+        "flipped 1 face wound against its neighbours"}},
+      {"bowtie.obj",
+       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
+        "split 1 non-manifold vertex"}}};
+  for (const auto& [name, file] : files) {
+    stitch::BuildReport report;
+    (void)stitch::read_mesh(folder.write(name, file.first), {}, &report);
+    ASSERT_FALSE(report.warnings.empty()) << name;
+    EXPECT_NE(report.warnings[0].find(file.second), std::string::npos) << report.warnings[0];
+  }
+  // A file whose faces all go is still refused, saying why.
+  const std::string path = folder.write("two_vertices.obj", kCubeVertices + "f 1 2\n");
+  const std::string message = error_of([&] { (void)stitch::read_mesh(path); });
+  EXPECT_NE(message.find("two_vertices.obj: no faces are left; dropped 1 face"), std::string::npos)
+      << message;
+}
 
 TEST(ReadMesh, DropsUnusedVerticesWithAWarning) {
   TempFolder folder;

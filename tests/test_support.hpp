@@ -1,7 +1,9 @@
 // Shared helpers of the test suite: where the test meshes are, and small meshes built in code.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
@@ -13,6 +15,14 @@ namespace stitch::test {
 
 inline std::string opensubdiv_shape(const std::string& name) {
   return std::string(STITCH_OPENSUBDIV_SHAPES_DIR) + "/" + name;
+}
+/// The file names of the OpenSubdiv shapes ("catmark_cube.obj", ...), sorted.
+inline std::vector<std::string> opensubdiv_shape_files() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(STITCH_OPENSUBDIV_SHAPES_DIR))
+    if (entry.path().extension() == ".obj") names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 inline std::string example_path(const std::string& name) {
   return std::string(STITCH_EXAMPLES_DIR) + "/" + name;
@@ -41,13 +51,18 @@ inline const std::vector<std::string>& closed_opensubdiv_shapes() {
   return names;
 }
 
-/// An axis-aligned unit cube centred at the origin, faces pointing outward.
-inline HalfedgeMesh cube_mesh() {
+/// An axis-aligned unit cube centred at the origin, faces pointing outward: vertex i at
+/// ((i & 1) - 0.5, (i & 2) / 2 - 0.5, (i & 4) / 4 - 0.5).
+inline PolygonSoup cube_soup() {
   PolygonSoup s;
   for (int i = 0; i < 8; ++i)
     s.positions.emplace_back((i & 1) ? 0.5 : -0.5, (i & 2) ? 0.5 : -0.5, (i & 4) ? 0.5 : -0.5);
   s.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  return build_mesh(s);
+  return s;
+}
+
+inline HalfedgeMesh cube_mesh() {
+  return build_mesh(cube_soup());
 }
 
 /// A regular tetrahedron, faces pointing outward.
@@ -76,6 +91,20 @@ inline Face double_with_two_gon(HalfedgeMesh& mesh, Halfedge h) {
   mesh.link(h2, t);
   mesh.assign_loop(t, two_gon);
   return two_gon;
+}
+
+/// Signed volume enclosed by the faces, each fanned from its first corner: positive when the
+/// faces are oriented outward.
+inline double signed_volume(const HalfedgeMesh& mesh) {
+  double volume = 0;
+  for (Face f : mesh.faces()) {
+    const auto loop = mesh.face_loop(f);
+    const Vec3& a = mesh.position(mesh.origin(loop[0]));
+    for (size_t i = 1; i + 1 < loop.size(); ++i)
+      volume +=
+          a.dot(mesh.position(mesh.origin(loop[i])).cross(mesh.position(mesh.origin(loop[i + 1]))));
+  }
+  return volume / 6;
 }
 
 /// The diagonal of the bounding box of the live vertices: the model size tolerances scale with.

@@ -18,9 +18,12 @@
 #include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
+#include "test_support.hpp"
 
 namespace stitch {
 namespace {
+
+using test::signed_volume;
 
 struct Counts {
   int v, e, f, components, genus;
@@ -35,18 +38,6 @@ void expect_counts(const HalfedgeMesh& m, Counts c) {
   EXPECT_EQ(s.components, c.components);
   EXPECT_EQ(s.genus, c.genus);
   EXPECT_EQ(s.euler, c.v - c.e + c.f);
-}
-
-/// Signed volume: positive when the faces point outwards.
-double signed_volume(const HalfedgeMesh& m) {
-  double vol = 0;
-  for (Face f : m.faces()) {
-    const auto loop = m.face_loop(f);
-    const Vec3& p0 = m.position(m.origin(loop[0]));
-    for (size_t i = 1; i + 1 < loop.size(); ++i)
-      vol += p0.dot(m.position(m.origin(loop[i])).cross(m.position(m.origin(loop[i + 1]))));
-  }
-  return vol / 6;
 }
 
 /// Two meshes side by side in one (the second shifted by `offset` along x).

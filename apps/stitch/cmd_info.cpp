@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "options.hpp"
 #include "stitch/eval/surface.hpp"
+#include "stitch/mesh/repair.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/output/output.hpp"
 #include "stitch/tess/patches.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct InfoArgs {
   InputOptions in;
   bool json = false;
+  bool repair_report = false;
   bool patches = false;
   std::string method{method_table().front().name};
   PatchSetOptions patch_set;
@@ -32,7 +34,12 @@ std::string histogram(const std::map<int, int>& h) {
 }
 
 void run_info(const InfoArgs& a) {
-  const HalfedgeMesh mesh = load_input(a.in);
+  BuildReport report;
+  const HalfedgeMesh mesh = load_input(a.in, &report);
+  if (a.repair_report) {
+    fmt::print("{}\n", to_json(report.repair));
+    return;
+  }
   const TopologyStats t = topology_stats(mesh);
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   for (Vertex v : mesh.vertices()) {
@@ -81,6 +88,8 @@ void run_info(const InfoArgs& a) {
     j["extraordinary_vertices"] = ev_vertices;
     j["extraordinary_faces"] = ev_faces;
     j["bounding_box"] = {{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}};
+    j["repairs"] = nlohmann::json::object();
+    for (const auto& [kind, n] : report.repair.counts()) j["repairs"][std::string(kind)] = n;
     if (set)
       j["bezier_patch_set"] = {{"method", a.method},
                                {"tolerance", set->tolerance},
@@ -111,6 +120,11 @@ void run_info(const InfoArgs& a) {
              ev_vertices.size(), ev_faces.size());
   fmt::print("  bounding box ({:.6g}, {:.6g}, {:.6g}) - ({:.6g}, {:.6g}, {:.6g})\n", lo.x(), lo.y(),
              lo.z(), hi.x(), hi.y(), hi.z());
+  // The defects repaired on reading, counted (the warnings name them; --repair-report lists each).
+  std::string repairs;
+  for (const auto& [kind, n] : report.repair.counts())
+    repairs += fmt::format("{}{} {}", repairs.empty() ? "" : ", ", n, kind);
+  fmt::print("  repaired on reading  {}\n", repairs.empty() ? "nothing" : repairs);
   if (!set) return;
   // What `stitch smooth -o X.step/.igs/.bez.json` would write, without writing it.
   fmt::print(
@@ -134,6 +148,9 @@ void add_info_command(CLI::App& app) {
       "info", "Counts, genus, valence and face-degree histograms, extraordinary points");
   add_input_options(cmd, args->in);
   cmd->add_flag("--json", args->json, "print JSON");
+  cmd->add_flag("--repair-report", args->repair_report,
+                "print only what was repaired on reading, every change, as JSON (see "
+                "docs/formats.md)");
   cmd->add_flag("--patches", args->patches,
                 fmt::format("also expand the Bezier patch set that the exact outputs ({}) hold "
                             "and report its depth, patch count and largest deviation from "

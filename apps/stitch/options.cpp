@@ -18,19 +18,24 @@ namespace stitch::cli {
 
 void add_input_options(CLI::App* cmd, InputOptions& in) {
   cmd->add_option("IN", in.path,
-                  fmt::format("input mesh ({}): orientable and manifold, closed or with "
-                              "boundaries; or a stitch-modeler project ({}): its mesh, K-gon "
-                              "controls and method",
+                  fmt::format("input mesh ({}), closed or with boundaries (repaired on reading "
+                              "unless --strict); or a stitch-modeler project ({}): its mesh, "
+                              "K-gon controls and method",
                               extension_list(kMeshReadExtensions), kProjectExtensions.front()))
       ->required();
   cmd->add_flag("--fill-holes", in.fill_holes,
                 "close every boundary loop with one face instead of keeping it as a boundary");
+  cmd->add_flag("--strict", in.strict,
+                "refuse a mesh that is not an oriented manifold as it is, listing its defects, "
+                "instead of repairing it (mixed winding, non-manifold edges and vertices, "
+                "repeated vertices, degenerate and duplicate faces)");
 }
 
 HalfedgeMesh load_input(const InputOptions& in, BuildReport* report_out,
                         const std::function<void(double)>& progress) {
   BuildOptions opt;
   opt.fill_holes = in.fill_holes;
+  opt.repair = !in.strict;
   // The topology operators make 2-sided faces, and edited meshes must read back; they are
   // smoothed with a warning (see docs/method.md).
   opt.allow_two_gons = true;

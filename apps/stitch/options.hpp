@@ -21,6 +21,7 @@ struct KgonCliOptions;
 struct InputOptions {
   std::string path;
   bool fill_holes = false;
+  bool strict = false;  ///< --strict: refuse what the repair would fix (BuildOptions::repair off)
   // Where load_input puts what the input brings besides the mesh: a project's K-gon controls and
   // method, a --kgon-controls file's controls. add_kgon_options and add_method_option on the same
   // sub-command set them (the sub-commands add their options with separate calls).
@@ -28,14 +29,14 @@ struct InputOptions {
   std::string* method = nullptr;
   const CLI::Option* method_option = nullptr;
 };
-/// Adds the positional IN and --fill-holes.
+/// Adds the positional IN, --fill-holes and --strict.
 void add_input_options(CLI::App* cmd, InputOptions& in);
-/// Reads and checks the mesh, printing warnings (dropped vertices, filled holes, 2-gons,
-/// valence-2 vertices) to stderr. Throws stitch::Error on bad input. `report` (optional) receives
-/// the build report, e.g. the texture coordinates of the corners. A project (.stitch) brings
-/// its K-gon controls and, unless --method was given, its method; a --kgon-controls file is
-/// read against the mesh here, so its numbers are checked before any work. `progress`
-/// (optional) is told how much of the reading is done.
+/// Reads, repairs (unless --strict) and checks the mesh, printing warnings (repairs, dropped
+/// vertices, filled holes, 2-gons, valence-2 vertices) to stderr. Throws stitch::Error on bad
+/// input. `report` (optional) receives the build report, e.g. the texture coordinates of the
+/// corners. A project (.stitch) brings its K-gon controls and, unless --method was given, its
+/// method; a --kgon-controls file is read against the mesh here, so its numbers are checked before
+/// any work. `progress` (optional) is told how much of the reading is done.
 HalfedgeMesh load_input(const InputOptions& in, BuildReport* report = nullptr,
                         const std::function<void(double)>& progress = {});
 

@@ -7,12 +7,15 @@
 // errors: stitch::Error and its kinds
 #include "stitch/error.hpp"
 
-// mesh: the half-edge mesh, building it from polygons with every check, file I/O
+// mesh: the half-edge mesh, building it from polygons with every check (repairing what it can),
+// file I/O
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/mesh/polygon.hpp"
+#include "stitch/mesh/polygon_soup.hpp"
+#include "stitch/mesh/repair.hpp"
 #include "stitch/mesh/validate.hpp"
 
 // topology: the operators (insert/delete edge and those built on them), remeshing, primitives

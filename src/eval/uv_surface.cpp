@@ -123,6 +123,7 @@ UvSurface::UvSurface(const HalfedgeMesh& mesh, const CornerUvs& uvs, UvMode mode
       const UvLayout layout = uv_layout(mesh, uvs);
       BuildOptions options;
       options.allow_two_gons = true;  // as the input may have them
+      options.repair = false;         // its faces are matched to the layout's by index
       auto smooth = std::make_unique<Smooth>();
       smooth->mesh = build_mesh(layout.soup, options);
       // UV soup face k is UV mesh Face(k), its loop starting at the first corner (build_mesh),

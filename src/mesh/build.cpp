@@ -5,10 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <utility>
 
+#include "mesh/repair_detail.hpp"
+#include "mesh/soup_places.hpp"
 #include "stitch/mesh/limits.hpp"
 #include "stitch/mesh/validate.hpp"
 
@@ -17,19 +21,11 @@ namespace stitch {
 namespace {
 
 std::string where_face(const PolygonSoup& soup, int f) {
-  std::string s = fmt::format("face {}", f + 1);
-  if (f < static_cast<int>(soup.face_lines.size()) && soup.face_lines[f] > 0)
-    s += fmt::format(" ({}line {})", soup.source.empty() ? "" : soup.source + ", ",
-                     soup.face_lines[f]);
-  return s;
+  return soup_places::face(soup, f);
 }
 
 std::string where_vertex(const PolygonSoup& soup, int v) {
-  std::string s = fmt::format("vertex {}", v + 1);
-  if (v < static_cast<int>(soup.vertex_lines.size()) && soup.vertex_lines[v] > 0)
-    s += fmt::format(" ({}line {})", soup.source.empty() ? "" : soup.source + ", ",
-                     soup.vertex_lines[v]);
-  return s;
+  return soup_places::vertex(soup, v);
 }
 
 void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
@@ -38,27 +34,17 @@ void check_soup(const PolygonSoup& soup, const BuildOptions& options) {
     if (const std::string problem = limits::coordinate_problem(soup.positions[v]); !problem.empty())
       throw InputError(fmt::format("{} {}", where_vertex(soup, v), problem));
   if (soup.faces.empty()) throw InputError("the mesh has no faces");
+  soup_places::check_face_indices(soup);
   const size_t min_degree = options.allow_two_gons ? 2 : 3;
-  size_t corners = 0;
   for (int f = 0; f < static_cast<int>(soup.faces.size()); ++f) {
     const auto& loop = soup.faces[f];
     if (loop.size() < min_degree)
       throw InputError(fmt::format("{} has {} vertices; a face needs at least {}",
                                    where_face(soup, f), loop.size(), min_degree));
-    corners += loop.size();
-    if (corners > static_cast<size_t>(limits::max_halfedges))
-      throw InputError(
-          fmt::format("the mesh has more than {} corners (face {}); stitch numbers "
-                      "its elements with 32-bit integers",
-                      limits::max_halfedges, f + 1));
-    for (size_t i = 0; i < loop.size(); ++i) {
-      if (loop[i] < 0 || loop[i] >= nv)
-        throw InputError(fmt::format("{} refers to vertex {}, but there are {} vertices",
-                                     where_face(soup, f), loop[i] + 1, nv));
+    for (size_t i = 0; i < loop.size(); ++i)
       if (loop[i] == loop[(i + 1) % loop.size()])
-        throw InputError(fmt::format("{} repeats vertex {} at consecutive positions",
-                                     where_face(soup, f), loop[i] + 1));
-    }
+        throw InputError(fmt::format("{} repeats {} at consecutive positions", where_face(soup, f),
+                                     soup_places::vertex(soup, loop[i], false)));
   }
 }
 
@@ -279,37 +265,36 @@ std::string tag_numbers(int line, int a, int b = -1) {
 /// One warning for each kind of element whose sharpness is finite but not zero: stitch's own
 /// methods have no rule for semi-sharp features and round them (KgonOptions::sharp_from), so the
 /// user should know where that happens.
-void warn_semi_sharp(const HalfedgeMesh& mesh, const std::vector<int>& vertex_source,
-                     std::vector<std::string>& warnings) {
-  constexpr size_t kNamed = 5;  // enough to find them in the file; the count says the rest
+void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
+                     const std::vector<int>& vertex_source, std::vector<std::string>& warnings) {
   auto semi = [](double s) { return s > 0 && s < infinitely_sharp; };
+  auto number = [&](Vertex v) {
+    return soup_places::quoted(soup, soup_places::file_vertex(soup, vertex_source[v.idx]));
+  };
   std::vector<std::string> edges, vertices;
   for (Edge e : mesh.edges())
     if (!mesh.is_boundary(e) && semi(mesh.sharpness(e))) {
       const Halfedge h = HalfedgeMesh::halfedge(e, 0);
-      edges.push_back(fmt::format("({}, {})", vertex_source[mesh.origin(h).idx] + 1,
-                                  vertex_source[mesh.target(h).idx] + 1));
+      edges.push_back(fmt::format("({}, {})", number(mesh.origin(h)), number(mesh.target(h))));
     }
   for (Vertex v : mesh.vertices())
-    if (semi(mesh.sharpness(v))) vertices.push_back(std::to_string(vertex_source[v.idx] + 1));
-  auto listed = [&](const std::vector<std::string>& names) {
-    std::string s;
-    for (size_t k = 0; k < names.size() && k < kNamed; ++k) s += (k ? ", " : "") + names[k];
-    if (names.size() > kNamed) s += fmt::format(", ... ({} more)", names.size() - kNamed);
-    return s;
-  };
+    if (semi(mesh.sharpness(v))) vertices.push_back(std::to_string(number(v)));
+  const char* numbered = soup.numbering == Numbering::from_zero ? "from 0" : "from 1";
+  // The first few are enough to find them in the file; the count says the rest.
   if (!edges.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite sharpness (semi-sharp): mdc and asc make those of sharpness >= "
-        "--sharp-from (default 4) infinitely sharp and the others smooth; --method cc honours "
-        "the values (vertices numbered from 1): {}",
-        edges.size(), edges.size() == 1 ? "edge has" : "edges have", listed(edges)));
+        "{} {} finite sharpness (semi-sharp): the K-gon construction makes those of sharpness "
+        ">= --sharp-from (default 4) infinitely sharp and the others smooth; the Catmull-Clark "
+        "method honours the values (vertices numbered {}): {}",
+        edges.size(), edges.size() == 1 ? "edge has" : "edges have", numbered,
+        soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
-        "{} {} finite corner sharpness (semi-sharp): mdc and asc make those of sharpness >= "
-        "--sharp-from (default 4) corners and ignore the others; --method cc honours the values "
-        "(numbered from 1): {}",
-        vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", listed(vertices)));
+        "{} {} finite corner sharpness (semi-sharp): the K-gon construction makes those of "
+        "sharpness >= --sharp-from (default 4) corners and ignores the others; the Catmull-Clark "
+        "method honours the values (numbered {}): {}",
+        vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", numbered,
+        soup_places::listed(vertices)));
 }
 
 /// Puts the soup's crease and corner tags on the mesh's edges and vertices. A crease names two
@@ -352,15 +337,12 @@ void apply_tags(const PolygonSoup& soup, const std::vector<int>& remap, BuildRep
                                    where_tag(soup, c.line, "crease"), vertex_source[a.idx] + 1,
                                    vertex_source[b.idx] + 1, tag_numbers(c.line, c.a, c.b)));
   }
-  warn_semi_sharp(mesh, vertex_source, report.warnings);
+  warn_semi_sharp(mesh, soup, vertex_source, report.warnings);
 }
 
-}  // namespace
-
-HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, BuildReport* report) {
+/// build_mesh without the repair.
+HalfedgeMesh build_as_is(const PolygonSoup& soup, const BuildOptions& options, BuildReport& rep) {
   check_soup(soup, options);
-  BuildReport local;
-  BuildReport& rep = report ? *report : local;
 
   // Unused vertices are dropped: they have no place on a surface.
   const int nv_in = static_cast<int>(soup.positions.size());
@@ -441,14 +423,14 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
         }
         if (edges.size() == 2) {
           throw InputError(fmt::format(
-              "inconsistent orientation: {} and {} both run along edge ({}, {}) in the same "
-              "direction (one of them must be flipped)",
-              where_face(soup, edges[0].d.face), where_face(soup, edges[1].d.face), lo + 1,
-              hi + 1));
+              "inconsistent orientation: {} and {} both run along {} in the same direction (one of "
+              "them must be flipped)",
+              where_face(soup, edges[0].d.face), where_face(soup, edges[1].d.face),
+              soup_places::edge(soup, lo, hi)));
         }
-        throw InputError(
-            fmt::format("non-manifold edge ({}, {}): it is shared by {} faces, e.g. {}", lo + 1,
-                        hi + 1, edges.size(), where_face(soup, first_of(fwd > 0).face)));
+        throw InputError(fmt::format("non-manifold {}: it is shared by {} faces, e.g. {}",
+                                     soup_places::edge(soup, lo, hi), edges.size(),
+                                     where_face(soup, first_of(fwd > 0).face)));
       }
       grp.first = static_cast<int>(pairs.fwd.size());
       grp.count = static_cast<int>(fwd);
@@ -576,7 +558,69 @@ HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, Bu
       }
     }
   }
+  // Soup face f is Face(f); boundary loops and the faces that fill them come after.
+  rep.face_source.assign(mesh.face_capacity(), -1);
+  std::iota(rep.face_source.begin(), rep.face_source.begin() + soup.faces.size(), 0);
   return mesh;
+}
+
+}  // namespace
+
+HalfedgeMesh build_mesh(const PolygonSoup& soup, const BuildOptions& options, BuildReport* report) {
+  BuildReport local;
+  BuildReport& rep = report ? *report : local;
+  const RepairOptions repair_options{options.allow_two_gons};
+  // A soup that builds as it is is taken as it is, repairing on or off: the repair only ever
+  // sees what the build refuses, so it never changes a mesh that reads (one stitch wrote).
+  std::optional<InputError> refusal;
+  try {
+    BuildReport as_is;
+    HalfedgeMesh mesh = build_as_is(soup, options, as_is);
+    rep = std::move(as_is);
+    return mesh;
+  } catch (const InputError& e) {
+    refusal = e;
+  }
+  if (!options.repair) {
+    // What repair() would fix, all of it at once: the user has to fix it all.
+    const std::string defects = detail::describe_defects(soup, repair_options);
+    if (defects.empty()) throw *refusal;
+    throw InputError(fmt::format("{}refused as it is (repairing is off): {}",
+                                 soup.source.empty() ? "" : soup.source + ": ", defects));
+  }
+  // Where several faces each way share an edge, the repair leaves the pairing to the build's
+  // search unless the vertices there cannot be manifold; should the build still refuse, every
+  // such edge is paired by angle instead.
+  std::optional<InputError> failure;
+  for (const bool by_angle : {false, true}) {
+    RepairReport repairs;
+    const auto fixed = detail::repaired(soup, repair_options, repairs, by_angle);
+    if (!fixed) continue;
+    if (fixed->soup.faces.empty()) {
+      std::string dropped;
+      for (const std::string& line : repairs.summary()) dropped += "; " + line;
+      throw InputError(fmt::format("{}no faces are left{}",
+                                   soup.source.empty() ? "" : soup.source + ": ", dropped));
+    }
+    BuildReport attempt;
+    HalfedgeMesh mesh;
+    try {
+      mesh = build_as_is(fixed->soup, options, attempt);
+    } catch (const InputError& e) {
+      if (!failure) failure = e;
+      continue;
+    }
+    rep = std::move(attempt);
+    // Back to the soup given.
+    for (int& v : rep.vertex_source) v = fixed->vertex_from[v];
+    for (int& f : rep.face_source)
+      if (f >= 0) f = fixed->face_from[f];
+    const std::vector<std::string> summary = repairs.summary();
+    rep.warnings.insert(rep.warnings.begin(), summary.begin(), summary.end());
+    rep.repair = std::move(repairs);
+    return mesh;
+  }
+  throw failure ? *failure : *refusal;
 }
 
 PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh) {
@@ -605,6 +649,7 @@ PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh) {
 void check_reads_back(const HalfedgeMesh& mesh) {
   BuildOptions options;
   options.allow_two_gons = true;
+  options.repair = false;
   const TopologyStats before = topology_stats(mesh);
   const TopologyStats after = topology_stats(build_mesh(to_polygon_soup(mesh), options));
   if (after.vertices != before.vertices || after.edges != before.edges ||

@@ -243,6 +243,11 @@ PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>*
       break;
   }
   soup.source = path;
+  // Messages quote the numbers the file uses (repair.hpp, soup_places.hpp).
+  soup.numbering = *format == MeshFileFormat::obj ? Numbering::from_one
+                   : *format == MeshFileFormat::off || *format == MeshFileFormat::ply
+                       ? Numbering::from_zero
+                       : Numbering::none;
   if (soup.faces.empty()) throw InputError(fmt::format("{}: the file contains no faces", path));
   if (progress) progress(1);
   return soup;

@@ -189,6 +189,7 @@ Project Session::project() const {
 std::string open_file(Session& session, const std::string& path) {
   const bool project = is_project_path(path);
   DocumentState state;
+  BuildReport report;
   if (project) {
     Project p = load_project(path);
     state = std::move(p.state);
@@ -197,12 +198,14 @@ std::string open_file(Session& session, const std::string& path) {
   } else {
     BuildOptions build;
     build.allow_two_gons = true;
-    state.mesh = read_mesh(path, build);
+    state.mesh = read_mesh(path, build, &report);
   }
   session.path = path;
   session.load(std::move(state));
   if (!project) session.view.set_standard(View::iso, session.mesh_bounds(), session.view_aspect());
   std::string message = "opened " + path;
+  // What reading repaired (repair.hpp), one line per kind, as the command line warns.
+  for (const std::string& line : report.repair.summary()) message += "; repaired: " + line;
   if (const auto& u = session.tube_unfoldings(); !u.empty())
     message += "; " + describe_unfoldings(session.document.mesh(), u);
   return message;

@@ -134,6 +134,9 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
     for (const json& q : mesh.at("positions")) soup.positions.push_back(vec_from(q, "a position"));
     for (const json& f : mesh.at("faces")) soup.faces.push_back(f.get<std::vector<int>>());
     build.allow_two_gons = true;
+    // Its K-gon controls number the faces and vertices as stored: stitch wrote them, so they
+    // need no repair, and a repair would renumber them.
+    build.repair = false;
     BuildReport local;
     BuildReport& report = report_out ? *report_out : local;
     p.mesh = build_mesh(soup, build, &report);

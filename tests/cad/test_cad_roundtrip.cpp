@@ -260,21 +260,16 @@ TEST(CadWrite, FullDiskLeavesNothing) {
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"full.step"});
 }
 
-/// Every OpenSubdiv shape in tests/data that stitch reads (the non-manifold ones are refused on
-/// reading) exports STEP, IGES and Bézier JSON at the default tolerances; the Bézier JSON and
-/// the smaller CAD files are read back.
+/// Every OpenSubdiv shape in tests/data (the non-manifold ones repaired on reading) exports STEP,
+/// IGES and Bézier JSON at the default tolerances; the Bézier JSON and the smaller CAD files are
+/// read back.
 class EveryShapeExports : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryShapeExports, StepIgesAndBezierJson) {
   const std::string path = test::opensubdiv_shape(GetParam());
   BuildOptions build;
   build.allow_two_gons = true;
-  HalfedgeMesh mesh;
-  try {
-    mesh = read_mesh(path, build);
-  } catch (const InputError& e) {
-    GTEST_SKIP() << "stitch refuses it on reading (issue #37): " << e.what();
-  }
+  const HalfedgeMesh mesh = read_mesh(path, build);
   const Surface surface(mesh, Method::mdc);
   const PatchSet set = bezier_patches(mesh, surface);
   EXPECT_LE(set.max_position_deviation, set.tolerance * set.model_size);
@@ -297,16 +292,8 @@ TEST_P(EveryShapeExports, StepIgesAndBezierJson) {
   }
 }
 
-std::vector<std::string> all_shapes() {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(STITCH_OPENSUBDIV_SHAPES_DIR))
-    if (entry.path().extension() == ".obj") names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(OpenSubdivShapes, EveryShapeExports, ::testing::ValuesIn(all_shapes()),
-                         [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(OpenSubdivShapes, EveryShapeExports,
+                         ::testing::ValuesIn(test::opensubdiv_shape_files()), [](const auto& info) {
                            return info.param.substr(0, info.param.size() - 4);
                          });
 

@@ -263,3 +263,23 @@ TEST(ModelerSession, FramingFitsANarrowViewport) {
 
 }  // namespace
 }  // namespace stitch::modeler
+
+namespace stitch::modeler {
+namespace {
+
+TEST(ModelerSession, OpeningAMeshSaysWhatReadingRepaired) {
+  // OpenSubdiv's fan: three faces on one edge; reading splits the edge (repair.hpp) and the
+  // modeler says so on load, as the command line warns.
+  Session s;
+  const std::string path = test::opensubdiv_shape("catmark_fan.obj");
+  const std::string message = open_file(s, path);
+  EXPECT_EQ(message.rfind("opened " + path, 0), 0u) << message;
+  EXPECT_NE(message.find("; repaired: "), std::string::npos) << message;
+  EXPECT_NE(message.find("non-manifold edge"), std::string::npos) << message;
+  // A clean mesh opens with nothing to say.
+  EXPECT_EQ(open_file(s, test::example_path("cube.obj")),
+            "opened " + test::example_path("cube.obj"));
+}
+
+}  // namespace
+}  // namespace stitch::modeler

@@ -46,14 +46,28 @@ def test_bad_face_data(faces, message):
     # Messages number vertices and faces from 1, as files and edit operations do.
     ([[0, 3, 2, 8]] + CUBE_FACES[1:], "face 1 refers to vertex 9, but there are 8 vertices"),
     ([[0, 3, 2, -1]] + CUBE_FACES[1:], "face 1 refers to vertex 0, but there are 8 vertices"),
-    ([[0, 1, 2], [0, 4, 5]], "boundary loops touch"),  # two triangles sharing a vertex only
-    ([[1, 2, 3, 0]] + CUBE_FACES[1:], "orient"),           # the bottom face flipped
-    (CUBE_FACES + [[0, 1, 5]], "non-manifold edge"),     # a third face on edge (1, 2)
-    ([[0, 3, 3, 1]] + CUBE_FACES[1:], "repeats vertex"),
 ])
 def test_invalid_meshes(faces, message):
     with pytest.raises(stitch.StitchError, match=message):
         stitch.Mesh(CUBE_VERTICES, faces)
+
+
+# Defects repair fixes by default, each named in a warning, and refuses with repair=False.
+REPAIRABLE = [
+    ([[0, 1, 2], [0, 4, 5]], "non-manifold", "non-manifold vertex"),
+    ([[1, 2, 3, 0]] + CUBE_FACES[1:], "orient", "flipped 1 face"),
+    (CUBE_FACES + [[0, 1, 5]], "non-manifold edge", "non-manifold edge"),
+    ([[0, 3, 3, 1]] + CUBE_FACES[1:], "repeats vertex", "repeats a vertex"),
+]
+
+
+@pytest.mark.parametrize("faces,refusal,repair", REPAIRABLE)
+def test_repairable_meshes(faces, refusal, repair):
+    with pytest.raises(stitch.StitchError, match=refusal):
+        stitch.Mesh(CUBE_VERTICES, faces, repair=False)
+    with pytest.warns(UserWarning, match=repair):
+        mesh = stitch.Mesh(CUBE_VERTICES, faces)
+    assert mesh.num_faces > 0
 
 
 def test_non_finite_coordinates():

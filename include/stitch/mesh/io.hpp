@@ -21,12 +21,15 @@ namespace stitch {
 /// none), PLY per-vertex `s t` (or `texture_u texture_v`, `texture_s texture_t`, `u v`), glTF
 /// TEXCOORD_0 (v flipped to OBJ's convention: 0 at the bottom).
 /// Throws stitch::Error naming the file and line (or element) for anything malformed.
+/// PolygonSoup::numbering says how the format numbers its elements, for later messages.
 /// `progress`, if set, is told how much of the work is done (0 to 1) from time to time: the
 /// bytes read, then the lines parsed (OBJ, the format of the largest meshes).
 PolygonSoup read_polygon_soup(const std::string& path, std::vector<std::string>* warnings = nullptr,
                               const std::function<void(double)>& progress = {});
 
-/// read_polygon_soup + build_mesh; report->corner_uvs gets the file's texture coordinates.
+/// read_polygon_soup + build_mesh, which repairs what it can unless options.repair is off
+/// (report->repair says what, and its summary opens report->warnings); report->corner_uvs gets
+/// the file's texture coordinates.
 /// `progress` as for read_polygon_soup, building the mesh counted as the last tenth.
 HalfedgeMesh read_mesh(const std::string& path, const BuildOptions& options = {},
                        BuildReport* report = nullptr, std::vector<std::string>* warnings = nullptr,

@@ -77,7 +77,6 @@ struct OutputFormat {
   /// What a tessellated row's writer hands the core's mesh writers: the one place a path's
   /// extension becomes a mesh file format. None for the exact rows.
   std::optional<MeshFileFormat> mesh_format{};
-  bool normals = false;    ///< per-vertex normals
   bool uvs = false;        ///< texture coordinates (welded; unwelded .ply has its own)
   bool unwelded = false;   ///< takes OutputSpec::unwelded
   bool adaptive = false;   ///< takes OutputSpec::adaptive_tolerance
