@@ -540,6 +540,16 @@ std::int64_t CheckGrid::count_tiles(const Vec3& lo, const Vec3& hi) const {
   return count;
 }
 
+void sort_entries(TileRuns& runs) {
+  tbb::parallel_sort(runs.entries.begin(), runs.entries.end());
+  for (size_t e = 0; e < runs.entries.size(); ++e)
+    if (e == 0 || runs.entries[e] >> 32 != runs.entries[e - 1] >> 32) {
+      runs.keys.push_back(static_cast<std::uint32_t>(runs.entries[e] >> 32));
+      runs.starts.push_back(e);
+    }
+  runs.starts.push_back(runs.entries.size());
+}
+
 SurfaceCheckReport check_tiles(std::span<const std::uint32_t> keys, const CheckGrid& grid,
                                const std::function<void(size_t, TileTriangles&)>& gather,
                                int triangles, const SurfaceCheckOptions& options, bool focused_only,
@@ -673,37 +683,13 @@ SurfaceCheckReport check_triangles(std::span<const Vec3> P, std::span<const std:
   }
   // Cells about a triangle across, coarser while the triangles' boxes would meet many more tiles
   // than there are triangles (a few large triangles among many small ones).
-  for (;;) {
-    std::int64_t entries = 0;
-    for (const auto& t : T) {
-      const auto [tlo, thi] = box(t);
-      entries += grid.count_tiles(tlo, thi);
-    }
-    if (entries <= 4 * static_cast<std::int64_t>(nt) + 4096) break;
-    grid = CheckGrid(lo, hi, 2 * grid.cell_size(), kTileCells);
-  }
-  // (tile, triangle), sorted: each tile's triangles form a run.
-  ScratchVector<std::uint64_t> in_tile;
-  for (int i = 0; i < nt; ++i) {
-    const auto [tlo, thi] = box(T[i]);
-    grid.for_each_tile(tlo, thi, [&](std::uint32_t key) {
-      in_tile.push_back(static_cast<std::uint64_t>(key) << 32 | static_cast<std::uint32_t>(i));
-    });
-  }
-  tbb::parallel_sort(in_tile.begin(), in_tile.end());
-  std::vector<std::uint32_t> keys;
-  std::vector<size_t> starts;
-  for (size_t e = 0; e < in_tile.size(); ++e)
-    if (e == 0 || in_tile[e] >> 32 != in_tile[e - 1] >> 32) {
-      keys.push_back(static_cast<std::uint32_t>(in_tile[e] >> 32));
-      starts.push_back(e);
-    }
-  starts.push_back(in_tile.size());
+  const TileRuns runs =
+      sort_into_tiles(grid, lo, hi, T.size(), [&](size_t i) { return box(T[i]); });
   const SurfaceCheckReport tiles = check_tiles(
-      keys, grid,
+      runs.keys, grid,
       [&](size_t k, TileTriangles& out) {
-        for (size_t e = starts[k]; e < starts[k + 1]; ++e) {
-          const auto i = static_cast<int>(in_tile[e] & 0xffffffffu);
+        for (size_t e = runs.starts[k]; e < runs.starts[k + 1]; ++e) {
+          const auto i = static_cast<int>(runs.item(e));
           const auto& t = T[i];
           out.add(P[t[0]], P[t[1]], P[t[2]], t, i,
                   !focus.empty() && focus[i] != 0 ? kInFocus : std::uint8_t{0});

@@ -112,32 +112,14 @@ SurfaceCheckReport check_patches_surface(const HalfedgeMesh& mesh,
   mean_size /= static_cast<double>(corners.size()) * n;
   const int tile = std::clamp(8 * n, 32, 128);
   detail::CheckGrid grid(lo, hi, mean_size, tile);
-  for (;;) {  // coarser while a few large patches among many small ones would meet many tiles
-    std::int64_t entries = 0;
-    for (const auto& [blo, bhi] : boxes) entries += grid.count_tiles(blo, bhi);
-    if (entries <= 4 * static_cast<std::int64_t>(corners.size()) + 4096) break;
-    grid = detail::CheckGrid(lo, hi, 2 * grid.cell_size(), tile);
-  }
-  // (tile, patch), sorted: each tile's patches form a run.
-  std::vector<std::uint64_t> in_tile;
-  for (size_t k = 0; k < corners.size(); ++k)
-    grid.for_each_tile(boxes[k][0], boxes[k][1], [&](std::uint32_t key) {
-      in_tile.push_back(static_cast<std::uint64_t>(key) << 32 | static_cast<std::uint32_t>(k));
-    });
-  tbb::parallel_sort(in_tile.begin(), in_tile.end());
-  std::vector<std::uint32_t> keys;
-  std::vector<size_t> starts;
-  for (size_t e = 0; e < in_tile.size(); ++e)
-    if (e == 0 || in_tile[e] >> 32 != in_tile[e - 1] >> 32) {
-      keys.push_back(static_cast<std::uint32_t>(in_tile[e] >> 32));
-      starts.push_back(e);
-    }
-  starts.push_back(in_tile.size());
+  // Coarser while a few large patches among many small ones would meet many tiles.
+  const detail::TileRuns runs = detail::sort_into_tiles(
+      grid, lo, hi, corners.size(), [&](size_t k) { return std::pair(boxes[k][0], boxes[k][1]); });
 
   const std::vector<std::uint8_t> cone = cone_points(mesh, kgons);
   const auto gather = [&](size_t t, detail::TileTriangles& out) {
     PatchSamples& g = grids.local();
-    const detail::CheckGrid::Cell origin = grid.tile_origin(keys[t]);
+    const detail::CheckGrid::Cell origin = grid.tile_origin(runs.keys[t]);
     // Whether a triangle's box meets the tile: along each axis, one of its corners' cells is at
     // or past the tile's first and one before its end.
     const auto meets_tile = [&](const std::array<int, 3>& tri) {
@@ -149,8 +131,8 @@ SurfaceCheckReport check_patches_surface(const HalfedgeMesh& mesh,
       }
       return true;
     };
-    for (size_t e = starts[t]; e < starts[t + 1]; ++e) {
-      const auto k = static_cast<int>(in_tile[e] & 0xffffffffu);
+    for (size_t e = runs.starts[t]; e < runs.starts[t + 1]; ++e) {
+      const auto k = static_cast<int>(runs.item(e));
       const Corner c = corners[static_cast<size_t>(k)];
       layout.grid_positions(g.sampler, k, g.positions.data(), g.scratch);
       layout.grid_vertices(k, g.vertices.data());
@@ -190,7 +172,7 @@ SurfaceCheckReport check_patches_surface(const HalfedgeMesh& mesh,
       }
     }
   };
-  return detail::check_tiles(keys, grid, gather, static_cast<int>(triangles), options);
+  return detail::check_tiles(runs.keys, grid, gather, static_cast<int>(triangles), options);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <vector>
 
 #include "stitch/analysis/surface_check.hpp"
 #include "support/scratch.hpp"
@@ -93,6 +94,46 @@ class CheckGrid {
   int tile_ = 1;
   Cell last_{};  ///< the last cell along each axis
 };
+
+/// Items (triangles or patches) sorted into the tiles their boxes meet: tile keys[k] holds the
+/// items item(e) for e in [starts[k], starts[k + 1]).
+struct TileRuns {
+  std::vector<std::uint32_t> keys;
+  std::vector<size_t> starts;
+  ScratchVector<std::uint64_t> entries;  ///< (tile << 32 | item), sorted
+  [[nodiscard]] std::uint32_t item(size_t e) const {
+    return static_cast<std::uint32_t>(entries[e] & 0xffffffffu);
+  }
+};
+
+/// Sorts runs.entries (in parallel) and finds the runs of each tile.
+void sort_entries(TileRuns& runs);
+
+/// Makes `grid` coarser (cells twice as large, over [lo, hi]) while the boxes of the `count`
+/// items, box_of(i) -> {lo, hi}, would meet many more tiles than there are items (a few large
+/// ones among many small), then sorts the items into the tiles.
+template <class BoxOf>
+TileRuns sort_into_tiles(CheckGrid& grid, const Vec3& lo, const Vec3& hi, size_t count,
+                         BoxOf&& box_of) {
+  for (;;) {
+    std::int64_t entries = 0;
+    for (size_t i = 0; i < count; ++i) {
+      const auto [blo, bhi] = box_of(i);
+      entries += grid.count_tiles(blo, bhi);
+    }
+    if (entries <= 4 * static_cast<std::int64_t>(count) + 4096) break;
+    grid = CheckGrid(lo, hi, 2 * grid.cell_size(), grid.tile_cells());
+  }
+  TileRuns runs;
+  for (size_t i = 0; i < count; ++i) {
+    const auto [blo, bhi] = box_of(i);
+    grid.for_each_tile(blo, bhi, [&](std::uint32_t key) {
+      runs.entries.push_back(static_cast<std::uint64_t>(key) << 32 | static_cast<std::uint32_t>(i));
+    });
+  }
+  sort_entries(runs);
+  return runs;
+}
 
 /// The checks of a pass: folds and orientation over shared edges (and degenerate triangles),
 /// crossings of the other pairs.
