@@ -6,6 +6,9 @@
 //   check_surface/1   the edges only: crossings_only_when_unfolded on a surface made to fold by
 //                     one vertex pushed through the torus, as unfold_tubes' search checks a
 //                     setting that folds
+// and check_surface(mesh, surface, 8), what `stitch smooth --check` runs, on the quad tori of
+// about 10k and 100k faces (the surface built outside the loop; peak_GB: the process's peak
+// resident size, its own when it is the only case run).
 #include <benchmark/benchmark.h>
 
 #include "bench_meshes.hpp"
@@ -37,5 +40,26 @@ void check_surface(benchmark::State& state) {
   state.SetLabel(bench::mesh_label(bench::mixed_torus, mesh));
 }
 BENCHMARK(check_surface)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void check_surface_patches(benchmark::State& state) {
+  const HalfedgeMesh& mesh = bench::bench_mesh(bench::quad_torus, static_cast<int>(state.range(0)));
+  const Surface surface(mesh, Method::mdc);
+  int triangles = 0;
+  for (auto _ : state) {
+    const SurfaceCheckReport report = stitch::check_surface(mesh, surface, 8);
+    triangles = report.triangles;
+    benchmark::DoNotOptimize(report.folds);
+  }
+  state.counters["triangles"] = triangles;
+  state.counters["peak_GB"] = bench::peak_rss_gb();
+  state.SetLabel(bench::mesh_label(bench::quad_torus, mesh));
+}
+BENCHMARK(check_surface_patches)
+    ->ArgName("faces")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace

@@ -2,6 +2,8 @@
 // triangles, of about a given number of faces, built once per process.
 #pragma once
 
+#include <sys/resource.h>
+
 #include <cmath>
 #include <map>
 #include <string>
@@ -14,6 +16,14 @@
 namespace stitch::bench {
 
 enum MeshKind : int { quad_torus = 0, mixed_torus = 1, triangle_torus = 2 };
+
+// The process's peak resident size so far, in GB (getrusage): a benchmark's own when it is the
+// only one the process runs (--benchmark_filter matching one case).
+inline double peak_rss_gb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024 / 1e9;  // ru_maxrss is in kB on Linux
+}
 
 // A torus of m x n quads, all vertices regular.
 inline HalfedgeMesh make_quad_torus(int m, int n) {

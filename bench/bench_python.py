@@ -19,7 +19,7 @@ import stitch
 def python_call(surface, resolution, welded):
     start = time.perf_counter()
     t = surface.tessellate(resolution, welded)
-    arrays = (t.vertices, t.quads, t.normals, t.uvs, t.patches)
+    arrays = (t.vertices, t.quads, t.normals)
     elapsed = time.perf_counter() - start
     del arrays, t
     return elapsed

@@ -1,12 +1,14 @@
 // `stitch smooth` end to end, stage by stage, as the command runs it: read the input file, build
 // the surface, then tessellate and write (streamed: evaluated block by block while writing).
 // Meshes: quad tori and tris+quads tori of about 10k and 100k faces, written at resolution 8 as
-// binary PLY (doubles, and floats as --float writes them), OBJ and STL into a temporary folder.
+// binary PLY (doubles, and floats as --float writes them), OBJ, STL and .glb into a temporary
+// folder.
 //
 // Counters (seconds per iteration, wall clock): read, surface, tessellate+write (the streamed
 // stage), and evaluate_only, the same evaluation in the same blocks on all cores with nothing
 // kept or written. write_share = (tessellate+write - evaluate_only) / total is the
-// share of the whole command that writing costs. Mvertices/s counts output vertices.
+// share of the whole command that writing costs. Mvertices/s counts output vertices. peak_GB: the
+// process's peak resident size (run one case per process for its own).
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -34,15 +36,30 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Formats: 0 binary PLY (doubles), 1 OBJ, 2 STL, 3 binary PLY with --float.
+// Formats: 0 binary PLY (doubles), 1 OBJ, 2 STL, 3 binary PLY with --float, 4 .glb.
 const char* extension(int format) {
   switch (format) {
     case 1:
       return ".obj";
     case 2:
       return ".stl";
+    case 4:
+      return ".glb";
     default:
       return ".ply";
+  }
+}
+
+stitch::MeshFileFormat mesh_format(int format) {
+  switch (format) {
+    case 1:
+      return stitch::MeshFileFormat::obj;
+    case 2:
+      return stitch::MeshFileFormat::stl;
+    case 4:
+      return stitch::MeshFileFormat::glb;
+    default:
+      return stitch::MeshFileFormat::ply;
   }
 }
 
@@ -69,11 +86,9 @@ void BM_smooth(benchmark::State& state) {
     start = Clock::now();
     stitch::SurfaceFileOptions file;
     file.single_precision = state.range(2) == 3;
-    const stitch::MeshFileFormat format = state.range(2) == 1   ? stitch::MeshFileFormat::obj
-                                          : state.range(2) == 2 ? stitch::MeshFileFormat::stl
-                                                                : stitch::MeshFileFormat::ply;
-    vertices +=
-        stitch::write_smooth_surface(output, format, mesh, surface, kResolution, file).vertices;
+    vertices += stitch::write_smooth_surface(output, mesh_format(static_cast<int>(state.range(2))),
+                                             mesh, surface, kResolution, file)
+                    .vertices;
     write += seconds_since(start);
 
     state.PauseTiming();
@@ -99,13 +114,14 @@ void BM_smooth(benchmark::State& state) {
   state.counters["evaluate_only"] = evaluate_only / n;
   state.counters["write_share"] = std::max(0.0, write - evaluate_only) / total;
   state.counters["Mvertices/s"] = static_cast<double>(vertices) / total / 1e6;
+  state.counters["peak_GB"] = peak_rss_gb();
   state.SetLabel(mesh_label(kind, generated) + ", " + extension(state.range(2)) +
                  (state.range(2) == 3 ? " --float" : ""));
 }
 
 BENCHMARK(BM_smooth)
     ->ArgNames({"mesh", "faces", "format"})
-    ->ArgsProduct({{quad_torus, mixed_torus}, {10000, 100000}, {0, 1, 2, 3}})
+    ->ArgsProduct({{quad_torus, mixed_torus}, {10000, 100000}, {0, 1, 2, 3, 4}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

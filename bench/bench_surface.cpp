@@ -299,7 +299,9 @@ struct Kept {
 /// One run of the full pipeline: the mdc surface and its welded tessellation at kResolution,
 /// into `kept` for output 2, else into a new surface and result.
 void run_pipeline(const HalfedgeMesh& mesh, int output, Kept& kept) {
-  const stitch::TessellationOptions options{kResolution, true, output == 0};
+  const bool attributes = output == 0;
+  const stitch::TessellationOptions options{
+      .resolution = kResolution, .uv = attributes, .patch = attributes, .level = attributes};
   if (output == 2) {
     if (kept.surface)
       kept.surface->rebuild(mesh);

@@ -82,9 +82,11 @@ py::list unfolded_tubes(const SurfaceHandle& s) {
   return out;
 }
 
-TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded) {
+TessellationOptions tessellation_options(const SurfaceHandle& s, int resolution, bool welded,
+                                         bool uvs = false, bool patches = false,
+                                         bool levels = false) {
   check_tessellation_size(s.patch_mesh(), resolution);
-  return {resolution, welded};
+  return {.resolution = resolution, .welded = welded, .uv = uvs, .patch = patches, .level = levels};
 }
 
 TessellatedMesh run_tessellate(const SurfaceHandle& s, const TessellationOptions& options) {
@@ -444,13 +446,15 @@ void bind_surface(py::module_& m) {
       .def_property_readonly(
           "uvs",
           [](const py::object& self) { return view_rows<double, 2>(samples(self).uv, self); },
-          "(n, 2) float64: each sample's (u, v) in its patch")
+          "(n, 2) float64: each sample's (u, v) in its patch (tessellate(uvs=True); else (0, 2))")
       .def_property_readonly(
           "patches", [](const py::object& self) { return view(samples(self).patch, self); },
-          "(n,) int32: the patch (corner, half-edge index) each sample lies on")
+          "(n,) int32: the patch (corner, half-edge index) each sample lies on "
+          "(tessellate(patches=True); else empty)")
       .def_property_readonly(
           "levels", [](const py::object& self) { return view(samples(self).level, self); },
-          "(n,) int32: hierarchy level of the sub-patch each sample came from")
+          "(n,) int32: hierarchy level of the sub-patch each sample came from "
+          "(tessellate(levels=True); else empty)")
       .def_property_readonly(
           "quads",
           [](const py::object& self) { return view_rows<int, 4>(samples(self).quads, self); },
@@ -600,16 +604,21 @@ void bind_surface(py::module_& m) {
            py::arg("uv") = py::none(), py::arg("uvs") = py::none(), texcoords_doc.c_str())
       .def(
           "tessellate",
-          [](const SurfaceHandle& s, int resolution, bool welded) {
-            return py::cast(run_tessellate(s, tessellation_options(s, resolution, welded)));
+          [](const SurfaceHandle& s, int resolution, bool welded, bool uvs, bool patches,
+             bool levels) {
+            return py::cast(run_tessellate(
+                s, tessellation_options(s, resolution, welded, uvs, patches, levels)));
           },
-          py::arg("resolution") = kDefaultResolution, py::arg("welded") = true,
+          py::arg("resolution") = kDefaultResolution, py::arg("welded") = true, py::kw_only(),
+          py::arg("uvs") = false, py::arg("patches") = false, py::arg("levels") = false,
           "Samples every patch on a (resolution + 1)^2 grid. welded: one watertight mesh "
           "sharing samples on patch boundaries; otherwise every patch's own grid. Both list "
           "the same quads in the same order, patch after patch in the order of patches "
           "(resolution^2 each), so quad q's corners are samples quads[q] of either: the "
           "unwelded ones carry what differs between patches at a shared sample (normals across "
-          "a crease, texcoords across a seam).")
+          "a crease, texcoords across a seam). The result has vertices, normals and quads; uvs, "
+          "patches, levels: also each sample's (u, v) in its patch, its patch, its level (empty "
+          "arrays unless asked: 24 bytes per vertex together).")
       .def("evaluate", &evaluate, py::arg("patches"), py::arg("u"), py::arg("v"),
            "Exact evaluation at (patch, u, v), vectorised: the arguments broadcast against each "
            "other. A patch is its number (see patches) or its name \"V@F\"; an array of names "

@@ -22,6 +22,7 @@ inline void expect_same_as_rebuild(const IncrementalSurface& live, const Halfedg
   TessellationOptions t;
   t.resolution = live.resolution();
   t.welded = false;
+  t.uv = t.patch = t.level = true;
   const TessellatedMesh expected = tessellate(mesh, fresh, t);
   const TessellatedMesh& got = live.tessellation();
   // Live corner k's block in `expected` is corner c's slot in `got` (blocks indexed by corner).

@@ -1,10 +1,16 @@
 // The surface check on known geometry: crossing triangles, folded strips, degenerate and
 // inconsistently oriented triangles are found, and nothing is found on clean closed surfaces.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <string>
 
 #include "stitch/analysis/surface_check.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/mesh/io.hpp"
 #include "stitch/mesh/polygon.hpp"
+#include "stitch/tess/tessellate.hpp"
+#include "stitch/topology/operation.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
 
@@ -149,6 +155,136 @@ TEST(SurfaceCheck, QuadsAreSplitAlongTheirShorterDiagonal) {
   soup.faces = {{0, 1, 2, 3}};
   const TriangleSoup triangles = triangulate(soup);
   EXPECT_EQ(triangles.triangles, (std::vector<Tri>{Tri{0, 1, 3}, Tri{1, 2, 3}}));
+}
+
+TEST(SurfaceCheck, FoldsAreBeyondTheFoldAngleNotAtIt) {
+  // Two triangles on the edge (0,0,0)-(1,0,0) at exactly a right angle, as a box's faces meet:
+  // their normals are perpendicular to the bit, which is no fold; a little further is one.
+  const auto wedge = [](double lean) {
+    return soup_of({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, lean, 1}}, {{0, 1, 2}, {1, 0, 3}});
+  };
+  EXPECT_EQ(check_surface(wedge(0)).folds, 0);
+  EXPECT_EQ(check_surface(wedge(0.01)).folds, 1);
+}
+
+/// The pairs a check should find, pair by pair over all of them: crossings of triangles that
+/// share at most a vertex (the tests check_surface runs, without its grid).
+int brute_force_crossings(const TriangleSoup& s) {
+  int found = 0;
+  for (size_t i = 0; i < s.triangles.size(); ++i)
+    for (size_t j = i + 1; j < s.triangles.size(); ++j) {
+      const auto &a = s.triangles[i], &b = s.triangles[j];
+      int shared = 0;
+      for (int x : a)
+        for (int y : b) shared += x == y;
+      if (shared > 0) continue;
+      const auto& P = s.positions;
+      found += triangles_intersect(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
+    }
+  return found;
+}
+
+TEST(SurfaceCheck, TheGridFindsEveryCrossingOnceWhateverTheTrianglesSizes) {
+  // A sphere of small triangles cut by two large ones (each over many cells and tiles of the
+  // grid) and by a small one through its side: every crossing pair once.
+  TriangleSoup s = triangulate(sphere_soup());
+  const int base = static_cast<int>(s.positions.size());
+  for (const Vec3& p :
+       {Vec3(-3, -3, 0.1), Vec3(3, -3, 0.1), Vec3(0, 3, 0.1), Vec3(-3, 0.2, -3), Vec3(3, 0.2, -3),
+        Vec3(0, 0.2, 3), Vec3(0.9, 0, 0), Vec3(1.2, 0.1, 0), Vec3(1.1, -0.1, 0.1)})
+    s.positions.push_back(p);
+  for (int t = 0; t < 3; ++t) {
+    s.triangles.push_back({base + 3 * t, base + 3 * t + 1, base + 3 * t + 2});
+    s.source.push_back(static_cast<int>(s.source.size()));
+  }
+  const int expected = brute_force_crossings(s);
+  ASSERT_GT(expected, 100);
+  const SurfaceCheckReport r = check_surface(s);
+  EXPECT_EQ(r.self_intersections, expected);
+  EXPECT_EQ(r.folds, 0);
+  // The pairs listed are the first by triangle number.
+  ASSERT_EQ(r.intersecting_pairs.size(), 20u);
+  EXPECT_TRUE(std::is_sorted(r.intersecting_pairs.begin(), r.intersecting_pairs.end()));
+}
+
+/// Meshes for the checks of a surface: extraordinary points, a hole made by insert-edge
+/// (a face along one edge twice, deleted elements), a tube whose fitted K-gons fold, and a torus
+/// with a vertex pushed through it.
+std::vector<std::pair<std::string, HalfedgeMesh>> surfaces_to_check() {
+  std::vector<std::pair<std::string, HalfedgeMesh>> out;
+  HalfedgeMesh holed = make_cube();
+  apply_operation(holed, "insert-edge 1@1 5@2");
+  out.emplace_back("holed cube", std::move(holed));
+  HalfedgeMesh tube = make_prism(30);
+  apply_operation(tube, "insert-edge 1@1 31@2");
+  out.emplace_back("folding tube", std::move(tube));
+  HalfedgeMesh pushed = make_torus(12, 8);
+  pushed.position(Vertex(0)) *= 0.1;
+  out.emplace_back("pushed torus", std::move(pushed));
+  return out;
+}
+
+TEST(SurfaceCheck, TheSurfacesCheckIsTheCheckOfItsTessellation) {
+  for (const auto& [name, mesh] : surfaces_to_check())
+    for (const Method method : {Method::mdc, Method::cc})
+      for (const int n : {3, 8}) {
+        const Surface surface(mesh, method);
+        const TessellatedMesh t = tessellate(mesh, surface, {.resolution = n});
+        const SurfaceCheckReport whole = check_surface(triangulate(t));
+        const SurfaceCheckReport streamed = check_surface(mesh, surface, n);
+        const std::string what = name + " " + to_string(method) + " " + std::to_string(n);
+        EXPECT_EQ(streamed.triangles, whole.triangles) << what;
+        EXPECT_EQ(streamed.self_intersections, whole.self_intersections) << what;
+        EXPECT_EQ(streamed.folds, whole.folds) << what;
+        EXPECT_EQ(streamed.degenerate, whole.degenerate) << what;
+        EXPECT_EQ(streamed.inconsistent_edges, whole.inconsistent_edges) << what;
+        // No quad collapses here, so triangle 2q + s of the one is triangle 2q + s of the other.
+        EXPECT_EQ(streamed.intersecting_pairs, whole.intersecting_pairs) << what;
+        EXPECT_EQ(streamed.folded_pairs, whole.folded_pairs) << what;
+        if (name == "folding tube" && method == Method::mdc) {
+          EXPECT_GT(whole.folds, 0) << what;
+        }
+        if (name == "pushed torus") {
+          EXPECT_GT(whole.self_intersections, 0) << what;
+        }
+      }
+}
+
+TEST(SurfaceCheck, TheSurfacesCheckDoesNotDependOnThreads) {
+  const HalfedgeMesh mesh = surfaces_to_check()[2].second;
+  const Surface surface(mesh, Method::mdc);
+  const auto run = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return check_surface(mesh, surface, 8);
+  };
+  const SurfaceCheckReport one = run(1), two = run(2);
+  EXPECT_EQ(one.self_intersections, two.self_intersections);
+  EXPECT_EQ(one.intersecting_pairs, two.intersecting_pairs);
+  EXPECT_GT(one.self_intersections, 0);
+}
+
+TEST(SurfaceCheck, CreasesAndConePointsAreNoFolds) {
+  // Infinitely sharp edges: the top loop of a cube, every edge of OpenSubdiv's cubes (corners:
+  // cone points), every edge of a tetrahedron (creases sharper than a right angle).
+  HalfedgeMesh tetrahedron = make_tetrahedron();
+  for (Edge e : tetrahedron.edges()) tetrahedron.set_sharpness(e, 10);
+  std::vector<std::pair<std::string, HalfedgeMesh>> creased;
+  creased.emplace_back("cube_creased",
+                       read_mesh(std::string(STITCH_SOURCE_DIR) + "/examples/cube_creased.obj"));
+  creased.emplace_back("catmark_cubes_infsharp",
+                       read_mesh(std::string(STITCH_TEST_DATA_DIR) +
+                                 "/opensubdiv-shapes/catmark_cubes_infsharp.obj"));
+  creased.emplace_back("creased tetrahedron", std::move(tetrahedron));
+  for (const auto& [name, mesh] : creased) {
+    const Surface surface(mesh, Method::mdc);
+    const SurfaceCheckReport r = check_surface(mesh, surface, 8);
+    EXPECT_EQ(r.folds, 0) << name << "\n" << r.describe_quads();
+    // A file has no crease tags: there the rule is the fold angle, which faces meeting at a right
+    // angle (the cubes' creases) pass and sharper creases (the tetrahedron's) do not.
+    const SurfaceCheckReport file =
+        check_surface(triangulate(tessellate(mesh, surface, {.resolution = 8})));
+    EXPECT_EQ(file.folds > 0, name == "creased tetrahedron") << name << "\n" << file.folds;
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Writing the smooth surface: the streamed writer gives the same bytes as tessellating first, the
 // bytes do not depend on the number of threads, and every format reads back.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -8,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -29,12 +31,29 @@ using testing::read_file;
 using testing::TempFolder;
 
 /// The streamed formats with the extensions their files get.
-constexpr std::array<std::pair<MeshFileFormat, const char*>, 4> kStreamed{{
+constexpr std::array<std::pair<MeshFileFormat, const char*>, 6> kStreamed{{
     {MeshFileFormat::obj, ".obj"},
     {MeshFileFormat::ply, ".ply"},
     {MeshFileFormat::off, ".off"},
     {MeshFileFormat::stl, ".stl"},
+    {MeshFileFormat::glb, ".glb"},
+    {MeshFileFormat::gltf, ".gltf"},
 }};
+
+/// `name` in the subfolder `sub` of the folder (made if need be): files of one run keep the
+/// names of another's, as a .gltf names its .bin.
+std::string file_in(const TempFolder& folder, const std::string& sub, const std::string& name) {
+  std::filesystem::create_directories(folder.file(sub));
+  return folder.file(sub + "/" + name);
+}
+
+/// The bytes of a written surface file, a .gltf's followed by its buffer's.
+std::string surface_bytes(const std::string& path) {
+  std::string bytes = read_file(path);
+  if (path.ends_with(".gltf"))
+    bytes += read_file(std::filesystem::path(path).replace_extension(".bin").string());
+  return bytes;
+}
 
 /// A mesh with every kind of element the layout numbers: extraordinary vertices and faces, a
 /// face that runs along one edge twice (a hole made by insert-edge), and deleted elements.
@@ -51,11 +70,12 @@ std::vector<std::string> written_with(int threads, const HalfedgeMesh& mesh, con
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   std::vector<std::string> files;
   for (const auto& [format, ext] : kStreamed) {
-    const std::string path = folder.file("smooth" + std::to_string(threads) + ext);
+    const std::string path =
+        file_in(folder, "threads" + std::to_string(threads), "surface" + std::string(ext));
     SurfaceFileOptions options;
     options.ascii_ply = ascii;
     write_smooth_surface(path, format, mesh, surface, 5, options);
-    files.push_back(read_file(path));
+    files.push_back(surface_bytes(path));
   }
   return files;
 }
@@ -76,9 +96,9 @@ TEST(SmoothSurfaceFile, SameBytesWithOneOrTwoThreadsAndAsTessellatingFirst) {
       options.ascii_ply = ascii;
       size_t i = 0;
       for (const auto& [format, ext] : kStreamed) {
-        const std::string path = folder.file(std::string("memory") + ext);
+        const std::string path = file_in(folder, "memory", "surface" + std::string(ext));
         write_surface_mesh(path, format, tessellated, options);
-        EXPECT_EQ(read_file(path), one[i++]) << to_string(method) << ext;
+        EXPECT_EQ(surface_bytes(path), one[i++]) << to_string(method) << ext;
       }
     }
   }
@@ -89,7 +109,9 @@ TEST(SmoothSurfaceFile, TessellationDoesNotDependOnThreads) {
   const Surface surface(mesh, Method::mdc);
   const auto run = [&](int threads, bool welded) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return tessellate(mesh, surface, {7, welded});
+    return tessellate(
+        mesh, surface,
+        {.resolution = 7, .welded = welded, .uv = true, .patch = true, .level = true});
   };
   for (const bool welded : {true, false}) {
     const TessellatedMesh a = run(1, welded), b = run(2, welded);
@@ -284,6 +306,13 @@ TEST(SmoothCommand, RefusesUpFrontWhatWouldNotFitInMemory) {
   EXPECT_NE(refused.err.find("more than the 0.10 GB allowed by --max-memory"), std::string::npos)
       << refused.err;
   EXPECT_FALSE(std::filesystem::exists(folder.file("u.ply")));
+  // glTF and STL are streamed like PLY: a resolution whose whole tessellation (about 0.2 GB)
+  // would not fit is written.
+  for (const char* out : {"s.glb", "s.stl"}) {
+    const auto streamed = testing::stitch_cli(
+        folder, fmt::format("smooth torus.obj -o {} --resolution 32 --max-memory 0.1", out));
+    EXPECT_EQ(streamed.status, 0) << streamed.err;
+  }
 }
 
 }  // namespace

@@ -77,7 +77,9 @@ TEST(Tessellate, NormalsPointOutwardOnAConvexShape) {
 TEST(Tessellate, UnweldedKeepsEveryPatchGridWithItsParameters) {
   const HalfedgeMesh tet = test::tetrahedron_mesh();
   const int n = 5;
-  const TessellatedMesh s = tessellate(tet, Surface(tet, Method::mdc), {n, false});
+  const TessellatedMesh s =
+      tessellate(tet, Surface(tet, Method::mdc),
+                 {.resolution = n, .welded = false, .uv = true, .level = true});
   ASSERT_EQ(s.num_vertices(), 12 * (n + 1) * (n + 1));
   ASSERT_EQ(static_cast<int>(s.quads.size()), 12 * n * n);
   for (int i = 0; i < s.num_vertices(); ++i) {
@@ -117,7 +119,7 @@ TEST(Tessellate, EveryVertexIsItsSamplesEvaluatedOneByOneAndQuadsAreTheLayouts) 
         for (const bool welded : {true, false}) {
           const Surface surface(*mesh, method);
           TessellationOptions options{n, welded};
-          options.sample_attributes = true;
+          options.uv = options.patch = options.level = true;
           const TessellatedMesh s = tessellate(*mesh, surface, options);
           const TessellationLayout layout(*mesh, surface.corners(), n, welded);
           ASSERT_EQ(s.num_vertices(), layout.num_vertices());
@@ -229,14 +231,21 @@ TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
     EXPECT_EQ(reused.patch, fresh.patch);
     EXPECT_EQ(reused.level, fresh.level);
     EXPECT_EQ(reused.quads, fresh.quads);
-    EXPECT_EQ(reused.uv.empty(), !options.sample_attributes);
+    EXPECT_EQ(reused.uv.empty(), !options.uv);
+    EXPECT_EQ(reused.patch.empty(), !options.patch);
+    EXPECT_EQ(reused.level.empty(), !options.level);
   };
-  expect_fresh(big, big_surface, {5, true, true});
+  const auto all = [](int n, bool welded) {
+    return TessellationOptions{
+        .resolution = n, .welded = welded, .uv = true, .patch = true, .level = true};
+  };
+  expect_fresh(big, big_surface, all(5, true));
   const void* storage = reused.positions.data();
-  expect_fresh(small, small_surface, {3, true, false});
+  expect_fresh(small, small_surface, {.resolution = 3});
   EXPECT_EQ(reused.positions.data(), storage) << "smaller output reallocated";
-  expect_fresh(small, small_surface, {4, false, true});
-  expect_fresh(big, big_surface, {6, true, true});
+  expect_fresh(small, small_surface, all(4, false));
+  expect_fresh(small, small_surface, {.resolution = 4, .welded = false, .patch = true});
+  expect_fresh(big, big_surface, all(6, true));
 }
 
 // Kept quads (index_buffer = false): after every vertex of a torus moved (fixed offsets, no
@@ -247,7 +256,8 @@ TEST(Tessellate, IntoReusedArraysEqualsAFreshTessellation) {
 TEST(Tessellate, KeptQuadsAfterVertexMovesEqualAFreshTessellation) {
   HalfedgeMesh mesh = make_primitive("torus", {8, 6});
   for (const bool welded : {true, false}) {
-    const TessellationOptions full{5, welded, true}, keep{5, welded, true, false};
+    const TessellationOptions full{.resolution = 5, .welded = welded, .uv = true},
+        keep{.resolution = 5, .welded = welded, .uv = true, .index_buffer = false};
     TessellatedMesh kept = tessellate(mesh, Surface(mesh, Method::mdc), full);
     for (Vertex v : mesh.vertices())
       mesh.position(v) += Vec3(0.01 * (v.idx % 3), -0.02 * (v.idx % 5), 0.015 * (v.idx % 7));
@@ -260,9 +270,13 @@ TEST(Tessellate, KeptQuadsAfterVertexMovesEqualAFreshTessellation) {
     EXPECT_EQ(kept.quads, fresh.quads) << "welded " << welded;
     // Another resolution has another number of quads: refused, `kept` unchanged.
     const TessellatedMesh before = kept;
-    EXPECT_THROW(tessellate(mesh, moved, {6, welded, true, false}, kept), std::invalid_argument);
+    EXPECT_THROW(
+        tessellate(mesh, moved, {.resolution = 6, .welded = welded, .index_buffer = false}, kept),
+        std::invalid_argument);
     // The other welding has as many quads but not as many vertices: refused too.
-    EXPECT_THROW(tessellate(mesh, moved, {5, !welded, true, false}, kept), std::invalid_argument);
+    EXPECT_THROW(
+        tessellate(mesh, moved, {.resolution = 5, .welded = !welded, .index_buffer = false}, kept),
+        std::invalid_argument);
     EXPECT_EQ(kept.positions, before.positions);
     EXPECT_EQ(kept.quads, before.quads);
   }

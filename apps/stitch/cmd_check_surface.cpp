@@ -82,12 +82,14 @@ void add_check_surface_command(CLI::App& app) {
       "check-surface",
       "report self-intersecting, folded and degenerate triangles of a surface mesh (quads are "
       "split along their shorter diagonal, other polygons fanned); exit status 1 when there are "
-      "any");
+      "any. Memory: the file's triangles, checked a region of space at a time on every core");
   cmd->add_option("MESH", args->path, "surface mesh (" + extension_list(kMeshReadExtensions) + ")")
       ->required();
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--fold-angle", args->options.fold_angle_deg,
-                  "adjacent triangles fold when their normals differ by more than this, degrees")
+                  "adjacent triangles fold when their normals differ by more than this, degrees "
+                  "(a file marks no creases: faces meeting at a right angle pass, sharper creases "
+                  "count; stitch smooth --check knows the mesh's creases)")
       ->check(finite_range(0.0, 180.0))
       ->capture_default_str();
   cmd->add_option("--through", args->through,

@@ -48,23 +48,30 @@ void warn(const std::string& path, const std::string& what) {
   fmt::print(stderr, "stitch: warning: {}: {}\n", path, what);
 }
 
-/// --check: the triangles as written, checked whole (as stitch check-surface would check the
-/// file); a warning, not a failure: the file is what was asked for.
+/// --check: the triangles as written (as stitch check-surface would check the file, and knowing
+/// the creases); a warning, not a failure: the file is what was asked for.
 void warn_if_not_clean(StageReporter& stage, const SmoothArgs& a, const HalfedgeMesh& mesh,
                        const Surface& surface) {
   stage.begin("checking the surface");
   const bool adaptive = a.spec.adaptive_tolerance > 0;
-  // The same tessellation as written (the streamed writer does not keep it).
-  const TriangleSoup tris =
-      adaptive ? triangulate(tessellate_adaptive(mesh, surface, {a.spec.adaptive_tolerance}))
-               : triangulate(tessellate(mesh, surface, {a.spec.resolution, true, false}));
-  const SurfaceCheckReport r = check_surface(tris);
+  std::string problems;
+  if (adaptive) {
+    // The same triangles as written (the writer does not keep them).
+    const TriangleSoup tris =
+        triangulate(tessellate_adaptive(mesh, surface, {a.spec.adaptive_tolerance}));
+    const SurfaceCheckReport r = check_surface(tris);
+    if (!r.clean()) problems = r.describe(tris);
+  } else {
+    // The tessellation as written, a region at a time, knowing the surface's creases.
+    const SurfaceCheckReport r = check_surface(mesh, surface, a.spec.resolution);
+    if (!r.clean()) problems = r.describe_quads();
+  }
   stage.end();
-  if (!r.clean())
+  if (!problems.empty())
     warn(a.out, fmt::format("the surface is not clean at {}:\n{}",
                             adaptive ? fmt::format("tolerance {}", a.spec.adaptive_tolerance)
                                      : fmt::format("resolution {}", a.spec.resolution),
-                            r.describe(tris)));
+                            problems));
 }
 
 /// Refuses up front, with the estimate and the limit, a run that would not fit in memory.
@@ -79,10 +86,11 @@ void check_memory(const SmoothArgs& a, const HalfedgeMesh& mesh, const OutputFor
         a.in.path, static_cast<int>(mesh.patch_corners().size()), a.spec.resolution,
         a.spec.unwelded ? " unwelded" : "", need / 1e9, limit / 1e9,
         a.max_memory_gb > 0 ? "allowed by --max-memory" : "available",
-        format.memory == MemoryModel::streamed && !a.spec.unwelded
+        output_streams(format, a.spec)
             ? "the mesh itself is too large for this machine"
-            : fmt::format("write a welded {} (streamed) or lower --resolution",
-                          output_formats().front().extensions[0])));
+            : fmt::format("write a welded {} (streamed){} or lower --resolution",
+                          output_formats().front().extensions[0],
+                          a.spec.uvs ? ", or without texture coordinates (--uv none)" : "")));
 }
 
 /// The UVs to write, or null with a warning saying why the input's are not written.
@@ -158,6 +166,7 @@ void run_smooth(SmoothArgs& a) {
   const std::unique_ptr<UvSurface> uvs =
       uv_surface(a, surface_mesh, built.kgons, report, format, stage);
   a.spec.uvs = uvs.get();
+  if (uvs) check_memory(a, surface_mesh, format);  // glTF holds a tessellation with UVs whole
   a.spec.progress = [&stage](double done) { stage.fraction(done); };
   a.spec.note = [&stage](const std::string& line) { stage.note(line); };
   if (!a.patches.empty()) {
@@ -235,8 +244,10 @@ void add_smooth_command(CLI::App& app) {
   cmd->add_flag(
       "--check", args->check,
       "after writing a mesh, check the surface at the written resolution or tolerance for "
-      "folded, self-intersecting and degenerate triangles (as stitch check-surface does) and "
-      "warn on stderr; the exit status stays 0");
+      "folded, self-intersecting and degenerate triangles (as stitch check-surface does, but "
+      "knowing the mesh's infinitely sharp creases and cone points, where triangles may meet at "
+      "any angle) and warn on stderr; the exit status stays 0. In bounded memory: the patches "
+      "are evaluated again a region of space at a time");
   add_kgon_options(cmd, args->kgon, &args->in);
   // One --tolerance, relative to the model size, for both kinds of output: for a mesh output it
   // asks for adaptive triangles instead of a fixed resolution.

@@ -1,16 +1,17 @@
 #include "stitch/analysis/surface_check.hpp"
 
 #include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -121,14 +122,22 @@ TriangleSoup triangulate(const AdaptiveMesh& surface) {
 
 TriangleSoup triangulate(const PolygonSoup& polygons) {
   TriangleSoup soup;
-  std::map<std::array<double, 3>, int> index;
-  std::vector<int> weld(polygons.positions.size());
-  for (size_t v = 0; v < polygons.positions.size(); ++v) {
-    const Vec3& p = polygons.positions[v];
-    const auto [it, fresh] = index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()},
-                                           static_cast<int>(soup.positions.size()));
-    if (fresh) soup.positions.push_back(p);
-    weld[v] = it->second;
+  // Equal positions are one vertex, numbered in order of first appearance: sorted by position
+  // (then index), each run's first is the vertex the others become.
+  const std::vector<Vec3>& P = polygons.positions;
+  std::vector<int> order(P.size()), weld(P.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto key = [&](int v) { return std::tuple(P[v].x(), P[v].y(), P[v].z(), v); };
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  for (size_t k = 0; k < order.size(); ++k)
+    weld[order[k]] = k > 0 && P[order[k]] == P[order[k - 1]] ? weld[order[k - 1]] : order[k];
+  for (size_t v = 0; v < P.size(); ++v) {
+    if (weld[v] == static_cast<int>(v)) {
+      weld[v] = static_cast<int>(soup.positions.size());
+      soup.positions.push_back(P[v]);
+    } else {
+      weld[v] = weld[weld[v]];  // an earlier vertex, already renumbered
+    }
   }
   for (int f = 0; f < static_cast<int>(polygons.faces.size()); ++f) {
     const auto& loop = polygons.faces[f];
@@ -168,42 +177,437 @@ bool triangles_intersect(const Vec3& a0, const Vec3& a1, const Vec3& a2, const V
   return std::min(hi_a, hi_b) > std::max(lo_a, lo_b);
 }
 
-/// Both checks: the whole surface (focus empty) and the part of it near an edit (focus[t] for
-/// the triangles whose problems count; pairs count when either triangle is in focus).
-SurfaceCheckReport detail::check_triangles(std::span<const Vec3> P,
-                                           std::span<const std::array<int, 3>> T,
-                                           std::span<const char> focus,
-                                           const SurfaceCheckOptions& options) {
-  SurfaceCheckReport report;
-  auto focused = [&](int t) { return focus.empty() || focus[t] != 0; };
-  const int nt = static_cast<int>(T.size());
-  report.triangles = nt;
-  if (nt == 0) return report;
+namespace detail {
 
-  Vec3 lo = P[T[0][0]], hi = lo;
-  for (const auto& t : T)
-    for (int v : t) {
-      lo = lo.cwiseMin(P[v]);
-      hi = hi.cwiseMax(P[v]);
+namespace {
+
+/// The thresholds of a check, from its options and the model's size.
+struct CheckParams {
+  double cos_fold = 0;    ///< normals fold below this cosine
+  double tiny_area = 0;   ///< twice the area of a degenerate triangle, at most
+  double eps = 0;         ///< distance to a plane that counts as on it
+  bool focus_all = true;  ///< no focus flags: every triangle counts
+};
+
+CheckParams check_params(const CheckGrid& grid, const SurfaceCheckOptions& options) {
+  CheckParams p;
+  // sin of the complement rather than cos: exactly 0 at 90 degrees, so that faces meeting at a
+  // right angle (a box's creases and corners, flat to round-off) are not a fold; std::cos gives
+  // 6e-17 there, which made every such pair one.
+  p.cos_fold = std::sin((90 - options.fold_angle_deg) * std::numbers::pi / 180);
+  const double diag = grid.diagonal();
+  p.tiny_area = options.degenerate_relative_area * diag * diag;
+  p.eps = 1e-12 * diag;
+  return p;
+}
+
+/// Items grouped by a 64-bit key without sorting them: an open-addressing table of keys, each
+/// with the chain of its items (latest first). A tile's edges and cells are grouped so; sorting
+/// them was a fifth of the check.
+class KeyChains {
+ public:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  ///< no key is all ones
+  /// Room for `items` items, none held.
+  void reset(size_t items) {
+    size_t size = 16;
+    shift_ = 60;
+    while (size < 2 * items) {
+      size *= 2;
+      --shift_;
     }
-  const double diag = (hi - lo).norm();
-  detail::ScratchVector<Vec3> normal(nt);
-  detail::ScratchVector<char> degenerate(nt, 0);
-  for (int i = 0; i < nt; ++i) {
-    normal[i] = (P[T[i][1]] - P[T[i][0]]).cross(P[T[i][2]] - P[T[i][0]]);
-    if (normal[i].norm() <= options.degenerate_relative_area * diag * diag) {
-      degenerate[i] = 1;
-      if (!focused(i)) continue;
-      ++report.degenerate;
-      if (static_cast<int>(report.degenerate_triangles.size()) < options.max_listed)
-        report.degenerate_triangles.push_back(i);
+    mask_ = size - 1;
+    keys_.assign(size, kEmpty);
+    head_.resize(size);
+    next_.resize(items);
+  }
+  void add(std::uint64_t key, int item) {
+    // Fibonacci hashing: the product's top bits depend on all of the key's.
+    size_t at = key * 0x9E3779B97F4A7C15u >> shift_;
+    while (keys_[at] != kEmpty && keys_[at] != key) at = (at + 1) & mask_;
+    next_[static_cast<size_t>(item)] = keys_[at] == key ? head_[at] : -1;
+    keys_[at] = key;
+    head_[at] = item;
+  }
+  /// visit(key, first item) for every key; next(item) follows its chain to -1.
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    for (size_t at = 0; at < keys_.size(); ++at)
+      if (keys_[at] != kEmpty) visit(keys_[at], head_[at]);
+  }
+  [[nodiscard]] int next(int item) const { return next_[static_cast<size_t>(item)]; }
+
+ private:
+  size_t mask_ = 0;
+  int shift_ = 60;
+  ScratchVector<std::uint64_t> keys_;
+  ScratchVector<int> head_, next_;
+};
+
+/// Working arrays of one thread, kept from tile to tile.
+struct TileScratch {
+  TileTriangles triangles;
+  ScratchVector<Vec3> normal;
+  ScratchVector<Vec3> lo, hi;                  ///< each triangle's box
+  ScratchVector<CheckGrid::Cell> first, last;  ///< its cells, in the whole grid
+  ScratchVector<CheckGrid::Cell> corner_cell;  ///< three per triangle
+  ScratchVector<char> degenerate;
+  struct EdgeUse {
+    int triangle;
+    std::uint8_t side;  ///< the edge's index in its triangle
+    bool forward;       ///< from the lower vertex number to the higher
+  };
+  ScratchVector<EdgeUse> edges;
+  KeyChains by_edge;
+  ScratchVector<int> cell_head;     ///< by cell of the tile: its latest entry, -1: none
+  ScratchVector<int> in_cell;       ///< by entry: its triangle
+  ScratchVector<int> next_in_cell;  ///< by entry: the cell's entry before, -1: none
+  ScratchVector<int> used_cells;    ///< the cells with entries, in order of their first
+  ScratchVector<int> large;         ///< triangles over too many of the tile's cells
+  struct InRun {
+    Vec3 lo, hi;  ///< the triangle's box
+    int triangle;
+    std::uint8_t axes;  ///< bit a: the triangle's first cell is this cell's along axis a
+  };
+  ScratchVector<InRun> run;  ///< the triangles of one cell
+};
+
+/// A tile's cells along each axis take this many bits in a key of TileScratch::in_cell.
+constexpr int kTileBits = 7;
+/// Triangles over more of a tile's cells than this are tested against all of its triangles.
+constexpr std::int64_t kMostCells = 64;
+
+CheckGrid::Cell min_cell(const CheckGrid::Cell& a, const CheckGrid::Cell& b) {
+  return {std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2])};
+}
+
+CheckGrid::Cell max_cell(const CheckGrid::Cell& a, const CheckGrid::Cell& b) {
+  return {std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])};
+}
+
+/// Keeps the `most` smallest entries, sorted.
+template <class T>
+void keep_smallest(std::vector<T>& list, int most) {
+  std::sort(list.begin(), list.end());
+  if (static_cast<int>(list.size()) > most) list.resize(static_cast<size_t>(most));
+}
+
+/// Adds what `part` found to `into` (whose triangle count stays).
+void merge(SurfaceCheckReport& into, const SurfaceCheckReport& part, int most) {
+  into.self_intersections += part.self_intersections;
+  into.folds += part.folds;
+  into.degenerate += part.degenerate;
+  into.inconsistent_edges += part.inconsistent_edges;
+  const auto append = [most](auto& list, const auto& more) {
+    list.insert(list.end(), more.begin(), more.end());
+    keep_smallest(list, most);
+  };
+  append(into.intersecting_pairs, part.intersecting_pairs);
+  append(into.folded_pairs, part.folded_pairs);
+  append(into.degenerate_triangles, part.degenerate_triangles);
+}
+
+/// Two triangles on one edge: running along it the same way is an inconsistent edge; otherwise,
+/// when `fold` is asked (neither is degenerate, the edge is no crease and touches no cone
+/// point), normals further apart than the fold angle are a fold. `pair`: their numbers.
+void check_edge_pair(bool same_direction, bool fold, const Vec3& ni, const Vec3& nj,
+                     double cos_fold, const std::array<int, 2>& pair, SurfaceCheckReport& out) {
+  if (same_direction) {
+    ++out.inconsistent_edges;
+    return;
+  }
+  if (fold && ni.dot(nj) < cos_fold * ni.norm() * nj.norm()) {
+    ++out.folds;
+    out.folded_pairs.push_back(pair);
+  }
+}
+
+void check_tile(const CheckGrid& grid, std::uint32_t key, unsigned passes, const CheckParams& p,
+                const SurfaceCheckOptions& options, TileScratch& s, SurfaceCheckReport& out) {
+  const TileTriangles& t = s.triangles;
+  const int n = t.size();
+  const CheckGrid::Cell origin = grid.tile_origin(key);
+  const int side = grid.tile_cells();
+  const auto inside = [&](const CheckGrid::Cell& c) {
+    for (int a = 0; a < 3; ++a)
+      if (c[a] < origin[a] || c[a] >= origin[a] + side) return false;
+    return true;
+  };
+  const auto focused = [&](int i) { return p.focus_all || (t.flags[i] & kInFocus) != 0; };
+  const auto corner = [&](int i, int k) -> const Vec3& { return t.corners[3 * i + k]; };
+  s.normal.resize(static_cast<size_t>(n));
+  s.lo.resize(static_cast<size_t>(n));
+  s.hi.resize(static_cast<size_t>(n));
+  s.corner_cell.resize(3 * static_cast<size_t>(n));
+  s.first.resize(static_cast<size_t>(n));
+  s.last.resize(static_cast<size_t>(n));
+  s.degenerate.assign(static_cast<size_t>(n), 0);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 &a = corner(i, 0), &b = corner(i, 1), &c = corner(i, 2);
+    s.normal[i] = (b - a).cross(c - a);
+    s.lo[i] = a.cwiseMin(b).cwiseMin(c);
+    s.hi[i] = a.cwiseMax(b).cwiseMax(c);
+    // The cell of a box's corner is the least or largest of its points' cells (cell() is
+    // monotone), so three look-ups serve the triangle's box and its edges' boxes.
+    for (int k = 0; k < 3; ++k) s.corner_cell[3 * i + k] = grid.cell(corner(i, k));
+    s.first[i] = min_cell(min_cell(s.corner_cell[3 * i], s.corner_cell[3 * i + 1]),
+                          s.corner_cell[3 * i + 2]);
+    s.last[i] = max_cell(max_cell(s.corner_cell[3 * i], s.corner_cell[3 * i + 1]),
+                         s.corner_cell[3 * i + 2]);
+    if (s.normal[i].norm() > p.tiny_area) continue;
+    s.degenerate[i] = 1;
+    // Counted by the tile of its first cell, which every tile it meets agrees on.
+    if ((passes & kEdges) && focused(i) && inside(s.first[i])) {
+      ++out.degenerate;
+      out.degenerate_triangles.push_back(t.ids[i]);
     }
   }
+  const auto pair = [&](int i, int j) {
+    return std::array<int, 2>{std::min(t.ids[i], t.ids[j]), std::max(t.ids[i], t.ids[j])};
+  };
 
-  // Folds and orientation, over edges shared by two triangles. Sorted runs rather than a map of
-  // lists: one allocation instead of one per edge, which is most of the time on small soups.
-  // Sorted by bucketing on the edge's lower vertex, then sorting each bucket (a vertex is the
-  // lower end of a few edges): a comparison sort of all uses was most of unfold_tubes' time.
+  if (passes & kEdges) {
+    // Folds and orientation over the edges whose box's lowest corner is in this tile: every
+    // triangle on such an edge meets that cell, so it is here.
+    s.edges.clear();
+    s.by_edge.reset(3 * static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t.vertices[i][k], b = t.vertices[i][(k + 1) % 3];
+        if (a == b ||
+            !inside(min_cell(s.corner_cell[3 * i + k], s.corner_cell[3 * i + (k + 1) % 3])))
+          continue;
+        const std::uint64_t edge = static_cast<std::uint64_t>(std::min(a, b)) << 32 |
+                                   static_cast<std::uint32_t>(std::max(a, b));
+        s.by_edge.add(edge, static_cast<int>(s.edges.size()));
+        s.edges.push_back({i, static_cast<std::uint8_t>(k), a < b});
+      }
+    // Whether a triangle meets the crease or cone point at its side k: no fold there.
+    const auto sharp = [&](int i, int k) {
+      const std::uint8_t f = t.flags[i];
+      return (f & (kCreaseEdge << k)) != 0 || (f & (kConeVertex << k)) != 0 ||
+             (f & (kConeVertex << ((k + 1) % 3))) != 0;
+    };
+    s.by_edge.for_each([&](std::uint64_t, int first) {
+      for (int x = first; x >= 0; x = s.by_edge.next(x))
+        for (int y = s.by_edge.next(x); y >= 0; y = s.by_edge.next(y)) {
+          const TileScratch::EdgeUse &u = s.edges[x], &v = s.edges[y];
+          const int i = u.triangle, j = v.triangle;
+          if (!focused(i) && !focused(j)) continue;
+          check_edge_pair(
+              u.forward == v.forward,
+              !s.degenerate[i] && !s.degenerate[j] && !sharp(i, u.side) && !sharp(j, v.side),
+              s.normal[i], s.normal[j], p.cos_fold, pair(i, j), out);
+        }
+    });
+  }
+
+  if (passes & kCrossings) {
+    // Pairs of triangles that share at most a vertex, near each other: in the cell that holds
+    // the lowest corner of the intersection of their boxes, the larger of their first cells.
+    // Boxes apart by more than eps: most pairs that share a cell, for a fraction of the test.
+    const auto apart = [&](const Vec3& lo_i, const Vec3& hi_i, const Vec3& lo_j, const Vec3& hi_j) {
+      return ((lo_i.array() - p.eps) > hi_j.array()).any() ||
+             ((lo_j.array() - p.eps) > hi_i.array()).any();
+    };
+    const auto test = [&](int i, int j) {
+      if (!focused(i) && !focused(j)) return;
+      if (s.degenerate[i] || s.degenerate[j]) return;
+      int shared = 0, si = -1, sj = -1;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          if (t.vertices[i][a] == t.vertices[j][b]) {
+            ++shared;
+            si = a;
+            sj = b;
+          }
+      if (shared >= 2) return;  // edge neighbours: the fold test covers them
+      bool crossing = false;
+      if (shared == 1) {
+        // The edge across from the shared vertex crosses the other triangle only through its
+        // plane: both ends clearly on one side of it (most pairs) rule that out at once.
+        const auto apart = [&](int from, int to, int at) {
+          const Vec3& n = s.normal[to];
+          const Vec3& o = corner(to, 0);
+          const double d1 = n.dot(corner(from, (at + 1) % 3) - o),
+                       d2 = n.dot(corner(from, (at + 2) % 3) - o);
+          const double tolerance = 1e-9 * (std::abs(d1) + std::abs(d2));
+          return (d1 > tolerance && d2 > tolerance) || (d1 < -tolerance && d2 < -tolerance);
+        };
+        if (apart(i, j, si) && apart(j, i, sj)) return;
+        crossing = segment_crosses_interior(corner(i, (si + 1) % 3), corner(i, (si + 2) % 3),
+                                            corner(j, 0), corner(j, 1), corner(j, 2)) ||
+                   segment_crosses_interior(corner(j, (sj + 1) % 3), corner(j, (sj + 2) % 3),
+                                            corner(i, 0), corner(i, 1), corner(i, 2));
+      } else {
+        crossing = triangles_intersect(corner(i, 0), corner(i, 1), corner(i, 2), corner(j, 0),
+                                       corner(j, 1), corner(j, 2), p.eps);
+      }
+      if (!crossing) return;
+      ++out.self_intersections;
+      out.intersecting_pairs.push_back(pair(i, j));
+    };
+    const auto lowest = [&](int i, int j) {
+      return CheckGrid::Cell{std::max(s.first[i][0], s.first[j][0]),
+                             std::max(s.first[i][1], s.first[j][1]),
+                             std::max(s.first[i][2], s.first[j][2])};
+    };
+    // Each cell's triangles as a chain from the cell's head in a flat array over the tile's
+    // cells, which the thread keeps and resets where it was used.
+    const size_t tile_cells = static_cast<size_t>(side) * side * side;
+    if (s.cell_head.size() < tile_cells) s.cell_head.assign(tile_cells, -1);
+    s.in_cell.clear();
+    s.next_in_cell.clear();
+    s.used_cells.clear();
+    s.large.clear();
+    for (int i = 0; i < n; ++i) {
+      CheckGrid::Cell lo, hi;
+      std::int64_t cells = 1;
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::max(s.first[i][a], origin[a]) - origin[a];
+        hi[a] = std::min(s.last[i][a], origin[a] + side - 1) - origin[a];
+        cells *= std::max(0, hi[a] - lo[a] + 1);
+      }
+      if (cells > kMostCells) {
+        s.large.push_back(i);
+        continue;
+      }
+      for (int x = lo[0]; x <= hi[0]; ++x)
+        for (int y = lo[1]; y <= hi[1]; ++y)
+          for (int z = lo[2]; z <= hi[2]; ++z) {
+            const int c = (x * side + y) * side + z;
+            if (s.cell_head[c] < 0) s.used_cells.push_back(c);
+            s.next_in_cell.push_back(s.cell_head[c]);
+            s.cell_head[c] = static_cast<int>(s.in_cell.size());
+            s.in_cell.push_back(i);
+          }
+    }
+    for (const int c : s.used_cells) {
+      const CheckGrid::Cell here{origin[0] + c / (side * side), origin[1] + c / side % side,
+                                 origin[2] + c % side};
+      // The larger of two first cells is this one when, along each axis, either first cell is
+      // here: one bit per axis and triangle, so that the pairs that are some other cell's cost
+      // an OR each; and the boxes, so that most of the others cost a comparison in cache.
+      s.run.clear();
+      for (int e = s.cell_head[c]; e >= 0; e = s.next_in_cell[static_cast<size_t>(e)]) {
+        const int i = s.in_cell[static_cast<size_t>(e)];
+        const CheckGrid::Cell& f = s.first[i];
+        s.run.push_back({s.lo[i], s.hi[i], i,
+                         static_cast<std::uint8_t>((f[0] == here[0]) | (f[1] == here[1]) << 1 |
+                                                   (f[2] == here[2]) << 2)});
+      }
+      s.cell_head[c] = -1;
+      for (size_t x = 0; x < s.run.size(); ++x)
+        for (size_t y = x + 1; y < s.run.size(); ++y) {
+          const TileScratch::InRun &u = s.run[x], &v = s.run[y];
+          if ((u.axes | v.axes) != 7 || apart(u.lo, u.hi, v.lo, v.hi)) continue;
+          test(std::min(u.triangle, v.triangle), std::max(u.triangle, v.triangle));
+        }
+    }
+    // Large triangles against every other one whose box meets theirs (each pair of two large
+    // ones once).
+    for (const int i : s.large)
+      for (int j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const bool other_large = std::binary_search(s.large.begin(), s.large.end(), j);
+        if (other_large && j < i) continue;
+        bool meet = true;
+        for (int a = 0; a < 3 && meet; ++a)
+          meet = std::max(s.first[i][a], s.first[j][a]) <= std::min(s.last[i][a], s.last[j][a]);
+        if (meet && inside(lowest(i, j)) && !apart(s.lo[i], s.hi[i], s.lo[j], s.hi[j])) test(i, j);
+      }
+  }
+  keep_smallest(out.intersecting_pairs, options.max_listed);
+  keep_smallest(out.folded_pairs, options.max_listed);
+  keep_smallest(out.degenerate_triangles, options.max_listed);
+}
+
+}  // namespace
+
+CheckGrid::CheckGrid(const Vec3& lo, const Vec3& hi, double cell, int tile)
+    : origin_(lo), diagonal_((hi - lo).norm()), tile_(std::clamp(tile, 1, 1 << kTileBits)) {
+  // At most 1024 tiles along an axis (10 bits of a tile's key).
+  const double extent = (hi - lo).maxCoeff();
+  cell_ = std::max({cell, extent / (1024.0 * tile_ - 1), 1e-300});
+  inverse_ = 1 / cell_;
+  for (int a = 0; a < 3; ++a)
+    last_[a] = static_cast<int>(std::min(1024.0 * tile_ - 1, std::floor((hi[a] - lo[a]) / cell_)));
+}
+
+std::int64_t CheckGrid::count_tiles(const Vec3& lo, const Vec3& hi) const {
+  const Cell a = cell(lo), b = cell(hi);
+  std::int64_t count = 1;
+  for (int k = 0; k < 3; ++k) count *= b[k] / tile_ - a[k] / tile_ + 1;
+  return count;
+}
+
+void sort_entries(TileRuns& runs) {
+  tbb::parallel_sort(runs.entries.begin(), runs.entries.end());
+  for (size_t e = 0; e < runs.entries.size(); ++e)
+    if (e == 0 || runs.entries[e] >> 32 != runs.entries[e - 1] >> 32) {
+      runs.keys.push_back(static_cast<std::uint32_t>(runs.entries[e] >> 32));
+      runs.starts.push_back(e);
+    }
+  runs.starts.push_back(runs.entries.size());
+}
+
+SurfaceCheckReport check_tiles(std::span<const std::uint32_t> keys, const CheckGrid& grid,
+                               const std::function<void(size_t, TileTriangles&)>& gather,
+                               int triangles, const SurfaceCheckOptions& options, bool focused_only,
+                               unsigned passes) {
+  SurfaceCheckReport report;
+  report.triangles = triangles;
+  CheckParams params = check_params(grid, options);
+  params.focus_all = !focused_only;
+  std::vector<SurfaceCheckReport> found(keys.size());
+  tbb::enumerable_thread_specific<TileScratch> scratch;
+  const auto run = [&](unsigned passes) {
+    tbb::parallel_for(size_t{0}, keys.size(), [&](size_t k) {
+      TileScratch& s = scratch.local();
+      s.triangles.clear();
+      gather(k, s.triangles);
+      check_tile(grid, keys[k], passes, params, options, s, found[k]);
+    });
+  };
+  if (passes == (kEdges | kCrossings) && options.crossings_only_when_unfolded) {
+    run(kEdges);
+    int folds = 0;
+    for (const SurfaceCheckReport& r : found) folds += r.folds;
+    if (folds == 0) run(kCrossings);
+  } else {
+    run(passes);
+  }
+  for (const SurfaceCheckReport& r : found) merge(report, r, options.max_listed);
+  return report;
+}
+
+namespace {
+
+/// Soups of up to this many triangles have their edges checked over the whole soup at once:
+/// faster than tile by tile for the small soups the local check and unfold_tubes' search check
+/// again and again (the soup's vertex numbers are dense, so its edges are bucketed by their
+/// lower vertex without a hash), for 50 bytes per triangle.
+constexpr int kWholeSoupEdges = 1 << 21;
+
+/// Degenerate triangles, folds and orientation over the edges of the whole soup (what check_tile
+/// does a tile at a time).
+SurfaceCheckReport soup_edges(std::span<const Vec3> P, std::span<const std::array<int, 3>> T,
+                              std::span<const char> focus, const CheckParams& params,
+                              const SurfaceCheckOptions& options) {
+  SurfaceCheckReport out;
+  const auto focused = [&](int t) { return focus.empty() || focus[t] != 0; };
+  const auto nt = static_cast<int>(T.size());
+  ScratchVector<Vec3> normal(static_cast<size_t>(nt));
+  ScratchVector<char> degenerate(static_cast<size_t>(nt), 0);
+  for (int i = 0; i < nt; ++i) {
+    normal[i] = (P[T[i][1]] - P[T[i][0]]).cross(P[T[i][2]] - P[T[i][0]]);
+    if (normal[i].norm() > params.tiny_area) continue;
+    degenerate[i] = 1;
+    if (!focused(i)) continue;
+    ++out.degenerate;
+    out.degenerate_triangles.push_back(i);
+  }
+  // Sorted runs rather than a map of lists: bucketed on the edge's lower vertex, then each
+  // bucket sorted (a vertex is the lower end of a few edges).
   struct EdgeUse {
     std::uint64_t edge;
     int triangle;
@@ -212,17 +616,17 @@ SurfaceCheckReport detail::check_triangles(std::span<const Vec3> P,
       return edge != o.edge ? edge < o.edge : triangle < o.triangle;
     }
   };
-  auto key = [](int a, int b) {
+  const auto key = [](int a, int b) {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
            static_cast<std::uint32_t>(std::max(a, b));
   };
-  detail::ScratchVector<int> bucket_start(P.size() + 1, 0);
+  ScratchVector<int> bucket_start(P.size() + 1, 0);
   for (const auto& t : T)
     for (int k = 0; k < 3; ++k) ++bucket_start[std::min(t[k], t[(k + 1) % 3]) + 1];
   for (size_t v = 0; v < P.size(); ++v) bucket_start[v + 1] += bucket_start[v];
-  detail::ScratchVector<EdgeUse> uses(static_cast<size_t>(nt) * 3);
+  ScratchVector<EdgeUse> uses(static_cast<size_t>(nt) * 3);
   {
-    detail::ScratchVector<int> next(bucket_start.begin(), bucket_start.end() - 1);
+    ScratchVector<int> next(bucket_start.begin(), bucket_start.end() - 1);
     for (int i = 0; i < nt; ++i)
       for (int k = 0; k < 3; ++k) {
         const int a = T[i][k], b = T[i][(k + 1) % 3];
@@ -231,142 +635,73 @@ SurfaceCheckReport detail::check_triangles(std::span<const Vec3> P,
   }
   for (size_t v = 0; v < P.size(); ++v)
     std::sort(uses.begin() + bucket_start[v], uses.begin() + bucket_start[v + 1]);
-  const double cos_fold = std::cos(options.fold_angle_deg * std::numbers::pi / 180);
   for (size_t run = 0, end = 0; run < uses.size(); run = end) {
     while (end < uses.size() && uses[end].edge == uses[run].edge) ++end;
     for (size_t x = run; x < end; ++x)
       for (size_t y = x + 1; y < end; ++y) {
         const int i = uses[x].triangle, j = uses[y].triangle;
-        const bool dir_i = uses[x].forward, dir_j = uses[y].forward;
         if (!focused(i) && !focused(j)) continue;
-        if (dir_i == dir_j) {
-          ++report.inconsistent_edges;
-          continue;
-        }
-        if (degenerate[i] || degenerate[j]) continue;
-        if (normal[i].dot(normal[j]) < cos_fold * normal[i].norm() * normal[j].norm()) {
-          ++report.folds;
-          if (static_cast<int>(report.folded_pairs.size()) < options.max_listed)
-            report.folded_pairs.push_back({std::min(i, j), std::max(i, j)});
-        }
+        check_edge_pair(uses[x].forward == uses[y].forward, !degenerate[i] && !degenerate[j],
+                        normal[i], normal[j], params.cos_fold, {std::min(i, j), std::max(i, j)},
+                        out);
       }
   }
+  keep_smallest(out.folded_pairs, options.max_listed);
+  keep_smallest(out.degenerate_triangles, options.max_listed);
+  return out;
+}
 
-  if (options.crossings_only_when_unfolded && report.folds > 0) return report;
+}  // namespace
 
-  // Candidate pairs from a uniform grid of about one triangle per cell.
+SurfaceCheckReport check_triangles(std::span<const Vec3> P, std::span<const std::array<int, 3>> T,
+                                   std::span<const char> focus,
+                                   const SurfaceCheckOptions& options) {
+  const auto nt = static_cast<int>(T.size());
+  if (nt == 0) return {};
+  const auto box = [&](const std::array<int, 3>& t) {
+    return std::pair{P[t[0]].cwiseMin(P[t[1]]).cwiseMin(P[t[2]]),
+                     P[t[0]].cwiseMax(P[t[1]]).cwiseMax(P[t[2]])};
+  };
+  Vec3 lo = P[T[0][0]], hi = lo;
   double mean_size = 0;
-  for (int i = 0; i < nt; ++i) {
-    Vec3 tlo = P[T[i][0]], thi = tlo;
-    for (int v : T[i]) {
-      tlo = tlo.cwiseMin(P[v]);
-      thi = thi.cwiseMax(P[v]);
-    }
+  for (const auto& t : T) {
+    const auto [tlo, thi] = box(t);
+    lo = lo.cwiseMin(tlo);
+    hi = hi.cwiseMax(thi);
     mean_size += (thi - tlo).maxCoeff();
   }
   mean_size /= nt;
-  // At most 256 cells across the model, so one large triangle among many small ones cannot make
-  // the grid explode.
-  const double cell = std::max(mean_size, diag / 256) + 1e-300;
-  auto cell_of = [&](double x, double origin) {
-    return static_cast<long>(std::floor((x - origin) / cell));
-  };
-  // Cells are 0..256 along each axis (the cell is at least diag / 256), so 21 bits each make a
-  // key that names one cell.
-  auto cell_key = [](long x, long y, long z) {
-    return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) |
-           static_cast<std::uint64_t>(z);
-  };
-  // (cell, triangle) for every cell a triangle's box meets, sorted so each cell's triangles
-  // form a run; and each triangle's first cell.
-  detail::ScratchVector<std::pair<std::uint64_t, int>> in_cell;
-  detail::ScratchVector<std::array<long, 3>> first_cell(static_cast<size_t>(nt));
-  for (int i = 0; i < nt; ++i) {
-    Vec3 tlo = P[T[i][0]], thi = tlo;
-    for (int v : T[i]) {
-      tlo = tlo.cwiseMin(P[v]);
-      thi = thi.cwiseMax(P[v]);
-    }
-    first_cell[i] = {cell_of(tlo.x(), lo.x()), cell_of(tlo.y(), lo.y()), cell_of(tlo.z(), lo.z())};
-    for (long x = first_cell[i][0]; x <= cell_of(thi.x(), lo.x()); ++x)
-      for (long y = first_cell[i][1]; y <= cell_of(thi.y(), lo.y()); ++y)
-        for (long z = first_cell[i][2]; z <= cell_of(thi.z(), lo.z()); ++z)
-          in_cell.emplace_back(cell_key(x, y, z), i);
+  constexpr int kTileCells = 32;
+  CheckGrid grid(lo, hi, mean_size, kTileCells);
+  unsigned passes = kEdges | kCrossings;
+  SurfaceCheckReport report;
+  if (nt <= kWholeSoupEdges) {
+    report = soup_edges(P, T, focus, check_params(grid, options), options);
+    report.triangles = nt;
+    if (options.crossings_only_when_unfolded && report.folds > 0) return report;
+    passes = kCrossings;
   }
-  tbb::parallel_sort(in_cell.begin(), in_cell.end());
-  // Vertices closer than this to the other's plane count as on it; relative to the model size.
-  const double eps = 1e-12 * diag;
-  // Each cell's pairs are independent of the other cells': runs of cells are checked in
-  // parallel, each chunk counting and listing its own crossings, merged in the cells' order so
-  // the pairs listed are those a single pass would list.
-  detail::ScratchVector<size_t> run_start;
-  for (size_t run = 0; run < in_cell.size();) {
-    run_start.push_back(run);
-    const std::uint64_t cell_here = in_cell[run].first;
-    while (run < in_cell.size() && in_cell[run].first == cell_here) ++run;
-  }
-  run_start.push_back(in_cell.size());
-  struct Crossings {
-    int count = 0;
-    std::vector<std::array<int, 2>> listed;
-  };
-  constexpr size_t kRunsPerChunk = 512;
-  const size_t runs = run_start.size() - 1;
-  detail::ScratchVector<Crossings> chunks((runs + kRunsPerChunk - 1) / kRunsPerChunk);
-  tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t chunk) {
-    Crossings& found = chunks[chunk];
-    const size_t last = std::min(runs, (chunk + 1) * kRunsPerChunk);
-    for (size_t r = chunk * kRunsPerChunk; r < last; ++r) {
-      const size_t run = run_start[r], end = run_start[r + 1];
-      for (size_t x = run; x < end; ++x)
-        for (size_t y = x + 1; y < end; ++y) {
-          const int i = in_cell[x].second, j = in_cell[y].second;  // i < j: sorted
-          if (!focused(i) && !focused(j)) continue;
-          // A pair is tested in the first of the cells both meet only (the cells both meet form
-          // a box, whose lowest corner is the larger of their first cells): once, without a set
-          // of the pairs tested.
-          if (cell_key(std::max(first_cell[i][0], first_cell[j][0]),
-                       std::max(first_cell[i][1], first_cell[j][1]),
-                       std::max(first_cell[i][2], first_cell[j][2])) != in_cell[run].first)
-            continue;
-          if (degenerate[i] || degenerate[j]) continue;
-          int shared = 0, si = -1, sj = -1;
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-              if (T[i][a] == T[j][b]) {
-                ++shared;
-                si = a;
-                sj = b;
-              }
-          bool crossing = false;
-          if (shared >= 2) continue;  // edge neighbours: the fold test covers them
-          if (shared == 1) {
-            const Vec3 &i1 = P[T[i][(si + 1) % 3]], &i2 = P[T[i][(si + 2) % 3]];
-            const Vec3 &j1 = P[T[j][(sj + 1) % 3]], &j2 = P[T[j][(sj + 2) % 3]];
-            crossing = segment_crosses_interior(i1, i2, P[T[j][0]], P[T[j][1]], P[T[j][2]]) ||
-                       segment_crosses_interior(j1, j2, P[T[i][0]], P[T[i][1]], P[T[i][2]]);
-          } else {
-            crossing = triangles_intersect(P[T[i][0]], P[T[i][1]], P[T[i][2]], P[T[j][0]],
-                                           P[T[j][1]], P[T[j][2]], eps);
-          }
-          if (crossing) {
-            ++found.count;
-            if (static_cast<int>(found.listed.size()) < options.max_listed)
-              found.listed.push_back({i, j});
-          }
+  // Cells about a triangle across, coarser while the triangles' boxes would meet many more tiles
+  // than there are triangles (a few large triangles among many small ones).
+  const TileRuns runs =
+      sort_into_tiles(grid, lo, hi, T.size(), [&](size_t i) { return box(T[i]); });
+  const SurfaceCheckReport tiles = check_tiles(
+      runs.keys, grid,
+      [&](size_t k, TileTriangles& out) {
+        for (size_t e = runs.starts[k]; e < runs.starts[k + 1]; ++e) {
+          const auto i = static_cast<int>(runs.item(e));
+          const auto& t = T[i];
+          out.add(P[t[0]], P[t[1]], P[t[2]], t, i,
+                  !focus.empty() && focus[i] != 0 ? kInFocus : std::uint8_t{0});
         }
-    }
-  });
-  for (const Crossings& found : chunks) {
-    report.self_intersections += found.count;
-    for (const auto& pair : found.listed)
-      if (static_cast<int>(report.intersecting_pairs.size()) < options.max_listed)
-        report.intersecting_pairs.push_back(pair);
-  }
-  std::sort(report.intersecting_pairs.begin(), report.intersecting_pairs.end());
-  std::sort(report.folded_pairs.begin(), report.folded_pairs.end());
+      },
+      nt, options, !focus.empty(), passes);
+  if (passes == (kEdges | kCrossings)) return tiles;
+  merge(report, tiles, options.max_listed);
   return report;
 }
+
+}  // namespace detail
 
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options) {
   return detail::check_triangles(soup.positions, soup.triangles, {}, options);
@@ -380,23 +715,36 @@ SurfaceCheckReport check_surface(const TriangleSoup& soup, const std::vector<cha
   return detail::check_triangles(soup.positions, soup.triangles, focus, options);
 }
 
-std::string SurfaceCheckReport::describe(const TriangleSoup& soup) const {
-  auto src = [&](int t) {
-    return t < static_cast<int>(soup.source.size()) ? soup.source[t] + 1 : t + 1;
-  };
+namespace {
+
+/// SurfaceCheckReport::describe with `source`, the 1-based polygon of a triangle.
+template <class Source>
+std::string describe_report(const SurfaceCheckReport& r, Source&& src) {
   std::string s = fmt::format(
       "{} triangles: {} self-intersecting pairs, {} folded pairs, {} degenerate, {} "
       "inconsistently oriented edges\n",
-      triangles, self_intersections, folds, degenerate, inconsistent_edges);
-  for (const auto& p : intersecting_pairs)
+      r.triangles, r.self_intersections, r.folds, r.degenerate, r.inconsistent_edges);
+  for (const auto& p : r.intersecting_pairs)
     s += fmt::format("  intersecting: triangles {} and {} (of polygons {} and {})\n", p[0] + 1,
                      p[1] + 1, src(p[0]), src(p[1]));
-  for (const auto& p : folded_pairs)
+  for (const auto& p : r.folded_pairs)
     s += fmt::format("  folded: triangles {} and {} (of polygons {} and {})\n", p[0] + 1, p[1] + 1,
                      src(p[0]), src(p[1]));
-  for (int t : degenerate_triangles)
+  for (int t : r.degenerate_triangles)
     s += fmt::format("  degenerate: triangle {} (of polygon {})\n", t + 1, src(t));
   return s;
+}
+
+}  // namespace
+
+std::string SurfaceCheckReport::describe(const TriangleSoup& soup) const {
+  return describe_report(*this, [&](int t) {
+    return t < static_cast<int>(soup.source.size()) ? soup.source[t] + 1 : t + 1;
+  });
+}
+
+std::string SurfaceCheckReport::describe_quads() const {
+  return describe_report(*this, [](int t) { return t / 2 + 1; });
 }
 
 std::vector<SegmentHit> segment_hits(const TriangleSoup& soup, const Vec3& p, const Vec3& q) {

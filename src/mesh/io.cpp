@@ -306,7 +306,7 @@ void detail::write_mesh_stream(const std::string& path, MeshFileFormat format,
                                const MeshStream& mesh, const std::vector<Vec3>& positions,
                                const MeshFileOptions& options) {
   if (is_gltf(format)) {
-    write_gltf(path, mesh, positions, format == MeshFileFormat::glb);
+    write_gltf(path, mesh, positions, format == MeshFileFormat::glb, options.progress);
     return;
   }
   write_mesh_file(path, [&](OutputFile& out) {
@@ -325,7 +325,7 @@ void detail::write_mesh_stream(const std::string& path, MeshFileFormat format,
       case MeshFileFormat::stl:
         write_stl(out, mesh, positions, options.comment, options.progress);
         break;
-      case MeshFileFormat::glb:  // above: glTF holds its buffer whole, not an OutputFile's blocks
+      case MeshFileFormat::glb:  // above: a .gltf is two files
       case MeshFileFormat::gltf:
         break;
     }

@@ -1,8 +1,10 @@
 // glTF 2.0 in and out, through tinygltf (its implementation is compiled here). In: glTF splits a
 // vertex wherever one of its attributes differs (a normal or UV seam), so the triangles are
 // welded by position like STL's, and TEXCOORD_0 stays per corner; node transforms are applied,
-// images are not loaded. Out: one mesh of triangles with float attributes, .glb or .gltf + .bin.
+// images are not loaded. Out: one mesh of triangles with float attributes, .glb or .gltf + .bin,
+// streamed block by block.
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
 #include <array>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -336,88 +339,102 @@ PolygonSoup read_gltf(std::string_view text, const std::string& path,
 
 namespace {
 
-/// Appends the bytes of `values` to the buffer as a new view and returns the view's index.
-template <class T>
-int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
-  std::vector<unsigned char>& data = model.buffers[0].data;
+/// Bytes of each of the buffer's views, in the order the buffer holds them.
+struct BufferViews {
+  std::int64_t positions = 0, normals = 0, texcoords = 0, indices = 0;
+  [[nodiscard]] std::int64_t total() const { return positions + normals + texcoords + indices; }
+};
+
+BufferViews buffer_views(const MeshStream& mesh) {
+  return {12 * mesh.num_vertices, mesh.has_normals ? 12 * mesh.num_vertices : 0,
+          8 * mesh.num_texcoords, 12 * mesh.triangles};
+}
+
+/// The smallest and the largest coordinates of the positions as floats (POSITION's min and max).
+using Bounds = std::array<std::array<double, 3>, 2>;
+
+/// Reads every vertex for its bounds, blocks in parallel, folded in the blocks' order: a min of
+/// 0.0 and -0.0 keeps the first, as a pass in order would.
+Bounds position_bounds(const MeshStream& mesh, Progress& progress) {
+  const std::int64_t blocks = (mesh.num_vertices + kVerticesPerBlock - 1) / kVerticesPerBlock;
+  constexpr std::int64_t kBlocksPerRound = 256;  // then progress is told
+  std::vector<Bounds> found(static_cast<size_t>(std::min(blocks, kBlocksPerRound)));
+  tbb::enumerable_thread_specific<VertexBlock> scratch;
+  Bounds bounds{{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}};
+  const auto fold = [](Bounds& into, int k, double x) {
+    into[0][k] = std::min(into[0][k], x);
+    into[1][k] = std::max(into[1][k], x);
+  };
+  for (std::int64_t round = 0; round < blocks; round += kBlocksPerRound) {
+    const std::int64_t last = std::min(blocks, round + kBlocksPerRound);
+    tbb::parallel_for(round, last, [&](std::int64_t b) {
+      const std::int64_t begin = b * kVerticesPerBlock;
+      const std::int64_t end = std::min(mesh.num_vertices, begin + kVerticesPerBlock);
+      VertexBlock& block = scratch.local();
+      mesh.vertices(begin, end, block);
+      Bounds& box = found[static_cast<size_t>(b - round)];
+      box = {{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}}};
+      for (const Vec3& p : block.positions)
+        for (int k = 0; k < 3; ++k) fold(box, k, static_cast<double>(static_cast<float>(p[k])));
+    });
+    for (std::int64_t b = round; b < last; ++b)
+      for (int k = 0; k < 3; ++k)
+        for (const double x : {found[static_cast<size_t>(b - round)][0][k],
+                               found[static_cast<size_t>(b - round)][1][k]})
+          fold(bounds, k, x);
+    progress(std::min(mesh.num_vertices, last * kVerticesPerBlock) - round * kVerticesPerBlock);
+  }
+  return bounds;
+}
+
+int add_view(tinygltf::Model& model, std::int64_t& offset, std::int64_t bytes, int target) {
   tinygltf::BufferView view;
   view.buffer = 0;
-  view.byteOffset = data.size();
-  view.byteLength = values.size() * sizeof(T);
+  view.byteOffset = static_cast<size_t>(offset);
+  view.byteLength = static_cast<size_t>(bytes);
   view.target = target;
-  data.resize(data.size() + view.byteLength);
-  std::memcpy(data.data() + view.byteOffset, values.data(), view.byteLength);
+  offset += bytes;
   model.bufferViews.push_back(view);
   return static_cast<int>(model.bufferViews.size()) - 1;
 }
 
-int add_accessor(tinygltf::Model& model, int view, int component, int type, size_t count) {
+int add_accessor(tinygltf::Model& model, int view, int component, int type, std::int64_t count) {
   tinygltf::Accessor accessor;
   accessor.bufferView = view;
   accessor.componentType = component;
   accessor.type = type;
-  accessor.count = count;
+  accessor.count = static_cast<size_t>(count);
   model.accessors.push_back(accessor);
   return static_cast<int>(model.accessors.size()) - 1;
 }
 
-/// glTF stores 32-bit floats; the normals are normalized again after rounding so that they are
-/// unit to float precision, as the specification asks.
-tinygltf::Model make_model(const MeshStream& mesh, const std::vector<Vec3>& points) {
-  const auto nv = static_cast<size_t>(mesh.num_vertices);
-  std::vector<float> positions(3 * nv), normals(mesh.has_normals ? 3 * nv : 0);
-  std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
-  VertexBlock vertices;
-  for (std::int64_t begin = 0; begin < mesh.num_vertices; begin += kVerticesPerBlock) {
-    const std::int64_t end = std::min(mesh.num_vertices, begin + kVerticesPerBlock);
-    mesh.vertices(begin, end, vertices);
-    for (std::int64_t v = begin; v < end; ++v) {
-      const auto i = static_cast<size_t>(v), b = static_cast<size_t>(v - begin);
-      for (int k = 0; k < 3; ++k) {
-        positions[3 * i + k] = static_cast<float>(vertices.positions[b][k]);
-        lo[k] = std::min(lo[k], double(positions[3 * i + k]));
-        hi[k] = std::max(hi[k], double(positions[3 * i + k]));
-      }
-      if (!mesh.has_normals) continue;
-      const Eigen::Vector3f n = vertices.normals[b].cast<float>().normalized();
-      for (int k = 0; k < 3; ++k) normals[3 * i + k] = n[k];
-    }
-  }
-  std::vector<Eigen::Vector2f> texcoords;
-  if (mesh.num_texcoords > 0) {
-    std::vector<Eigen::Vector2d> uvs;
-    mesh.texcoords(0, mesh.num_texcoords, uvs);
-    texcoords.reserve(uvs.size());
-    for (const Eigen::Vector2d& uv : uvs)
-      texcoords.emplace_back(static_cast<float>(uv.x()), static_cast<float>(1.0 - uv.y()));
-  }
-  std::vector<std::uint32_t> indices;
-  indices.reserve(3 * static_cast<size_t>(mesh.triangles));
-  FaceBlock faces;
-  for (std::int64_t begin = 0; begin < mesh.num_faces; begin += kFacesPerBlock) {
-    mesh.faces(begin, std::min(mesh.num_faces, begin + kFacesPerBlock), faces);
-    for_each_triangle(faces, points, [&](int a, int b, int c) {
-      for (int i : {a, b, c}) indices.push_back(static_cast<std::uint32_t>(i));
-    });
-  }
-
+/// The file's JSON as tinygltf writes it (one line in a .glb, indented by 2 in a .gltf), with
+/// `buffer` as the buffer's entry: tinygltf describes views and accessors, the buffer's bytes
+/// are written apart.
+std::string gltf_json(const MeshStream& mesh, const Bounds& bounds, const nlohmann::json& buffer,
+                      bool binary) {
+  const BufferViews bytes = buffer_views(mesh);
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "stitch (bicubic Bezier patches, modified de Casteljau)";
   model.buffers.emplace_back();
-  const int position_view = add_view(model, positions, TINYGLTF_TARGET_ARRAY_BUFFER);
+  std::int64_t offset = 0;
+  const int position_view = add_view(model, offset, bytes.positions, TINYGLTF_TARGET_ARRAY_BUFFER);
   const int normal_view =
-      mesh.has_normals ? add_view(model, normals, TINYGLTF_TARGET_ARRAY_BUFFER) : -1;
-  const int texcoord_view =
-      texcoords.empty() ? -1 : add_view(model, texcoords, TINYGLTF_TARGET_ARRAY_BUFFER);
-  const int index_view = add_view(model, indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+      mesh.has_normals ? add_view(model, offset, bytes.normals, TINYGLTF_TARGET_ARRAY_BUFFER) : -1;
+  const int texcoord_view = mesh.num_texcoords > 0 ? add_view(model, offset, bytes.texcoords,
+                                                              TINYGLTF_TARGET_ARRAY_BUFFER)
+                                                   : -1;
+  const int index_view =
+      add_view(model, offset, bytes.indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
 
+  const std::int64_t nv = mesh.num_vertices;
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
   primitive.attributes["POSITION"] =
       add_accessor(model, position_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-  model.accessors.back().minValues = lo;
-  model.accessors.back().maxValues = hi;
+  model.accessors.back().minValues.assign(bounds[0].begin(), bounds[0].end());
+  model.accessors.back().maxValues.assign(bounds[1].begin(), bounds[1].end());
   if (normal_view >= 0)
     primitive.attributes["NORMAL"] =
         add_accessor(model, normal_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
@@ -425,7 +442,7 @@ tinygltf::Model make_model(const MeshStream& mesh, const std::vector<Vec3>& poin
     primitive.attributes["TEXCOORD_0"] =
         add_accessor(model, texcoord_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, nv);
   primitive.indices = add_accessor(model, index_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                                   TINYGLTF_TYPE_SCALAR, indices.size());
+                                   TINYGLTF_TYPE_SCALAR, 3 * mesh.triangles);
   tinygltf::Mesh gltf_mesh;
   gltf_mesh.name = "stitch surface";
   gltf_mesh.primitives.push_back(primitive);
@@ -437,54 +454,117 @@ tinygltf::Model make_model(const MeshStream& mesh, const std::vector<Vec3>& poin
   scene.nodes.push_back(0);
   model.scenes.push_back(scene);
   model.defaultScene = 0;
-  return model;
+
+  std::ostringstream text;
+  if (!tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, text, false, false))
+    throw OutputError("glTF serialization failed");
+  nlohmann::json doc = nlohmann::json::parse(text.str());
+  doc["buffers"][0] = buffer;
+  return binary ? doc.dump() : doc.dump(2) + '\n';
+}
+
+/// The buffer's views one after another, each streamed from the mesh: positions and normals as
+/// floats (normals normalized again after rounding, so that they are unit to float precision, as
+/// the specification asks), texture coordinates with v down from the top, triangle indices.
+void write_buffer(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+                  Progress& progress) {
+  write_vertices(
+      out, mesh,
+      [](const VertexBlock& block, OutputBuffer& bytes) {
+        LittleEndianWriter record(bytes, 12 * block.positions.size());
+        for (const Vec3& p : block.positions) record.put(Eigen::Vector3f(p.cast<float>()));
+      },
+      progress);
+  if (mesh.has_normals)
+    write_vertices(
+        out, mesh,
+        [](const VertexBlock& block, OutputBuffer& bytes) {
+          LittleEndianWriter record(bytes, 12 * block.normals.size());
+          for (const Vec3& n : block.normals)
+            record.put(Eigen::Vector3f(n.cast<float>().normalized()));
+        },
+        progress);
+  if (mesh.num_texcoords > 0)
+    write_records<std::vector<Eigen::Vector2d>>(
+        out, mesh.num_texcoords, kVerticesPerBlock, mesh.texcoords,
+        [](const std::vector<Eigen::Vector2d>& block, OutputBuffer& bytes) {
+          LittleEndianWriter record(bytes, 8 * block.size());
+          for (const Eigen::Vector2d& uv : block) {
+            record.put(static_cast<float>(uv.x()));
+            record.put(static_cast<float>(1.0 - uv.y()));
+          }
+        },
+        progress);
+  write_triangles(
+      out, mesh, positions,
+      [](const TriangleBlock& block, OutputBuffer& bytes) {
+        LittleEndianWriter record(bytes, 4 * block.indices.size());
+        for (const int v : block.indices) record.put(static_cast<std::uint32_t>(v));
+      },
+      progress);
+}
+
+/// The .glb container: a 12-byte header, the JSON chunk padded with spaces, the BIN chunk.
+void write_glb(const std::string& path, const MeshStream& mesh, const std::vector<Vec3>& positions,
+               const std::string& json, Progress& progress) {
+  const std::int64_t bin = buffer_views(mesh).total();  // whole 4-byte words: no padding
+  const std::string content = json + std::string((4 - json.size() % 4) % 4, ' ');
+  const std::int64_t length = 12 + 8 + static_cast<std::int64_t>(content.size()) + 8 + bin;
+  if (length > std::numeric_limits<std::uint32_t>::max())
+    throw OutputError(fmt::format(
+        "cannot write {}: {:.2f} GB is more than a .glb can hold (4.29 GB); write .gltf (its "
+        "buffer in a .bin has no such limit) or lower the resolution",
+        path, static_cast<double>(length) / 1e9));
+  write_mesh_file(path, [&](OutputFile& out) {
+    OutputBuffer header;
+    LittleEndianWriter words(header, 20);
+    for (const std::uint32_t word :
+         {0x46546C67u /* "glTF" */, 2u, static_cast<std::uint32_t>(length),
+          static_cast<std::uint32_t>(content.size()), 0x4E4F534Au /* "JSON" */})
+      words.put(word);
+    out.write(header.data(), header.size());
+    out << content;
+    header.clear();
+    LittleEndianWriter chunk(header, 8);
+    chunk.put(static_cast<std::uint32_t>(bin));
+    chunk.put(0x004E4942u);  // "BIN\0"
+    out.write(header.data(), header.size());
+    write_buffer(out, mesh, positions, progress);
+  });
 }
 
 }  // namespace
 
 void write_gltf(const std::string& path, const MeshStream& mesh, const std::vector<Vec3>& positions,
-                bool binary) {
+                bool binary, const WriteProgress& report) {
   if (mesh.num_vertices == 0 || mesh.num_faces == 0)
     throw OutputError(fmt::format("cannot write {}: the surface is empty", path));
   if (mesh.num_texcoords > 0 && mesh.num_texcoords != mesh.num_vertices)
     throw OutputError(fmt::format("cannot write {}: {} texture coordinates for {} vertices", path,
                                   mesh.num_texcoords, mesh.num_vertices));
-  tinygltf::Model model = make_model(mesh, positions);
-  tinygltf::TinyGLTF writer;
+  // The bounds pass, the vertices once per attribute, the faces.
+  Progress progress(
+      report, (mesh.has_normals ? 3 : 2) * mesh.num_vertices + mesh.num_texcoords + mesh.num_faces);
+  const Bounds bounds = position_bounds(mesh, progress);
+  const std::int64_t bytes = buffer_views(mesh).total();
   if (binary) {
-    write_file_atomically(
-        path,
-        [&](std::ostream& out) {
-          if (!writer.WriteGltfSceneToStream(&model, out, false, true))
-            throw OutputError(fmt::format("cannot write {}: glTF serialization failed", path));
-        },
-        true);
+    write_glb(path, mesh, positions, gltf_json(mesh, bounds, {{"byteLength", bytes}}, true),
+              progress);
     return;
   }
-  // tinygltf embeds buffers when writing to a stream; the buffer goes to its own file instead
-  // and the .gltf refers to it by name.
   const std::filesystem::path bin_path = std::filesystem::path(path).replace_extension(".bin");
-  const std::vector<unsigned char> bytes = std::move(model.buffers[0].data);
-  model.buffers[0].data.clear();
-  std::ostringstream text;
-  if (!writer.WriteGltfSceneToStream(&model, text, true, false))
-    throw OutputError(fmt::format("cannot write {}: glTF serialization failed", path));
-  nlohmann::json doc = nlohmann::json::parse(text.str());
-  doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", bin_path.filename().string()}};
+  const std::string json = gltf_json(
+      mesh, bounds, {{"byteLength", bytes}, {"uri", bin_path.filename().string()}}, false);
   // The buffer is written under a name of its own first and takes its final name only once the
   // .gltf is in place: a failure leaves neither file changed (an earlier .bin included).
   const std::filesystem::path staged =
       bin_path.parent_path() / ("." + bin_path.filename().string() + ".staged");
-  write_file_atomically(
-      staged.string(),
-      [&](std::ostream& out) {
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-      },
-      true);
+  write_mesh_file(
+      staged.string(), [&](OutputFile& out) { write_buffer(out, mesh, positions, progress); },
+      bin_path.string());
   std::error_code ec;
   try {
-    write_file_atomically(path, [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
+    write_mesh_file(path, [&](OutputFile& out) { out << json; });
   } catch (...) {
     std::filesystem::remove(staged, ec);
     throw;

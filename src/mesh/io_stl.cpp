@@ -195,21 +195,17 @@ void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>&
   OutputBuffer count;
   LittleEndianWriter(count, 4).put(static_cast<std::uint32_t>(mesh.triangles));
   out.write(count.data(), count.size());
-  write_faces(
-      out, mesh,
-      [&](const FaceBlock& block, OutputBuffer& bytes) {
-        size_t triangles = 0;
-        for (int size : block.sizes) triangles += static_cast<size_t>(std::max(0, size - 2));
-        LittleEndianWriter record(bytes, triangles * 50);
-        auto put = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+  write_triangles(
+      out, mesh, positions,
+      [](const TriangleBlock& block, OutputBuffer& bytes) {
+        LittleEndianWriter record(bytes, block.corners.size() / 3 * 50);
+        for (size_t t = 0; t < block.corners.size(); t += 3) {
+          const Vec3 &a = block.corners[t], &b = block.corners[t + 1], &c = block.corners[t + 2];
           const Vec3 n = (b - a).cross(c - a).stableNormalized();
           for (const Vec3* p : {&n, &a, &b, &c})
             for (int axis = 0; axis < 3; ++axis) record.put(static_cast<float>((*p)[axis]));
           record.put(std::uint16_t{0});
-        };
-        for_each_triangle(block, positions, [&](int a, int b, int c) {
-          put(positions[a], positions[b], positions[c]);
-        });
+        }
       },
       progress);
 }

@@ -38,6 +38,33 @@ FaceFormat text_faces(std::string_view prefix, bool with_count, int base, bool o
   };
 }
 
+void write_triangles(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+                     const TriangleFormat& format, Progress& progress) {
+  struct Faces {
+    FaceBlock faces;
+    TriangleBlock triangles;
+  };
+  write_records<Faces>(
+      out, mesh.num_faces, kFacesPerBlock,
+      [&](std::int64_t begin, std::int64_t end, Faces& block) {
+        TriangleBlock& t = block.triangles;
+        if (mesh.triangulated) {
+          mesh.triangulated(begin, end, t);
+          return;
+        }
+        mesh.faces(begin, end, block.faces);
+        t.indices.clear();
+        t.corners.clear();
+        for_each_triangle(block.faces, positions, [&](int a, int b, int c) {
+          for (const int v : {a, b, c}) {
+            t.indices.push_back(v);
+            t.corners.push_back(positions[static_cast<size_t>(v)]);
+          }
+        });
+      },
+      [&](const Faces& block, OutputBuffer& bytes) { format(block.triangles, bytes); }, progress);
+}
+
 void write_blocks(OutputFile& out, std::int64_t count, std::int64_t block,
                   const std::function<void(std::int64_t, std::int64_t, OutputBuffer&)>& format,
                   const std::function<void(std::int64_t)>& written) {
@@ -86,7 +113,9 @@ void OutputBuffer::reserve(size_t capacity) {
   capacity_ = capacity;
 }
 
-void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write) {
+void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write,
+                     const std::string& name) {
+  const std::string& named = name.empty() ? path : name;
   write_file_atomically_at(path, [&](const std::string& temporary) {
     OutputFile out(temporary);
     try {
@@ -94,8 +123,8 @@ void write_mesh_file(const std::string& path, const std::function<void(OutputFil
       out.close();
     } catch (const Error& e) {
       // The writers do not know the file's name; every message about a file names it.
-      if (std::string_view(e.what()).find(path) != std::string_view::npos) throw;
-      throw_with_message(e, fmt::format("cannot write {}: {}", path, e.what()));
+      if (std::string_view(e.what()).find(named) != std::string_view::npos) throw;
+      throw_with_message(e, fmt::format("cannot write {}: {}", named, e.what()));
     }
   });
 }

@@ -37,6 +37,13 @@ struct FaceBlock {
   std::vector<int> texcoords;
 };
 
+/// Faces as the triangles of the formats made of triangles (STL, glTF): three vertex indices per
+/// triangle (0-based) and the positions of those three corners.
+struct TriangleBlock {
+  std::vector<int> indices;
+  std::vector<Vec3> corners;
+};
+
 /// A mesh as a writer reads it. The callbacks may run for several blocks at once on different
 /// threads; each fills its block from scratch (resize, then assign).
 struct MeshStream {
@@ -54,6 +61,11 @@ struct MeshStream {
   std::int64_t num_texcoords = 0;
   std::function<void(std::int64_t begin, std::int64_t end, std::vector<Eigen::Vector2d>&)>
       texcoords;
+  /// Faces [begin, end) as triangles (`triangles` of them for all faces, face after face), for a
+  /// stream that cannot hand the writers every position to split its faces by: a tessellation
+  /// evaluated block by block. Null: the writers split the faces themselves (for_each_triangle
+  /// over the `positions` write_mesh_stream is given).
+  std::function<void(std::int64_t begin, std::int64_t end, TriangleBlock&)> triangulated;
 };
 
 /// Called with the fraction (0..1) of the file written so far.
@@ -71,14 +83,14 @@ struct MeshFileOptions {
   /// In the header: OBJ and OFF comment lines, a PLY comment, STL's 80 bytes (glTF names its
   /// generator instead).
   std::string_view comment;
-  WriteProgress progress;  ///< glTF, written whole, tells none
+  WriteProgress progress;
   /// OBJ only: statements written after the faces (write_polygon_soup's crease and corner tags).
   std::function<void(OutputFile&)> obj_statements;
 };
 
 /// Writes `mesh` to `path` in `format` (whatever the path's extension), atomically
-/// (write_mesh_file; glTF through write_file_atomically). `positions` are every vertex's, for
-/// the formats made of triangles (STL, glTF: quads are split by their shorter diagonal); the
+/// (write_mesh_file). `positions` are every vertex's, for the formats made of triangles (STL,
+/// glTF: quads are split by their shorter diagonal) of a stream without `triangulated`; the
 /// others may get an empty vector.
 void write_mesh_stream(const std::string& path, MeshFileFormat format, const MeshStream& mesh,
                        const std::vector<Vec3>& positions, const MeshFileOptions& options);
@@ -98,18 +110,20 @@ void write_ply(OutputFile& out, const MeshStream& mesh, PlyEncoding encoding,
                const WriteProgress& progress = {});
 /// Binary STL; every polygon is fanned from its first vertex into triangles (quads split by
 /// their shorter diagonal), whose corners are looked up in `positions` (STL repeats them per
-/// triangle, so they must be at hand). io_stl.cpp.
+/// triangle), or the stream's own triangles with their corners (MeshStream::triangulated).
+/// io_stl.cpp.
 void write_stl(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
                std::string_view comment, const WriteProgress& progress = {});
 /// glTF 2.0, one mesh of triangles (split as write_stl splits them) with float POSITION,
 /// NORMAL (with the stream's normals, normalized again after rounding) and TEXCOORD_0 (with its
 /// texture coordinates, one per vertex; v flipped to glTF's, down from the top). `binary`: one
 /// .glb file. Otherwise a .gltf file and its buffer beside it, named like the .gltf with the
-/// extension .bin (written first, so the .gltf never refers to a missing file). glTF holds its
-/// buffer whole, so the stream is read into it before anything is written. Atomic.
-/// io_gltf.cpp.
+/// extension .bin (written first, so the .gltf never refers to a missing file). Streamed: the
+/// JSON (which holds the positions' bounds) is written before the buffer, so the vertices are
+/// read once for their bounds and then once for each attribute, every pass block by block.
+/// Atomic. io_gltf.cpp.
 void write_gltf(const std::string& path, const MeshStream& mesh, const std::vector<Vec3>& positions,
-                bool binary);
+                bool binary, const WriteProgress& progress = {});
 
 /// Bytes a block is formatted into. Unlike std::string it neither zero-fills what it is about to
 /// overwrite nor gives its memory back when cleared, so the few buffers the writers cycle through
@@ -173,8 +187,9 @@ class LittleEndianWriter {
 };
 
 /// Runs `write` on a temporary file that replaces `path` when it returns
-/// (write_file_atomically_at), with a message naming `path` when it fails.
-void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write);
+/// (write_file_atomically_at), with a message naming `name` (empty: `path`) when it fails.
+void write_mesh_file(const std::string& path, const std::function<void(OutputFile&)>& write,
+                     const std::string& name = {});
 
 /// A stream over vertex and face arrays held in memory (`normals` may be null). Faces is any
 /// container of index loops (std::vector<int>, std::array<int, 4>, ...). `texcoords`, if given,

@@ -133,6 +133,14 @@ void for_each_triangle(const FaceBlock& block, const std::vector<Vec3>& position
   });
 }
 
+/// The bytes of triangle blocks.
+using TriangleFormat = std::function<void(const TriangleBlock&, OutputBuffer&)>;
+
+/// The faces as triangles, block by block: the stream's own (MeshStream::triangulated), or split
+/// by for_each_triangle over `positions`; formatted by `format`.
+void write_triangles(OutputFile& out, const MeshStream& mesh, const std::vector<Vec3>& positions,
+                     const TriangleFormat& format, Progress& progress);
+
 /// Faces as text lines `prefix[count] i0 i1 ...` with indices shifted by `base` (1 for OBJ),
 /// each index twice (`a//a`) with OBJ normals.
 FaceFormat text_faces(std::string_view prefix, bool with_count, int base, bool obj_normals);

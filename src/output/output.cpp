@@ -59,7 +59,8 @@ OutputReport write_mesh(const std::string& path, const HalfedgeMesh& mesh, const
     return r;
   }
   if (spec.unwelded) {
-    const TessellatedMesh samples = tessellate(mesh, surface, {spec.resolution, false});
+    const TessellatedMesh samples = tessellate(
+        mesh, surface, {.resolution = spec.resolution, .welded = false, .uv = true, .patch = true});
     write_surface_samples_ply(path, samples, spec.uvs);
     r.vertices = samples.num_vertices();
     r.faces = static_cast<std::int64_t>(samples.quads.size());
@@ -213,22 +214,20 @@ std::span<const OutputFormat> output_formats() {
        .extensions = {".stl", ""},
        .mesh_format = MeshFileFormat::stl,
        .adaptive = true,
-       .memory = M::positions,
        .help = "triangles with facet normals",
        .write = write_mesh},
       {.name = "glTF 2.0 binary",
        .extensions = {".glb", ""},
        .mesh_format = MeshFileFormat::glb,
        .uvs = true,
-       .memory = M::whole,
-       .help = "positions, normals, TEXCOORD_0 (vertices split at seams)",
+       .help = "positions, normals, TEXCOORD_0 (vertices split at seams, for which the "
+               "tessellation is held whole)",
        .write = write_mesh},
       {.name = "glTF 2.0",
        .extensions = {".gltf", ""},
        .mesh_format = MeshFileFormat::gltf,
        .uvs = true,
-       .memory = M::whole,
-       .help = "as .glb, with the buffer in a .bin beside it",
+       .help = "as .glb, with the buffer in a .bin beside it (no 4 GB limit)",
        .write = write_mesh},
       {.name = "Bezier JSON",
        .extensions = {".bez.json", ".json"},
@@ -297,8 +296,6 @@ std::string_view describe(MemoryModel memory) {
   switch (memory) {
     case MemoryModel::streamed:
       return "written block by block as it is evaluated: memory does not grow with the resolution";
-    case MemoryModel::positions:
-      return "holds every position of the tessellation (the format repeats them per triangle)";
     case MemoryModel::whole:
       return "holds the whole tessellation and the file's buffer";
     case MemoryModel::patch_set:
@@ -376,6 +373,12 @@ OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
   return format.write(path, mesh, surface, spec, format);
 }
 
+bool output_streams(const OutputFormat& format, const OutputSpec& spec) {
+  return format.kind == OutputKind::tessellated && format.memory == MemoryModel::streamed &&
+         !spec.unwelded && spec.adaptive_tolerance == 0 &&
+         !(spec.uvs && format.mesh_format && is_gltf(*format.mesh_format));
+}
+
 std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat& format,
                                     const OutputSpec& spec) {
   // Measured peak resident size of `stitch smooth` to binary PLY divided by the corners: 806
@@ -385,16 +388,16 @@ std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat
   const std::int64_t n = spec.resolution;
   std::int64_t bytes = kBytesPerCorner * corners;
   if (format.kind == OutputKind::exact || spec.adaptive_tolerance > 0) return bytes;
+  if (output_streams(format, spec)) return bytes;
   if (spec.unwelded)  // positions, normals, uv, patch and level per sample, 4 ints per quad
     return bytes + corners * ((n + 1) * (n + 1) * 72 + n * n * 16);
-  switch (format.memory) {
-    case MemoryModel::whole:  // the tessellation, then its buffer: positions, normals, quads
-      return bytes + corners * n * n * (48 + 16) * 2;
-    case MemoryModel::positions:  // every position (about n^2 per corner)
-      return bytes + corners * n * n * 24;
-    default:
-      return bytes;
-  }
+  if (format.mesh_format && is_gltf(*format.mesh_format) && spec.uvs)
+    // Split at seams over the whole tessellation (about n^2 vertices and quads per corner): the
+    // welded one (48 bytes per vertex and a 4-byte chain head, 16 per quad), every patch's grid
+    // of UVs (16 bytes per sample), the split copies (48 + 16 + 4 per vertex, 16 per quad).
+    return bytes + corners * ((n + 1) * (n + 1) * 16 + n * n * (68 + 84));
+  // The tessellation, then its buffer.
+  return bytes + corners * n * n * (48 + 16) * 2;
 }
 
 }  // namespace stitch

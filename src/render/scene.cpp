@@ -15,6 +15,9 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
   TessellationOptions options;
   options.resolution = resolution;
   options.welded = false;
+  // Every attribute: the levels and patches modes shade by them, texture coordinates come from
+  // each sample's patch and (u, v).
+  options.uv = options.patch = options.level = true;
   scene.surface = tessellate(mesh, surface, options);
   scene.input = input_faces(mesh);
   const BezierSurface& bezier = surface.bezier();

@@ -69,7 +69,7 @@ struct TexturedMesh {
 
 TexturedMesh textured_mesh(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                            const UvSurface& uvs) {
-  const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true, false});
+  const TessellatedMesh whole = tessellate(mesh, surface, {.resolution = resolution});
   const std::vector<Eigen::Vector2d> grid = grid_uvs(uvs, surface.corners(), resolution);
   const int n = resolution;
   const auto stored = [](const Eigen::Vector2d& uv) {  // as the glTF writer stores it
@@ -144,11 +144,6 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat f
             static_cast<std::int64_t>(whole.mesh.quads.size()),
             static_cast<std::int64_t>(whole.texcoords.size())};
   }
-  if (is_gltf(format)) {  // glTF holds its buffer whole: tessellate, then write
-    const TessellatedMesh whole = tessellate(mesh, surface, {resolution, true});
-    write_surface_mesh(path, format, whole, options);
-    return {whole.num_vertices(), static_cast<std::int64_t>(whole.quads.size())};
-  }
   const TessellationLayout layout(mesh, surface.corners(), resolution, true);
   detail::MeshStream stream;
   stream.num_vertices = layout.num_vertices();
@@ -218,18 +213,19 @@ SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat f
       out[3] = at(i, j + 1);
     }
   };
-  std::vector<Vec3> positions;
-  if (format == MeshFileFormat::stl) {
-    // STL repeats the corners of every triangle: evaluate them all first, then stream the
-    // triangles.
-    positions.resize(static_cast<size_t>(layout.num_vertices()));
-    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_vertices(), 4096),
-                      [&](const tbb::blocked_range<std::int64_t>& r) {
-                        std::vector<Vec3> normals(r.size());
-                        evaluate(r.begin(), r.end(), positions.data() + r.begin(), normals.data());
-                      });
-  }
-  detail::write_stream(path, format, stream, positions, options, kComment);
+  // STL and glTF split the quads by their vertices' positions: each block of quads evaluates
+  // the grids it needs rather than every position being held.
+  stream.triangulated = [&](std::int64_t begin, std::int64_t end, detail::TriangleBlock& block) {
+    block.indices.resize(static_cast<size_t>(6 * (end - begin)));
+    block.corners.resize(block.indices.size());
+    layout.triangles(surface, begin, end, block.indices.data(), block.corners.data());
+    if (!detail::all_finite(block.corners.data(), static_cast<std::int64_t>(block.corners.size())))
+      for (size_t c = 0; c < block.corners.size(); ++c)
+        if (!block.corners[c].allFinite())
+          throw OutputError(
+              fmt::format("sample {} has a non-finite position or normal", block.indices[c] + 1));
+  };
+  detail::write_stream(path, format, stream, {}, options, kComment);
   return {layout.num_vertices(), layout.num_quads(), stream.num_texcoords};
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "eval/patch_sampler.hpp"
+#include "stitch/mesh/polygon.hpp"
 
 namespace stitch {
 
@@ -365,11 +366,8 @@ void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& sur
     Vec3 normal = Vec3::Zero();  // set from the first patch: a mean starts from its normal
     for (size_t s = 0; s < (mean ? sharing.size() : 1); ++s) {
       const GridSample& g = sharing[s];
-      // The mesh vertices, face centres and edge midpoints are patch corners, evaluated
-      // directly: the sampler's tables would not pay off there.
       const Eigen::Vector2d& uv = grid_.uv(grid_.sample(g.i, g.j));
-      const SurfacePoint point = grid ? sampler.evaluate_grid(corners_[g.corner], g.i, g.j)
-                                      : sampler.evaluate(corners_[g.corner], uv.x(), uv.y());
+      const SurfacePoint point = sample_point(sampler, g, grid);
       if (s > 0) {
         normal += point.normal;
         continue;
@@ -383,6 +381,77 @@ void TessellationLayout::evaluate_each(PatchSampler& sampler, const Surface& sur
     }
     // One patch's unit normal as evaluated, or the mean direction of its patches' normals.
     normals[vertex - begin] = mean ? normal.normalized() : normal;
+  }
+}
+
+SurfacePoint TessellationLayout::sample_point(PatchSampler& sampler, const GridSample& g,
+                                              bool grid) const {
+  if (grid) return sampler.evaluate_grid(corners_[g.corner], g.i, g.j);
+  // The mesh vertices, face centres and edge midpoints are patch corners, evaluated directly:
+  // the sampler's tables would not pay off there.
+  const Eigen::Vector2d& uv = grid_.uv(grid_.sample(g.i, g.j));
+  return sampler.evaluate(corners_[g.corner], uv.x(), uv.y());
+}
+
+void TessellationLayout::grid_positions(PatchSampler& sampler, int k, Vec3* positions,
+                                        std::vector<Vec3>& scratch) const {
+  const int n = n_, stride = n + 1, side = n - 1;
+  const Corner c = corners_[k];
+  scratch.resize(static_cast<size_t>(stride) * (stride + 1));
+  Vec3* const normals = scratch.data();  // not needed, but always computed
+  Vec3* const spoke = normals + static_cast<std::ptrdiff_t>(stride) * stride;
+  // The whole grid from this patch, then the samples other patches own from those: every sample
+  // is a function of its patch and (i, j) alone, to the bit (PatchSampler::evaluate_block
+  // equals evaluate_grid and Surface::evaluate), so a sample evaluated here from the patch that
+  // owns it has the position evaluate() gives its vertex.
+  sampler.evaluate_block(c, 0, n, 0, n, {positions, normals, nullptr, stride});
+  if (!welded_) return;
+  if (side > 0) {
+    // Side i = 0: rotate_ccw(c)'s edge half, its samples (m, 0), which land at (0, m) with a
+    // stride of 1 (on a boundary, this patch's own: already there).
+    if (extra_half_[c.idx] < 0)
+      sampler.evaluate_block(corners_[corner_index(mesh_.rotate_ccw(c))], 1, side, 0, 0,
+                             {positions + 1, normals + 1, nullptr, 1});
+    // Side j = n: prev(c)'s spoke, its samples (n, m), a row there and a column here.
+    sampler.evaluate_block(corners_[corner_index(mesh_.prev(c))], n, n, 1, side,
+                           {spoke, normals, nullptr, 0});
+    for (int m = 1; m < n; ++m) positions[m * stride + n] = spoke[m - 1];
+  }
+  // The patch corners: each vertex's first sample.
+  std::vector<GridSample> sharing;
+  for (const auto& [i, j] : {std::pair{0, 0}, std::pair{n, 0}, std::pair{n, n}, std::pair{0, n}}) {
+    samples(vertex(k, i, j), sharing);
+    const GridSample& g = sharing[0];
+    if (g.corner != k || g.i != i || g.j != j)
+      sampler.evaluate_block(corners_[g.corner], g.i, g.i, g.j, g.j,
+                             {positions + i * stride + j, normals, nullptr, 0});
+  }
+}
+
+void TessellationLayout::triangles(const Surface& surface, std::int64_t begin, std::int64_t end,
+                                   int* indices, Vec3* corners) const {
+  const int n = n_, stride = n + 1;
+  const std::int64_t cells = static_cast<std::int64_t>(n) * n;
+  PatchSampler sampler(surface, n);
+  const auto samples = static_cast<size_t>(stride) * stride;
+  std::vector<Vec3> positions(samples), scratch;
+  std::vector<std::int64_t> numbers(samples);
+  for (std::int64_t q = begin; q < end;) {
+    const auto k = static_cast<int>(q / cells);
+    grid_positions(sampler, k, positions.data(), scratch);
+    grid_vertices(k, numbers.data());
+    const std::int64_t last = std::min(end, (k + 1) * cells);
+    for (; q < last; ++q) {
+      const auto cell = static_cast<int>(q - k * cells);
+      const int at = cell / n * stride + cell % n;
+      // Counter-clockwise as quads() walks the cell.
+      const std::array<int, 4> loop{at, at + stride, at + stride + 1, at + 1};
+      for (const auto& t : quad_triangles(loop, positions))
+        for (const int s : t) {
+          *indices++ = static_cast<int>(numbers[static_cast<size_t>(s)]);
+          if (corners) *corners++ = positions[static_cast<size_t>(s)];
+        }
+    }
   }
 }
 

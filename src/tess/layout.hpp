@@ -67,6 +67,20 @@ class TessellationLayout {
   /// halves under mdc and cc) the patches meet with C1 and their normals agree up to round-off
   /// (test PatchesThatShareASmoothSampleAgreeOnItsNormal).
   [[nodiscard]] bool averages_normals(std::int64_t vertex, const Surface& surface) const;
+  /// vertex(k, i, j) of every sample of corner k's grid, at i * (n + 1) + j.
+  void grid_vertices(int k, std::int64_t* out) const;
+  /// The position of the output vertex of every sample of corner k's grid, at i * (n + 1) + j:
+  /// evaluate()'s, to the bit (the samples of its sides that neighbouring patches own are
+  /// evaluated from those patches). `scratch` is working storage.
+  void grid_positions(PatchSampler& sampler, int k, Vec3* positions,
+                      std::vector<Vec3>& scratch) const;
+  /// Quads [begin, end) as two triangles each, split along the shorter diagonal of their output
+  /// vertices' positions (quad_triangles), as a writer of triangles splits quad(q) of a whole
+  /// tessellation: six vertex numbers per quad into `indices` and, if not null, the positions of
+  /// those corners into `corners`. Each corner's grid is evaluated with the samples its
+  /// neighbours own (evaluate()'s positions, to the bit), so no position has to be held.
+  void triangles(const Surface& surface, std::int64_t begin, std::int64_t end, int* indices,
+                 Vec3* corners) const;
   /// Positions and unit normals of output vertices [begin, end): the position of the first
   /// sample; the normal of the first sample, or where averages_normals, the normalized sum of all
   /// sharing samples' normals in a fixed order (the result does not depend on threads). With
@@ -102,8 +116,9 @@ class TessellationLayout {
   void evaluate_each(PatchSampler& sampler, const Surface& surface, std::int64_t from,
                      std::int64_t to, std::int64_t begin, Vec3* positions, Vec3* normals,
                      const SampleAttributes& attributes) const;
-  /// vertex(k, i, j) of every sample of corner k's grid, at i * (n + 1) + j.
-  void grid_vertices(int k, std::int64_t* out) const;
+  /// The point of the sample `g` as evaluate() computes it: `grid`, through the sampler's grid
+  /// tables (corner blocks and boundary halves); otherwise directly (the patch corners).
+  SurfacePoint sample_point(PatchSampler& sampler, const GridSample& g, bool grid) const;
   /// The quad of cell (i, j) of corner k.
   [[nodiscard]] std::array<std::int64_t, 4> cell_quad(int k, int i, int j) const;
 

@@ -31,36 +31,36 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
         options.welded ? "welded" : "unwelded", nv, nq));
   detail::size_for_overwrite(out.positions, nv);
   detail::size_for_overwrite(out.normals, nv);
-  if (options.sample_attributes) {
-    detail::size_for_overwrite(out.uv, nv);
-    detail::size_for_overwrite(out.patch, nv);
-    detail::size_for_overwrite(out.level, nv);
-  } else {
-    out.uv.clear();
-    out.patch.clear();
-    out.level.clear();
-  }
+  const auto attribute = [nv](auto& array, bool asked) {
+    if (asked)
+      detail::size_for_overwrite(array, nv);
+    else
+      array.clear();
+  };
+  attribute(out.uv, options.uv);
+  attribute(out.patch, options.patch);
+  attribute(out.level, options.level);
   // Every range of output vertices is computed on its own, so any split over threads gives the
   // same arrays; the finiteness scan runs on each range while it is in cache, and the first bad
   // sample is the least index found, whatever the split.
   std::atomic<std::int64_t> first_bad{layout.num_vertices()};
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, layout.num_vertices(), 1024),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      SampleAttributes at;
-                      if (options.sample_attributes)
-                        at = {out.uv.data() + r.begin(), out.patch.data() + r.begin(),
-                              out.level.data() + r.begin()};
-                      layout.evaluate(surface, r.begin(), r.end(), out.positions.data() + r.begin(),
-                                      out.normals.data() + r.begin(), at);
-                      const std::int64_t bad = detail::first_non_finite(
-                          out.positions.data() + r.begin(), out.normals.data() + r.begin(),
-                          static_cast<std::int64_t>(r.size()));
-                      if (bad < 0) return;
-                      const std::int64_t i = r.begin() + bad;
-                      std::int64_t seen = first_bad.load();
-                      while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::int64_t>(0, layout.num_vertices(), 1024),
+      [&](const tbb::blocked_range<std::int64_t>& r) {
+        const SampleAttributes at{options.uv ? out.uv.data() + r.begin() : nullptr,
+                                  options.patch ? out.patch.data() + r.begin() : nullptr,
+                                  options.level ? out.level.data() + r.begin() : nullptr};
+        layout.evaluate(surface, r.begin(), r.end(), out.positions.data() + r.begin(),
+                        out.normals.data() + r.begin(), at);
+        const std::int64_t bad = detail::first_non_finite(out.positions.data() + r.begin(),
+                                                          out.normals.data() + r.begin(),
+                                                          static_cast<std::int64_t>(r.size()));
+        if (bad < 0) return;
+        const std::int64_t i = r.begin() + bad;
+        std::int64_t seen = first_bad.load();
+        while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
+        }
+      });
   if (options.index_buffer) {
     detail::size_for_overwrite(out.quads, nq);
     static_assert(sizeof(std::array<int, 4>) == 4 * sizeof(int));
@@ -71,12 +71,14 @@ void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
   }
   // The input limits (limits.hpp) should make this impossible; whatever shows or writes these
   // samples (render, compare, the modeler) must not get a NaN.
-  if (const std::int64_t bad = first_bad.load(); bad < layout.num_vertices())
+  if (const std::int64_t bad = first_bad.load(); bad < layout.num_vertices()) {
+    std::vector<GridSample> sharing;
+    layout.samples(bad, sharing);
     throw InputError(
-        fmt::format("the surface is not finite at sample {}{}", bad + 1,
-                    options.sample_attributes
-                        ? fmt::format(" (on the patch of corner half-edge {})", out.patch[bad])
-                        : std::string()));
+        fmt::format("the surface is not finite at sample {} (on the patch of corner "
+                    "half-edge {})",
+                    bad + 1, surface.corners()[sharing[0].corner].idx));
+  }
 }
 
 TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,

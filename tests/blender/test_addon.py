@@ -8,6 +8,7 @@ as OBJ with its crease tags and texture coordinates): vertex counts, positions t
 stores float32), UVs, creases, materials, the exact export, errors as reports, live updates."""
 
 import json
+import math
 import pathlib
 import re
 import subprocess
@@ -348,18 +349,26 @@ def exact_export():
 
 @test
 def refusals_are_reports():
-    # Three faces on one edge: stitch refuses a non-manifold mesh; Blender reports it.
-    obj = new_object(
-        "fin",
-        [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1)],
-        [[0, 1, 2], [1, 0, 3], [0, 1, 4]],
-    )
+    # A Möbius strip: repair on reading fixes what can be fixed (faces flipped, non-manifold
+    # edges split), but no flips orient this one, so stitch refuses it; Blender reports it.
+    n = 5
+    strip = []
+    for i in range(n):
+        t = 2 * math.pi * i / n
+        centre = (2 * math.cos(t), 2 * math.sin(t), 0)
+        across = (0.5 * math.cos(t / 2) * math.cos(t), 0.5 * math.cos(t / 2) * math.sin(t),
+                  0.5 * math.sin(t / 2))
+        strip += [tuple(c + w for c, w in zip(centre, across)),
+                  tuple(c - w for c, w in zip(centre, across))]
+    quads = [[2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1] for i in range(n - 1)]
+    quads.append([2 * n - 2, 1, 0, 2 * n - 1])  # the half twist: a_4, b_0, a_0, b_4
+    obj = new_object("strip", strip, quads)
     activate(obj)
     try:
         bpy.ops.object.stitch_smooth()
-        raise AssertionError("a non-manifold mesh was smoothed")
+        raise AssertionError("a Möbius strip was smoothed")
     except RuntimeError as e:  # what bpy.ops raises for an error report
-        assert "Stitch:" in str(e) and "manifold" in str(e), e
+        assert "Stitch:" in str(e) and "not orientable" in str(e), e
         print(f"  reported: {str(e).strip()}")
     assert obj.stitch.target is None
     # The module not found: the message says where it was looked for and what to do.

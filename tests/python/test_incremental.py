@@ -22,8 +22,8 @@ def expect_same_as_fresh(live, method):
     """The live blocks equal an unwelded tessellation of a fresh Surface of the same mesh."""
     # The incremental surface keeps the fitted K-gons of tubes (it does not run the search that
     # stitch.Surface runs where they fold), and moving the holed cube's vertices folds its tube.
-    fresh = stitch.Surface(live.mesh, method, unfold_tubes=False).tessellate(live.resolution,
-                                                                            welded=False)
+    fresh = stitch.Surface(live.mesh, method, unfold_tubes=False).tessellate(
+        live.resolution, welded=False, uvs=True, patches=True)
     t = live.tessellation
     blocks = t.patches >= 0  # every patch's block; holes' half-edges have empty ones
     assert blocks.sum() == len(fresh.vertices)

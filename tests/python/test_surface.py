@@ -25,8 +25,15 @@ def test_welded_tessellation_is_closed_with_the_input_genus(holed, method):
     t = surface.tessellate(4)
     assert t.vertices.dtype == np.float64 and t.vertices.shape[1] == 3
     assert t.quads.dtype == np.int32 and t.quads.shape == (holed.num_patches * 16, 4)
-    assert t.normals.shape == t.vertices.shape and t.uvs.shape == (len(t.vertices), 2)
-    assert t.patches.dtype == np.int32 and t.patches.shape == (len(t.vertices),)
+    assert t.normals.shape == t.vertices.shape
+    # The attributes only when asked.
+    assert t.uvs.shape == (0, 2) and t.patches.shape == (0,) and t.levels.shape == (0,)
+    a = surface.tessellate(4, uvs=True, patches=True, levels=True)
+    assert np.array_equal(a.vertices, t.vertices) and np.array_equal(a.quads, t.quads)
+    assert a.uvs.shape == (len(t.vertices), 2)
+    assert a.patches.dtype == np.int32 and a.patches.shape == (len(t.vertices),)
+    assert a.levels.shape == (len(t.vertices),)
+    assert surface.tessellate(4, patches=True).uvs.shape == (0, 2)
     # Building a stitch.Mesh checks that the quads form a closed oriented manifold.
     assert stitch.Mesh(t.vertices, t.quads).genus == 1
     # Normals are normalised in double precision: unit up to a few ulps.
@@ -35,7 +42,7 @@ def test_welded_tessellation_is_closed_with_the_input_genus(holed, method):
 
 def test_unwelded_tessellation_has_every_patch_grid(holed):
     r = 3
-    t = stitch.Surface(holed).tessellate(r, welded=False)
+    t = stitch.Surface(holed).tessellate(r, welded=False, uvs=True, patches=True)
     assert len(t.vertices) == holed.num_patches * (r + 1) ** 2
     assert len(t.quads) == holed.num_patches * r * r
     assert np.array_equal(np.unique(t.patches), np.arange(holed.num_patches))
@@ -43,7 +50,7 @@ def test_unwelded_tessellation_has_every_patch_grid(holed):
 
 
 def test_tessellation_arrays_are_views_of_the_library_buffers(holed):
-    t = stitch.Surface(holed).tessellate(2)
+    t = stitch.Surface(holed).tessellate(2, uvs=True, patches=True, levels=True)
     for name in ["vertices", "normals", "uvs", "patches", "levels", "quads"]:
         a = getattr(t, name)
         assert a.base is t, name  # the buffer the library filled, owned by the Tessellation
@@ -56,7 +63,7 @@ def test_tessellation_arrays_are_views_of_the_library_buffers(holed):
 
 def test_evaluate_reproduces_the_tessellation(holed):
     surface = stitch.Surface(holed)
-    t = surface.tessellate(3, welded=False)
+    t = surface.tessellate(3, welded=False, uvs=True, patches=True, levels=True)
     e = surface.evaluate(t.patches, t.uvs[:, 0], t.uvs[:, 1])
     # The same evaluation at the same (patch, u, v): equal but for the order of operations,
     # which must not differ by more than round-off on coordinates of size 1.

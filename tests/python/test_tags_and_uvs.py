@@ -52,7 +52,7 @@ def test_semi_sharp_tags_are_honoured_by_refinement_unless_sharp_from_rounds_the
     assert surface.refinement["patches"] == 24 * 4**3 == len(surface.patches)
     refined = surface.refined_mesh
     assert refined is not None and len(refined.faces) == 6 * 4**3
-    assert surface.tessellate(1, welded=False).patches.max() < 4 * len(refined.faces)
+    assert surface.tessellate(1, welded=False, patches=True).patches.max() < 4 * len(refined.faces)
     name = surface.corner_name(int(surface.patches[-1]))
     assert surface.patch(name) == surface.patches[-1]
     assert surface.export(str(tmp_path / "s.bez.json"))["faces"] >= 24 * 4**3
@@ -129,7 +129,7 @@ def test_welded_and_unwelded_quads_are_the_same_quads_patch_after_patch():
     mesh.edit("insert-edge 1@1 5@2")
     surface = stitch.Surface(mesh)
     n = 3
-    welded, corners = surface.tessellate(n), surface.tessellate(n, welded=False)
+    welded, corners = surface.tessellate(n), surface.tessellate(n, welded=False, patches=True)
     assert np.abs(welded.vertices[welded.quads] - corners.vertices[corners.quads]).max() < 1e-12
     # Quad q lies on patch q // n^2, of face patch_faces[q // n^2].
     first = corners.quads[:, 0]

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/tess/adaptive.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
@@ -33,7 +34,10 @@ TriangleSoup triangulate(const PolygonSoup& soup);
 
 struct SurfaceCheckOptions {
   /// Adjacent triangles fold when the angle between their normals exceeds this (degrees).
-  /// 90: "pointing opposite ways" (negative dot product).
+  /// 90: "pointing opposite ways" (negative dot product), so that faces meeting at a right angle
+  /// (the creases and corners of a box, which a file does not mark) are not a fold. Pairs that
+  /// meet along a crease or at a cone point the check knows of are not tested
+  /// (check_surface(mesh, surface, ...)).
   double fold_angle_deg = 90;
   /// A triangle is degenerate when twice its area is below this times the squared bounding-box
   /// diagonal (1e-14: well above round-off for coordinates of order 1, far below any real
@@ -60,13 +64,33 @@ struct SurfaceCheckReport {
   }
   /// A few lines for people: the counts and the first listed problems (with their sources).
   [[nodiscard]] std::string describe(const TriangleSoup& soup) const;
+  /// The same for a report of check_surface(mesh, surface, resolution), whose triangle t is half
+  /// of quad t / 2 of the welded tessellation.
+  [[nodiscard]] std::string describe_quads() const;
 };
 
 /// Runs all checks. Pairs of triangles sharing an edge are tested for folds only; pairs sharing
 /// one vertex are tested by the opposite edge of each against the other (coplanar overlap of such
-/// pairs is not detected); all other pairs near each other (uniform grid) by Moller's
-/// triangle-triangle test, touching at a point not counting as crossing.
+/// pairs is not detected); all other pairs near each other (a uniform grid of cells about a
+/// triangle across) by Moller's triangle-triangle test, touching at a point not counting as
+/// crossing. Near-linear in the triangles, on every core; besides the soup it holds about 10
+/// bytes per triangle and a tile of the grid per thread. The pairs listed are the first by
+/// triangle number.
 SurfaceCheckReport check_surface(const TriangleSoup& soup, const SurfaceCheckOptions& options = {});
+/// The same checks of the welded tessellation at `resolution` (what stitch smooth writes, its
+/// quads split as triangulate splits them; triangle 2q + s is half s of quad q), without holding
+/// it: the patches are evaluated a region of space at a time, so memory grows with the mesh, not
+/// with the resolution. Crease-aware: two triangles that meet along an infinitely sharp edge of
+/// the surface (KgonSet::sharp) or at a cone point (a corner: three or more sharp edges or a
+/// corner tag, or a sector the K-gons could not flatten, KgonSet::cone) are no fold, whatever
+/// their angle. Throws InputError when the surface is not finite.
+SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                                 const SurfaceCheckOptions& options = {});
+/// The same for Bézier patches kept apart from a Surface (an IncrementalSurface's K-gons and nets,
+/// nets indexed by corner) under `method`, mdc or asc; the patches are mesh.patch_corners()'s.
+SurfaceCheckReport check_surface(const HalfedgeMesh& mesh, Method method, const KgonSet& kgons,
+                                 const std::vector<ControlNet>& nets, int resolution,
+                                 const SurfaceCheckOptions& options = {});
 /// The same checks for the part of a surface near an edit (local_check.hpp): only triangles
 /// with focus[t] != 0 count as degenerate, and only pairs with at least one such triangle count
 /// as folded, crossing or inconsistent. The others are there to be met. Throws

@@ -46,10 +46,12 @@ struct SurfaceFileCounts {
 
 /// The same file as write_surface_mesh(path, format, tessellate(mesh, surface, {resolution,
 /// true})), byte for byte, made block by block while it is written: memory grows with the input
-/// mesh, not with the resolution (except STL, which repeats positions per triangle and so holds
-/// them all, and glTF, whose buffer is written whole), and evaluation runs on every core. Refuses
-/// non-finite samples. Atomic. With options.uvs the file also has texture coordinates (then it is
-/// no longer write_surface_mesh's; glTF's vertices are split at seams).
+/// mesh, not with the resolution, and evaluation runs on every core. The formats made of
+/// triangles (STL, glTF) split each block's quads by positions evaluated for the block; glTF
+/// reads the vertices once more for the bounds its header states. Refuses non-finite samples.
+/// Atomic. With options.uvs the file also has texture coordinates (then it is no longer
+/// write_surface_mesh's; glTF's vertices are split at seams, over the whole tessellation held in
+/// memory).
 SurfaceFileCounts write_smooth_surface(const std::string& path, MeshFileFormat format,
                                        const HalfedgeMesh& mesh, const Surface& surface,
                                        int resolution, const SurfaceFileOptions& options = {});

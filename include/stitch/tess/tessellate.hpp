@@ -13,8 +13,12 @@ inline constexpr int kDefaultResolution = 8;
 struct TessellationOptions {
   int resolution = kDefaultResolution;  ///< segments per patch side, >= 1
   bool welded = true;  ///< share samples on patch boundaries (watertight); else one grid per patch
-  /// Fill TessellatedMesh::uv, patch and level (24 bytes per vertex that mesh writers do not need).
-  bool sample_attributes = true;
+  // The per-sample attributes, each filled only when asked (the arrays stay empty otherwise):
+  // positions, normals and quads are what a mesh is drawn and written from; the attributes cost
+  // 24 bytes per vertex more together, and fresh memory is what a first call mostly pays for.
+  bool uv = false;     ///< TessellatedMesh::uv, the sample's (u, v) in its patch (16 bytes)
+  bool patch = false;  ///< TessellatedMesh::patch, the corner of the patch it lies on (4 bytes)
+  bool level = false;  ///< TessellatedMesh::level, its level in the hierarchy (4 bytes)
   /// false, tessellating into a kept TessellatedMesh (the overload below): leave its quads as
   /// they are. They depend on the mesh's connectivity, the resolution and `welded` alone, so a
   /// caller that moved only positions (an animation, K-gon controls) since it last tessellated

@@ -30,7 +30,6 @@ enum class OutputKind {
 /// What a writer holds in memory besides the mesh and its surface.
 enum class MemoryModel {
   streamed,   ///< a few blocks at a time: memory does not grow with the resolution
-  positions,  ///< every position of the tessellation (STL repeats them per triangle)
   whole,      ///< the whole tessellation, then the file's buffer
   patch_set,  ///< the exact patches (a few hundred bytes per cell of the hierarchy)
   cad_model,  ///< the patches and OpenCASCADE's model of the file (about 1 kB per pole)
@@ -130,8 +129,14 @@ OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
                            const Surface& surface, const OutputSpec& spec = {},
                            std::span<const OutputFormat> formats = output_formats());
 
+/// Whether write_surface writes this request block by block, holding no more than the mesh, its
+/// surface and a few blocks at any resolution: a welded tessellation in a streamed format (glTF
+/// without texture coordinates).
+bool output_streams(const OutputFormat& format, const OutputSpec& spec);
+
 /// Bytes of memory write_surface needs at its peak for this mesh and request (the mesh and its
-/// surface, and what the format's memory model holds), for refusing up front what would not fit.
+/// surface, and what the format's memory model holds; glTF with `spec.uvs` holds the whole
+/// tessellation to split it at seams), for refusing up front what would not fit.
 std::int64_t output_memory_estimate(const HalfedgeMesh& mesh, const OutputFormat& format,
                                     const OutputSpec& spec);
 
