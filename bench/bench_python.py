@@ -4,9 +4,9 @@
 
     PYTHONPATH=build/python /usr/bin/python3 bench/bench_python.py [--grid 316] [--resolution 8]
 
-The Python figure covers the call and taking the five arrays (vertices, quads, normals, uvs,
-patches); freeing the result is outside both timings. The two are interleaved so that drift of a
-shared machine affects both alike; medians are compared.
+The Python figure covers the call and taking the arrays (vertices, quads, normals; uvs and
+patches empty unless asked); freeing the result is outside both timings. The two are
+interleaved so that drift of a shared machine affects both alike; medians are compared.
 """
 import argparse
 import gc

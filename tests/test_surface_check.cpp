@@ -250,6 +250,28 @@ TEST(SurfaceCheck, TheSurfacesCheckIsTheCheckOfItsTessellation) {
       }
 }
 
+// The check of nets kept apart from a Surface (as an IncrementalSurface keeps them) is the
+// Surface's check: the same patches, the same K-gons' creases and cone points.
+TEST(SurfaceCheck, NetsKeptApartAreCheckedAsTheirSurface) {
+  for (const auto& [name, mesh] : surfaces_to_check())
+    for (const Method method : {Method::mdc, Method::asc}) {
+      const Surface surface(mesh, method);
+      const SurfaceCheckReport expected = check_surface(mesh, surface, 6);
+      const SurfaceCheckReport apart =
+          check_surface(mesh, method, surface.bezier().kgons, surface.bezier().nets, 6);
+      const std::string what = name + " " + to_string(method);
+      EXPECT_EQ(apart.triangles, expected.triangles) << what;
+      EXPECT_EQ(apart.folded_pairs, expected.folded_pairs) << what;
+      EXPECT_EQ(apart.intersecting_pairs, expected.intersecting_pairs) << what;
+      EXPECT_EQ(apart.degenerate, expected.degenerate) << what;
+    }
+  const HalfedgeMesh cube = make_cube();
+  const Surface surface(cube, Method::mdc);
+  EXPECT_THROW(
+      (void)check_surface(cube, Method::cc, surface.bezier().kgons, surface.bezier().nets, 4),
+      UsageError);
+}
+
 TEST(SurfaceCheck, TheSurfacesCheckDoesNotDependOnThreads) {
   const HalfedgeMesh mesh = surfaces_to_check()[2].second;
   const Surface surface(mesh, Method::mdc);

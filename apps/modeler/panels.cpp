@@ -24,7 +24,6 @@ constexpr const char* kPickKinds[] = {"vertex", "edge", "face", "corner"};
 constexpr const char* kDragTools[] = {"view plane", "x", "y", "z"};
 constexpr const char* kKgonKinds[] = {"face", "vertex", "edge"};
 constexpr const char* kOverlays[] = {"mesh", "kgons", "nets", "tess"};
-constexpr const char* kViews[] = {"front", "back", "left", "right", "top", "bottom", "iso"};
 
 /// A combo over the names of `table` showing the row of `current`; the row chosen, if one was.
 template <class T>
@@ -288,9 +287,12 @@ void display_panel(App& app, Widgets& ui, const ScreenRect& area) {
   if (ui.checkbox("extraordinary points", &markers))
     run_line(app, fmt::format("overlay markers {}", markers ? "on" : "off"));
   ImGui::Separator();
-  for (int v = 0; v < int(std::size(kViews)); ++v) {
+  if (const auto* row = choice_combo(ui, "up axis", up_axis_table(), s.view.up))
+    run_line(app, line_of("up", *row));
+  for (int v = 0; v <= static_cast<int>(View::iso); ++v) {
     if (v != 0 && v != 4) ImGui::SameLine();  // two rows: the sides, then top, bottom, iso
-    if (ui.button(kViews[v])) run_line(app, std::string("view ") + kViews[v]);
+    const std::string name = to_string(static_cast<View>(v));
+    if (ui.button(name.c_str())) run_line(app, "view " + name);
   }
   if (ui.button("Frame all")) run_line(app, "frame all");
   ImGui::SameLine();

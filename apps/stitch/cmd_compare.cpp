@@ -36,6 +36,7 @@ struct CompareArgs {
   std::string out;
   std::string size = "480x480";
   std::string view = "iso";
+  std::string up{up_axis_table().front().name};
   int resolution = 16;
   int stripes = 32;
   double zoom = 0.6;
@@ -229,6 +230,7 @@ void write_index(const fs::path& dir, const std::string& input_path, const Compa
 void run_compare(const CompareArgs& a) {
   const ImageSize size = parse_image_size(a.size);
   const View view = parse_view(a.view);
+  const UpAxis up = parse_choice(up_axis_table(), a.up, "up axis");
   const fs::path dir(a.out);
   if (fs::exists(dir) && !fs::is_directory(dir)) {
     throw UsageError(fmt::format("the output '{}' exists and is not a directory", a.out));
@@ -274,12 +276,12 @@ void run_compare(const CompareArgs& a) {
     // One camera for all methods (from the first one's surface), so the images line up.
     if (!has_camera) {
       has_camera = true;
-      whole_camera = frame_view(view, scene.bounds, aspect);
+      whole_camera = frame_view(view, scene.bounds, aspect, up);
       if (scene.extraordinary.empty()) {
         closeup_note = "no close-up: the mesh has no extraordinary point";
       } else {
         const ExtraordinaryPoint& p = highest_valence_point(scene.extraordinary);
-        closeup_camera = focus_camera(p, scene, aspect, a.zoom);
+        closeup_camera = focus_camera(p, scene, aspect, a.zoom, up);
         has_closeup = true;
         closeup_note =
             fmt::format("the extraordinary point of highest valence ({} {}, K = {})",
@@ -332,6 +334,10 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--size", args->size, "size WxH of each image")->capture_default_str();
   cmd->add_option("--view", args->view, "front, back, left, right, top, bottom or iso")
+      ->capture_default_str();
+  cmd->add_option("--up", args->up,
+                  "the world axis up in the images: " + choice_help(up_axis_table()))
+      ->check(choice_validator(up_axis_table()))
       ->capture_default_str();
   cmd->add_option("--resolution", args->resolution, "segments per patch side")
       ->check(CLI::Range(1, limits::max_resolution))

@@ -29,6 +29,7 @@ struct RenderArgs {
   std::string show;
   std::string size = "800x600";
   std::string view;
+  std::string up{up_axis_table().front().name};
   std::string eye, target;
   bool focus_ev = false;
   double zoom = 0.6;
@@ -66,6 +67,7 @@ void run_render(const RenderArgs& a) {
     throw UsageError("--target needs --eye");
   }
   const View view = parse_view(a.view.empty() ? "iso" : a.view);
+  const UpAxis up = parse_choice(up_axis_table(), a.up, "up axis");
   const std::optional<Vec3> eye =
       a.eye.empty() ? std::nullopt : std::optional(parse_point(a.eye, "--eye"));
   const std::optional<Vec3> target =
@@ -106,11 +108,11 @@ void run_render(const RenderArgs& a) {
   const double aspect = static_cast<double>(size.width) / size.height;
   Camera camera;
   if (a.focus_ev) {
-    camera = focus_camera(highest_valence_point(scene.extraordinary), scene, aspect, a.zoom);
+    camera = focus_camera(highest_valence_point(scene.extraordinary), scene, aspect, a.zoom, up);
   } else if (eye) {
-    camera = look_at(*eye, target.value_or(scene.bounds.center()), scene.bounds);
+    camera = look_at(*eye, target.value_or(scene.bounds.center()), scene.bounds, up);
   } else {
-    camera = frame_view(view, scene.bounds, aspect);
+    camera = frame_view(view, scene.bounds, aspect, up);
   }
 
   stage.begin(fmt::format("rendering {}x{}", size.width, size.height));
@@ -151,7 +153,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--view", args->view,
                   "front, back, left, right, top, bottom or iso (default), framing the model");
   cmd->add_option("--eye", args->eye,
-                  "camera position x,y,z (with --target); z is up in the image");
+                  "camera position x,y,z (with --target); the --up axis is up in the image");
+  cmd->add_option("--up", args->up,
+                  "the world axis up in the image: " + choice_help(up_axis_table()))
+      ->check(choice_validator(up_axis_table()))
+      ->capture_default_str();
   cmd->add_option("--target", args->target,
                   "point looked at, x,y,z (default: the centre of the model)");
   cmd->add_flag("--focus-ev", args->focus_ev,

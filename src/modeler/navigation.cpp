@@ -46,7 +46,7 @@ double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
 
 Vec3 OrbitView::eye_direction() const {
   const double y = rad(yaw_deg), p = rad(pitch_deg);
-  return {std::cos(p) * std::sin(y), -std::cos(p) * std::cos(y), std::sin(p)};
+  return from_z_up({std::cos(p) * std::sin(y), -std::cos(p) * std::cos(y), std::sin(p)}, up);
 }
 
 Camera OrbitView::camera(const BoundingBox& scene) const {
@@ -55,7 +55,7 @@ Camera OrbitView::camera(const BoundingBox& scene) const {
   c.target = target;
   const double y = rad(yaw_deg), p = rad(pitch_deg);
   // d(eye direction)/d(pitch): always perpendicular to the view, so straight up/down views work.
-  c.up = Vec3(-std::sin(p) * std::sin(y), std::sin(p) * std::cos(y), std::cos(p));
+  c.up = from_z_up({-std::sin(p) * std::sin(y), std::sin(p) * std::cos(y), std::cos(p)}, up);
   c.fov_y_deg = fov_y_deg;
   const double radius = scene.empty() ? 1.0 : std::max(scene.radius(), 1e-9);
   const double to_center = scene.empty() ? distance : (scene.center() - c.eye).norm();
@@ -92,7 +92,7 @@ void OrbitView::frame(const Vec3& center, double radius, double aspect) {
 }
 
 void OrbitView::set_standard(View view, const BoundingBox& box, double aspect) {
-  const auto [from, up] = view_direction(view);
+  const auto [from, up] = view_direction(view);  // the angles are those of the z-up frame
   const double deg = 180.0 / std::numbers::pi;
   // Exactly +-90 straight up and down: projects refuse a pitch beyond that.
   pitch_deg = from.z() >= 1.0 ? 90.0 : from.z() <= -1.0 ? -90.0 : std::asin(from.z()) * deg;

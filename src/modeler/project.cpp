@@ -89,7 +89,8 @@ std::string project_to_json(const Project& project) {
   for (int o = 0; o < num_overlays; ++o)
     if (d.overlays[o]) overlays.push_back(overlay_names[o]);
   const OrbitView& v = project.view;
-  const json view = {{"target", vec_json(v.target)},
+  const json view = {{"up", choice_name(up_axis_table(), v.up)},
+                     {"target", vec_json(v.target)},
                      {"distance", v.distance},
                      {"yaw", v.yaw_deg},
                      {"pitch", v.pitch_deg},
@@ -114,6 +115,7 @@ Project project_from_json(const std::string& text, const std::string& source) {
     p.state.kgons = std::move(file.kgons);
 
     const json v = section(file, "view");
+    p.view.up = parse_choice(up_axis_table(), v.value("up", "z"), "up axis");
     p.view.target = vec_from(v.at("target"), "the view target");
     p.view.distance = v.at("distance").get<double>();
     p.view.yaw_deg = v.at("yaw").get<double>();

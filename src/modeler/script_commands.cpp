@@ -295,6 +295,12 @@ ScriptResult run_view(Session& s, const ScriptLine& line, const ScriptHooks&) {
   return {};
 }
 
+ScriptResult run_up(Session& s, const ScriptLine& line, const ScriptHooks&) {
+  expect(line.words, 1, 1, choice_synopsis("up", up_axis_table()));
+  s.view.up = parse_choice(up_axis_table(), line.words[1], "up axis");
+  return {};
+}
+
 ScriptResult run_frame(Session& s, const ScriptLine& line, const ScriptHooks&) {
   expect(line.words, 1, 1, "frame all|selection");
   if (line.words[1] == "all") {
@@ -491,7 +497,7 @@ ScriptLine read_script_line(std::string_view line) {
 std::span<const ScriptCommand> script_command_table() {
   // The order of `help` and of the unknown-command message; docs/modeler.md describes each row.
   // Built once: some synopses and helps read the library's tables.
-  static const std::array<ScriptCommand, 27> table{{
+  static const std::array<ScriptCommand, 28> table{{
       {"primitive", "primitive NAME [PARAMS]",
        "a new document from a primitive (cube, torus 8 6, ...); undoable", run_primitive},
       {"move-vertex", "move-vertex V X Y Z", "sets vertex V's position", run_move_vertex},
@@ -517,6 +523,10 @@ std::span<const ScriptCommand> script_command_table() {
        run_split},
       {"view", "view front|back|left|right|top|bottom|iso", "a standard view, the model framed",
        run_view},
+      {"up", choice_synopsis("up", up_axis_table()),
+       "the world axis shown up: the orbit turns about it and the views are its (saved in the "
+       "project)",
+       run_up},
       {"frame", "frame all|selection", "fits the model or the selection into the view", run_frame},
       {"orbit", "orbit DYAW DPITCH", "turns the camera by degrees", run_orbit},
       {"zoom", "zoom STEPS", "zooms in by steps (out when negative)", run_zoom},

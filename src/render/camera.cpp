@@ -20,10 +20,16 @@ double deg_to_rad(double d) {
   return d * std::numbers::pi / 180.0;
 }
 
-// Screen-up for a camera looking along `dir`: world z, as for the standard views and the
-// primitives, except when looking (almost) straight down or up z, where +y is up as in `top`.
-Vec3 world_up(const Vec3& dir) {
-  return std::abs(dir.normalized().z()) < 0.99 ? Vec3::UnitZ() : Vec3::UnitY();
+constexpr Choice<UpAxis> kUpAxes[] = {
+    {"z", UpAxis::z, "z is up (stitch's primitives, CAD)"},
+    {"y", UpAxis::y, "y is up (most scanners' and DCC tools' exports: glTF, Blender's OBJ)"},
+};
+
+// Screen-up for a camera looking along `dir`: the world's up axis, as for the standard views,
+// except when looking (almost) straight along it, where the z-up frame's +y is up as in `top`.
+Vec3 world_up(const Vec3& dir, UpAxis up) {
+  const Vec3 d = to_z_up(dir, up);
+  return from_z_up(std::abs(d.normalized().z()) < 0.99 ? Vec3::UnitZ() : Vec3::UnitY(), up);
 }
 
 void set_clip_planes(Camera& camera, const BoundingBox& box) {
@@ -34,6 +40,18 @@ void set_clip_planes(Camera& camera, const BoundingBox& box) {
 }
 
 }  // namespace
+
+ChoiceTable<UpAxis> up_axis_table() {
+  return kUpAxes;
+}
+
+Vec3 from_z_up(const Vec3& d, UpAxis up) {
+  return up == UpAxis::y ? Vec3(d.x(), d.z(), -d.y()) : d;
+}
+
+Vec3 to_z_up(const Vec3& d, UpAxis up) {
+  return up == UpAxis::y ? Vec3(d.x(), -d.z(), d.y()) : d;
+}
 
 BoundingBox bounding_box(const std::vector<Vec3>& points) {
   BoundingBox box;
@@ -54,7 +72,7 @@ std::string to_string(View view) {
 }
 
 Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double aspect,
-                    const BoundingBox& scene) {
+                    const BoundingBox& scene, UpAxis up) {
   Camera camera;
   const Vec3 dir = from.normalized();
   const double half_fov_y = deg_to_rad(camera.fov_y_deg) / 2;
@@ -62,7 +80,7 @@ Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double 
   const double distance = std::max(radius, 1e-9) / std::sin(std::min(half_fov_x, half_fov_y));
   camera.target = center;
   camera.eye = center + distance * dir;
-  camera.up = world_up(dir);
+  camera.up = world_up(dir, up);
   BoundingBox clip = scene;
   clip.extend(center + Vec3::Constant(radius));
   clip.extend(center - Vec3::Constant(radius));
@@ -72,7 +90,11 @@ Camera frame_sphere(const Vec3& center, double radius, const Vec3& from, double 
   return camera;
 }
 
-ViewDirection view_direction(View view) {
+ViewDirection view_direction(View view, UpAxis up) {
+  if (up != UpAxis::z) {
+    const ViewDirection d = view_direction(view, UpAxis::z);
+    return {from_z_up(d.from, up), from_z_up(d.up, up)};
+  }
   switch (view) {
     case View::front:
       return {-Vec3::UnitY(), Vec3::UnitZ()};
@@ -95,8 +117,8 @@ ViewDirection view_direction(View view) {
   return {from, (Vec3::UnitZ() - from.z() * from).normalized()};
 }
 
-Camera frame_view(View view, const BoundingBox& box, double aspect) {
-  const auto [from, up] = view_direction(view);
+Camera frame_view(View view, const BoundingBox& box, double aspect, UpAxis up_axis) {
+  const auto [from, up] = view_direction(view, up_axis);
   // Fit the box's eight corners (tighter than its bounding sphere): each corner at lateral
   // offsets (x, y) and depth z towards the eye needs distance >= z + |x| / tan(half fov x).
   Camera camera;
@@ -121,14 +143,14 @@ Camera frame_view(View view, const BoundingBox& box, double aspect) {
   return camera;
 }
 
-Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box) {
+Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box, UpAxis up) {
   if ((eye - target).norm() <= 1e-12 * std::max(1.0, eye.norm())) {
     throw UsageError("the camera's eye and target are the same point");
   }
   Camera camera;
   camera.eye = eye;
   camera.target = target;
-  camera.up = world_up(target - eye);
+  camera.up = world_up(target - eye, up);
   set_clip_planes(camera, box);
   return camera;
 }
@@ -136,7 +158,7 @@ Camera look_at(const Vec3& eye, const Vec3& target, const BoundingBox& box) {
 Eigen::Matrix4f view_matrix(const Camera& camera) {
   const Vec3 f = (camera.target - camera.eye).normalized();
   Vec3 s = f.cross(camera.up);
-  if (s.norm() < 1e-9) s = f.cross(world_up(f));
+  if (s.norm() < 1e-9) s = f.cross(world_up(f, UpAxis::z));
   s.normalize();
   const Vec3 u = s.cross(f);
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();

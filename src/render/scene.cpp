@@ -69,18 +69,20 @@ void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_pol
 }
 
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
-                    double radius_patches) {
+                    double radius_patches, UpAxis up) {
   const Vec3 n = point.normal.normalized();
-  // Tilt the eye off the normal so the view is oblique: towards +y (or +z when the normal is
-  // along y). Not towards z, the image's up: a point on the wall of a hole through z would then
-  // be seen along the tube, where the zebra stripes of the whole wall crowd the close-up.
-  Vec3 towards = Vec3::UnitY() - Vec3::UnitY().dot(n) * n;
-  if (towards.norm() < 1e-6) towards = Vec3::UnitZ() - Vec3::UnitZ().dot(n) * n;
+  // Tilt the eye off the normal so the view is oblique: towards +y of the z-up frame (or its +z
+  // when the normal is along that y). Not towards the image's up: a point on the wall of a hole
+  // along the up axis would then be seen along the tube, where the zebra stripes of the whole
+  // wall crowd the close-up.
+  const Vec3 y = from_z_up(Vec3::UnitY(), up), z = from_z_up(Vec3::UnitZ(), up);
+  Vec3 towards = y - y.dot(n) * n;
+  if (towards.norm() < 1e-6) towards = z - z.dot(n) * n;
   const double tilt = 30.0 * std::numbers::pi / 180.0;
   const Vec3 from = std::cos(tilt) * n + std::sin(tilt) * towards.normalized();
   const double extent = point.extent > 0 ? point.extent : scene.bounds.radius() * 0.25;
   const double radius = radius_patches * extent;
-  Camera camera = frame_sphere(point.position, radius, from, aspect, scene.bounds);
+  Camera camera = frame_sphere(point.position, radius, from, aspect, scene.bounds, up);
   // Cut away everything in front of the framed sphere: an extraordinary point can lie inside
   // the model (e.g. that of a face whose loop runs around a handle), hidden by other sheets.
   camera.near_plane = std::max(camera.near_plane, (camera.eye - point.position).norm() - radius);

@@ -36,6 +36,26 @@ TEST(ModelerNavigation, StandardViewsLookFromTheSameSidesAsTheRenderer) {
   }
 }
 
+TEST(ModelerNavigation, WithYUpTheOrbitTurnsAboutYAndTheViewsAreTheRenderers) {
+  // Tolerance 1e-9 as above.
+  for (View v : {View::front, View::top, View::iso}) {
+    SCOPED_TRACE(to_string(v));
+    OrbitView o;
+    o.up = UpAxis::y;
+    o.set_standard(v, cube_box());
+    const Camera expected = frame_view(v, cube_box(), 1.0, UpAxis::y);
+    EXPECT_LT((o.eye_direction() - (expected.eye - expected.target).normalized()).norm(), 1e-9);
+  }
+  OrbitView o;
+  o.up = UpAxis::y;
+  o.set_standard(View::front, cube_box());
+  EXPECT_LT((o.eye_direction() - Vec3::UnitZ()).norm(), 1e-9);  // front of a y-up model: from +z
+  const double height = o.eye_direction().y();
+  o.orbit(100, 0);  // a turn about y keeps the eye's height
+  EXPECT_NEAR(o.eye_direction().y(), height, 1e-12);
+  EXPECT_GT(o.eye_direction().x() * o.eye_direction().x(), 0.1);
+}
+
 TEST(ModelerNavigation, OrbitPanZoom) {
   OrbitView o;
   o.set_standard(View::front, cube_box());

@@ -30,6 +30,7 @@ Project sample() {
   p.state.kgons.edge[5] = c;
   p.state.kgons.global.scale = 0.9;
   p.view.yaw_deg = 33;
+  p.view.up = UpAxis::y;
   p.view.target = Vec3(0.1, 0.2, 0.3);
   p.display.method = Method::asc;
   p.display.mode = ShadingMode::zebra;

@@ -78,6 +78,11 @@ TEST(ScriptCommands, LinesThatTakeANameReadTheLibrarysTables) {
     EXPECT_EQ(display_mode(s.display), m.value);
     EXPECT_EQ(s.display.input_polygons, !m.value);
   }
+  EXPECT_EQ(row("up").synopsis, "up " + choice_names(up_axis_table(), "|"));
+  for (const Choice<UpAxis>& u : up_axis_table()) {
+    ASSERT_FALSE(run_script(s, {"up " + std::string(u.name)}, {}));
+    EXPECT_EQ(s.view.up, u.value);
+  }
   const auto error = run_script(s, {"mode frobnicate"}, {});
   ASSERT_TRUE(error);
   EXPECT_EQ(error->message, "unknown display mode 'frobnicate' (known: " +

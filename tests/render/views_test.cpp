@@ -4,7 +4,10 @@
 #include <stb_image.h>
 #include <sys/wait.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "../temp_folder.hpp"
@@ -96,6 +99,39 @@ TEST(Views, ExplicitEyesAndCloseUpsKeepZUp) {
   }
 }
 
+// --up y: every camera is the z-up one turned by from_z_up, (x, y, z) -> (x, z, -y), so a y-up
+// model (the z-up one turned the same way) is seen as the z-up one is. The turn permutes
+// coordinates and flips a sign, so the comparison is exact.
+TEST(Views, YUpCamerasAreTheZUpOnesTurned) {
+  BoundingBox box, turned;
+  box.extend(Vec3(-1, -2, -3));
+  box.extend(Vec3(4, 5, 6));
+  turned.extend(from_z_up(box.min, UpAxis::y));
+  turned.extend(from_z_up(box.max, UpAxis::y));
+  EXPECT_EQ(from_z_up(Vec3::UnitZ(), UpAxis::y), Vec3::UnitY());
+  EXPECT_EQ(to_z_up(from_z_up(Vec3(1, 2, 3), UpAxis::y), UpAxis::y), Vec3(1, 2, 3));
+  const auto expect_turned = [](const Camera& y_up, const Camera& z_up) {
+    EXPECT_EQ(y_up.eye, from_z_up(z_up.eye, UpAxis::y));
+    EXPECT_EQ(y_up.target, from_z_up(z_up.target, UpAxis::y));
+    EXPECT_EQ(y_up.up, from_z_up(z_up.up, UpAxis::y));
+    EXPECT_EQ(y_up.near_plane, z_up.near_plane);
+    EXPECT_EQ(y_up.far_plane, z_up.far_plane);
+  };
+  for (int v = 0; v <= static_cast<int>(View::iso); ++v) {
+    const auto view = static_cast<View>(v);
+    SCOPED_TRACE(to_string(view));
+    expect_turned(frame_view(view, turned, 1.5, UpAxis::y), frame_view(view, box, 1.5));
+  }
+  for (const Vec3& eye : {Vec3(3, -4, 5), Vec3(0, 0, 9), Vec3(-6, 0.5, 0.2)}) {
+    SCOPED_TRACE(::testing::Message() << "eye " << eye.transpose());
+    expect_turned(look_at(from_z_up(eye, UpAxis::y), Vec3::Zero(), turned, UpAxis::y),
+                  look_at(eye, Vec3::Zero(), box));
+    expect_turned(frame_sphere(Vec3::Zero(), 0.5, from_z_up(eye, UpAxis::y), 1.0, turned,
+                               UpAxis::y),
+                  frame_sphere(Vec3::Zero(), 0.5, eye, 1.0, box));
+  }
+}
+
 /// The centre of the drawn pixels relative to the image's centre, image y pointing up; in
 /// pixels.
 Eigen::Vector2d drawn_centre(const std::string& path) {
@@ -144,6 +180,32 @@ TEST(Views, RenderedCubeWithTowersShowsEachTowerWhereTheViewPutsIt) {
     EXPECT_GT(-right * c.x(), 3.0) << c.transpose();
     EXPECT_GT(-up * c.y(), 3.0) << c.transpose();
   }
+  // The same model turned to y up, as a DCC tool exports it ((x, y, z) -> (x, z, -y)), and
+  // rendered with --up y: each view shows it as the z-up one, up to a pixel of rasterization.
+  const std::string turned = folder.file("towers-y-up.obj");
+  {
+    std::istringstream in(read_file(towers));
+    std::ostringstream out;
+    for (std::string line; std::getline(in, line);) {
+      double x = 0, y = 0, z = 0;
+      if (line.rfind("v ", 0) == 0 && std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3)
+        out << "v " << x << ' ' << z << ' ' << -y << '\n';
+      else
+        out << line << '\n';
+    }
+    std::ofstream(turned) << out.str();
+  }
+  for (const Expected& e : kViews) {
+    SCOPED_TRACE(to_string(e.view));
+    const std::string z_up = folder.file(to_string(e.view) + ".png");
+    const std::string y_up = folder.file(to_string(e.view) + "-y-up.png");
+    ASSERT_EQ(run_stitch(folder, "render '" + turned + "' -o '" + y_up + "' --view " +
+                                     to_string(e.view) + " --up y --draw input --size 160x160"),
+              0)
+        << read_file(folder.file("stderr.txt"));
+    EXPECT_LT((drawn_centre(y_up) - drawn_centre(z_up)).norm(), 1.0);
+  }
+  EXPECT_NE(run_stitch(folder, "render '" + turned + "' -o x.png --up x"), 0);
 }
 
 }  // namespace

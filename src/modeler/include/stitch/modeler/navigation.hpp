@@ -10,9 +10,11 @@
 
 namespace stitch::modeler {
 
-/// A camera orbiting `target` (world z is up, as everywhere in stitch): yaw turns about z, pitch
-/// lifts the eye. yaw = pitch = 0 is the front view (eye on -y, looking along +y).
+/// A camera orbiting `target` about the world's up axis: yaw turns about it, pitch lifts the eye.
+/// yaw = pitch = 0 is the front view (for z up: eye on -y, looking along +y; for y up the same
+/// turned by from_z_up).
 struct OrbitView {
+  UpAxis up = UpAxis::z;
   Vec3 target = Vec3::Zero();
   double distance = 6.0;
   double yaw_deg = 0.0;

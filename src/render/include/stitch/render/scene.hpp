@@ -54,6 +54,6 @@ void upload_scene(Renderer& renderer, const SceneGeometry& scene, bool input_pol
 /// The near plane cuts away whatever lies in front of that sphere (a cutaway view), so points
 /// inside the model are seen too.
 Camera focus_camera(const ExtraordinaryPoint& point, const SceneGeometry& scene, double aspect,
-                    double radius_patches = 0.6);
+                    double radius_patches = 0.6, UpAxis up = UpAxis::z);
 
 }  // namespace stitch
