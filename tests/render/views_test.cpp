@@ -126,9 +126,9 @@ TEST(Views, YUpCamerasAreTheZUpOnesTurned) {
     SCOPED_TRACE(::testing::Message() << "eye " << eye.transpose());
     expect_turned(look_at(from_z_up(eye, UpAxis::y), Vec3::Zero(), turned, UpAxis::y),
                   look_at(eye, Vec3::Zero(), box));
-    expect_turned(frame_sphere(Vec3::Zero(), 0.5, from_z_up(eye, UpAxis::y), 1.0, turned,
-                               UpAxis::y),
-                  frame_sphere(Vec3::Zero(), 0.5, eye, 1.0, box));
+    expect_turned(
+        frame_sphere(Vec3::Zero(), 0.5, from_z_up(eye, UpAxis::y), 1.0, turned, UpAxis::y),
+        frame_sphere(Vec3::Zero(), 0.5, eye, 1.0, box));
   }
 }
 
