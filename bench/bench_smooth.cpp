@@ -21,6 +21,7 @@
 #include "bench_meshes.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/tess/export.hpp"
 #include "stitch/tess/tessellate.hpp"
 #include "tess/layout.hpp"
@@ -50,19 +51,6 @@ const char* extension(int format) {
   }
 }
 
-stitch::MeshFileFormat mesh_format(int format) {
-  switch (format) {
-    case 1:
-      return stitch::MeshFileFormat::obj;
-    case 2:
-      return stitch::MeshFileFormat::stl;
-    case 4:
-      return stitch::MeshFileFormat::glb;
-    default:
-      return stitch::MeshFileFormat::ply;
-  }
-}
-
 void BM_smooth(benchmark::State& state) {
   const auto kind = static_cast<MeshKind>(state.range(0));
   const stitch::HalfedgeMesh& generated = bench_mesh(kind, static_cast<int>(state.range(1)));
@@ -73,6 +61,7 @@ void BM_smooth(benchmark::State& state) {
   stitch::write_mesh(input, generated);
   const std::string output =
       (folder / (std::string("smooth") + extension(state.range(2)))).string();
+  const stitch::MeshFileFormat format = *stitch::output_format(output).mesh_format;
 
   double read = 0, surface_time = 0, write = 0, evaluate_only = 0;
   std::int64_t vertices = 0;
@@ -86,9 +75,8 @@ void BM_smooth(benchmark::State& state) {
     start = Clock::now();
     stitch::SurfaceFileOptions file;
     file.single_precision = state.range(2) == 3;
-    vertices += stitch::write_smooth_surface(output, mesh_format(static_cast<int>(state.range(2))),
-                                             mesh, surface, kResolution, file)
-                    .vertices;
+    vertices +=
+        stitch::write_smooth_surface(output, format, mesh, surface, kResolution, file).vertices;
     write += seconds_since(start);
 
     state.PauseTiming();

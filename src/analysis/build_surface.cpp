@@ -13,9 +13,6 @@ namespace stitch {
 
 namespace {
 
-bool semi_sharp(double s) {
-  return s > 0 && s < infinitely_sharp;
-}
 bool refined_for(double s) {
   return s > 0 && s < semi_sharp_refined_below;
 }
@@ -25,7 +22,7 @@ bool refined_for(double s) {
 void count_tags(const HalfedgeMesh& mesh, SemiSharpRefinement& r) {
   auto count = [&r](double s) {
     if (refined_for(s)) r.largest_tag = std::max(r.largest_tag, s);
-    if (semi_sharp(s) && !refined_for(s)) ++r.sharpened;
+    if (is_semi_sharp(s) && !refined_for(s)) ++r.sharpened;
   };
   for (Edge e : mesh.edges())
     if (!mesh.is_boundary(e)) count(mesh.sharpness(e));
@@ -164,14 +161,18 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
                                 BoundaryInterpolation boundary, const CornerUvs* uvs) {
   SemiSharpMesh out{mesh, {}, uvs ? *uvs : CornerUvs{}};
   HalfedgeMesh& fine = out.mesh;
+  // The semi-sharp tags `left` selects, made infinitely sharp (boundary edges are already).
+  const auto sharpen = [&fine](auto left) {
+    for (Edge e : fine.edges())
+      if (!fine.is_boundary(e) && is_semi_sharp(fine.sharpness(e)) && left(fine.sharpness(e)))
+        fine.set_sharpness(e, infinitely_sharp);
+    for (Vertex v : fine.vertices())
+      if (is_semi_sharp(fine.sharpness(v)) && left(fine.sharpness(v)))
+        fine.set_sharpness(v, infinitely_sharp);
+  };
   // Sharp enough to be taken as infinitely sharp (semi_sharp_refined_below): so from the start,
   // or the levels would bring them down.
-  for (Edge e : fine.edges())
-    if (!fine.is_boundary(e) && semi_sharp(fine.sharpness(e)) && !refined_for(fine.sharpness(e)))
-      fine.set_sharpness(e, infinitely_sharp);
-  for (Vertex v : fine.vertices())
-    if (semi_sharp(fine.sharpness(v)) && !refined_for(fine.sharpness(v)))
-      fine.set_sharpness(v, infinitely_sharp);
+  sharpen([](double s) { return !refined_for(s); });
   for (int l = 0; l < levels; ++l) {
     CatmullClarkRefinement step = catmark_refinement_with_features(fine, boundary);
     if (!out.uvs.empty()) out.uvs = refine_uvs(fine, step, out.uvs);
@@ -188,11 +189,7 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
   }
   // What the levels did not bring down to smooth stays sharp from here on (SemiSharpRefinement:
   // the limits cut the refinement short).
-  for (Edge e : fine.edges())
-    if (!fine.is_boundary(e) && semi_sharp(fine.sharpness(e)))
-      fine.set_sharpness(e, infinitely_sharp);
-  for (Vertex v : fine.vertices())
-    if (semi_sharp(fine.sharpness(v))) fine.set_sharpness(v, infinitely_sharp);
+  sharpen([](double) { return true; });
   if (levels > 0) one_hole_per_boundary_loop(out);
   return out;
 }
@@ -212,10 +209,10 @@ SemiSharpMesh::Point SemiSharpMesh::point(Corner c, double u, double v) const {
     const double dv[2] = {0.5 * (pp[0] - p0[0]), 0.5 * (pp[1] - p0[1])};
     const double x = p.u - p0[0], y = p.v - p0[1];
     const double det = du[0] * dv[1] - du[1] * dv[0];
-    const double a = (x * dv[1] - y * dv[0]) / det;
-    const double b = (du[0] * y - du[1] * x) / det;
     // (a, b) = A ((u, v) - p0) with A the inverse of the columns du, dv.
     const double inv[2][2] = {{dv[1] / det, -dv[0] / det}, {-du[1] / det, du[0] / det}};
+    const double a = inv[0][0] * x + inv[0][1] * y;
+    const double b = inv[1][0] * x + inv[1][1] * y;
     double j[2][2];
     for (int r = 0; r < 2; ++r)
       for (int col = 0; col < 2; ++col)

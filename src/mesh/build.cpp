@@ -268,18 +268,17 @@ std::string tag_numbers(int line, int a, int b = -1) {
 /// they are.
 void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
                      const std::vector<int>& vertex_source, std::vector<std::string>& warnings) {
-  auto semi = [](double s) { return s > 0 && s < infinitely_sharp; };
   auto number = [&](Vertex v) {
     return soup_places::quoted(soup, soup_places::file_vertex(soup, vertex_source[v.idx]));
   };
   std::vector<std::string> edges, vertices;
   for (Edge e : mesh.edges())
-    if (!mesh.is_boundary(e) && semi(mesh.sharpness(e))) {
+    if (!mesh.is_boundary(e) && is_semi_sharp(mesh.sharpness(e))) {
       const Halfedge h = HalfedgeMesh::halfedge(e, 0);
       edges.push_back(fmt::format("({}, {})", number(mesh.origin(h)), number(mesh.target(h))));
     }
   for (Vertex v : mesh.vertices())
-    if (semi(mesh.sharpness(v))) vertices.push_back(std::to_string(number(v)));
+    if (is_semi_sharp(mesh.sharpness(v))) vertices.push_back(std::to_string(number(v)));
   const char* numbered = soup.numbering == Numbering::from_zero ? "from 0" : "from 1";
   // The first few are enough to find them in the file; the count says the rest.
   if (!edges.empty())

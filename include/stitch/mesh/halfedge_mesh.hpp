@@ -43,6 +43,10 @@ using Vec3 = Eigen::Vector3d;
 
 /// OpenSubdiv's infinite sharpness: tags at or above it make a crease or corner (method.md).
 inline constexpr double infinitely_sharp = 10.0;
+/// A tag sharp for a few levels of refinement and then smooth: 0 < s < infinitely_sharp.
+constexpr bool is_semi_sharp(double s) {
+  return s > 0 && s < infinitely_sharp;
+}
 
 /// How the surface treats boundary vertices with a single face (OpenSubdiv's
 /// Sdc::Options::VtxBoundaryInterpolation): interpolated as corners, or smoothed along the
