@@ -321,8 +321,10 @@ void place_vertex(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
     const Vec3 shift = m.position(v) - g.centroid;
     for (Vec3& p : g.points) p += shift;
     g.centroid = m.position(v);
+    if (t.sharp_spokes > 0) detail::turn_to_corner_curve(m, options, v, g, set);
+  } else if (t.sharp_spokes > 0) {
+    detail::set_dart_curve(m, options, v, set);
   }
-  if (t.sharp_spokes > 0) detail::set_dart_curve(m, options, v, set);
 }
 
 /// `bridge_openings`: the openings of the face on both sides of e, if it is one.

@@ -1,6 +1,7 @@
 #include "kgon/sharp.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "stitch/mesh/polygon.hpp"
@@ -85,6 +86,12 @@ Vec3 plane_normal_containing(const Vec3& t, const std::vector<Vec3>& points,
   return n;
 }
 
+/// The sharp curve leaving a corner along h: straight at first, read from the two ends alone.
+void set_corner_curve(const HalfedgeMesh& m, Halfedge h, KgonSet& set) {
+  set.sharp_curve[h.idx] = {(7.0 * m.position(m.origin(h)) + far_end(m, h)) / 8.0,
+                            curve_edge_point(m, h)};
+}
+
 }  // namespace
 
 void build_sector_kgons(const HalfedgeMesh& m, const KgonOptions& options, VertexKind kind,
@@ -107,9 +114,7 @@ void build_sector_kgons(const HalfedgeMesh& m, const KgonOptions& options, Verte
                                 curve_edge_point(m, h)};
     }
   } else {
-    for (int j : sharp_spokes)
-      set.sharp_curve[fan[j].idx] = {(7.0 * x + far_end(m, fan[j])) / 8.0,
-                                     curve_edge_point(m, fan[j])};
+    for (int j : sharp_spokes) set_corner_curve(m, fan[j], set);
   }
 
   Kgon g;
@@ -206,6 +211,22 @@ void set_dart_curve(const HalfedgeMesh& m, const KgonOptions& options, Vertex v,
       set.sharp_curve[h.idx] = {
           0.5 * (set.vertex_point(m, h) + set.vertex_point(m, m.rotate_cw(h))),
           curve_edge_point(m, h)};
+}
+
+void turn_to_corner_curve(const HalfedgeMesh& m, const KgonOptions& options, Vertex v, Kgon& g,
+                          KgonSet& set) {
+  for (Halfedge h : m.vertex_fan(v)) {
+    if (!is_sharp(m, HalfedgeMesh::edge(h), options)) continue;
+    set_corner_curve(m, h, set);
+    const Vec3 d = (far_end(m, h) - m.position(v)).normalized();
+    Vec3 normal = g.normal - g.normal.dot(d) * d;
+    if (normal.norm() < 1e-12) normal = d.unitOrthogonal();  // an edge along the normal
+    normal.normalize();
+    const Eigen::Matrix3d turn = Eigen::Quaterniond::FromTwoVectors(g.normal, normal).matrix();
+    for (Vec3& p : g.points) p = g.centroid + turn * (p - g.centroid);
+    g.normal = normal;
+    return;
+  }
 }
 
 Kgon sharp_edge_kgon(const HalfedgeMesh& m, Edge e, const KgonSet& set) {
