@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "stitch/error.hpp"
 #include "stitch/topology/operation.hpp"
@@ -72,6 +73,28 @@ std::array<double, 2> rotate(int rotation, double x, double y) {
   }
 }
 
+/// (s, t) of the face for (u, v) of the quadrant's root.
+std::array<double, 2> to_face(const FaceQuadrant& q, double u, double v) {
+  const auto [x, y] = rotate(q.rotation, u, v);
+  return {q.origin[0] + q.size * x, q.origin[1] + q.size * y};
+}
+
+/// (u, v) of the quadrant's root for (s, t) of the face.
+std::array<double, 2> to_root(const FaceQuadrant& q, double s, double t) {
+  return unrotate(q.rotation, (s - q.origin[0]) / q.size, (t - q.origin[1]) / q.size);
+}
+
+/// `inner` (a root in a square) placed in a face by `outer` (where that square lies): quarter
+/// turns about the unit square's centre add up, and the origin is where the whole map takes the
+/// point that the turn sends to (0, 0).
+FaceQuadrant compose(const FaceQuadrant& outer, const FaceQuadrant& inner) {
+  FaceQuadrant q{inner.corner, (outer.rotation + inner.rotation) % 4, outer.size * inner.size};
+  const auto [u, v] = unrotate(q.rotation, 0, 0);
+  const auto [x, y] = to_face(inner, u, v);
+  q.origin = to_face(outer, x, y);
+  return q;
+}
+
 /// Pole (p, q) of the face's net (p along s, q along t) from the root's net Q over the same
 /// rectangle (indices along u and v).
 const Vec3& reoriented(const Net& q_net, int rotation, int p, int q) {
@@ -132,8 +155,7 @@ void fill_knots(BsplineFace& face, const std::vector<RootCells>& cells) {
     // The root's u knots become s or t knots of the face, depending on the quarter turn.
     for (const bool along_u : {true, false})
       for (const double k : cells[quadrant.corner.idx].knots(along_u)) {
-        const double x = along_u ? k * quadrant.size : 0, y = along_u ? 0 : k * quadrant.size;
-        const auto [s, t] = rotate(quadrant.rotation, x, y);
+        const auto [s, t] = to_face(quadrant, along_u ? k : 0, along_u ? 0 : k);
         const bool gives_s = (quadrant.rotation % 2 == 0) == along_u;
         (gives_s ? face.u_knots : face.v_knots).push_back(gives_s ? s : t);
       }
@@ -155,10 +177,10 @@ void fill_poles(BsplineFace& face, const std::vector<RootCells>& cells) {
       while (face.quadrants[q].corner != centre.corner) ++q;
       const FaceQuadrant& quadrant = face.quadrants[q];
       // The rectangle in the root's (u, v), then in its cell's own square.
-      const auto [xa, ya] = unrotate(quadrant.rotation, s0, t0);
-      const auto [xb, yb] = unrotate(quadrant.rotation, s1, t1);
-      const double u0 = std::min(xa, xb) / quadrant.size, u1 = std::max(xa, xb) / quadrant.size;
-      const double v0 = std::min(ya, yb) / quadrant.size, v1 = std::max(ya, yb) / quadrant.size;
+      const auto [ua, va] = to_root(quadrant, s0, t0);
+      const auto [ub, vb] = to_root(quadrant, s1, t1);
+      const double u0 = std::min(ua, ub), u1 = std::max(ua, ub);
+      const double v0 = std::min(va, vb), v1 = std::max(va, vb);
       const BezierPatch& cell = cells[centre.corner.idx].at(centre.u, centre.v);
       const double scale = std::ldexp(1.0, cell.level);
       const Net net = restrict_net(cell.net, u0 * scale - cell.cell_u, u1 * scale - cell.cell_u,
@@ -179,28 +201,54 @@ std::vector<RootCells> cells_by_root(const HalfedgeMesh& mesh, const PatchSet& p
 /// The faces with their quadrants, sides and knots.
 std::vector<BsplineFace> layout(const HalfedgeMesh& mesh, const Surface& surface,
                                 const PatchSet& patches, FacePacking packing,
-                                const std::vector<RootCells>& cells) {
-  std::vector<Corner> roots;
-  for (const BezierPatch& patch : patches.patches)
-    if (roots.empty() || roots.back() != patch.corner) roots.push_back(patch.corner);
+                                const std::vector<RootCells>& cells, const ControlMesh* control) {
+  const HalfedgeMesh& named = control ? *control->mesh : mesh;
+  // Each control corner's roots, where they lie in its patch's square, in the patch set's order
+  // (without a control mesh, each corner is its own root).
+  std::vector<Corner> corners;  // control corners, in the order of their first root
+  std::vector<std::vector<FaceQuadrant>> tiles(named.halfedge_capacity());
+  for (const BezierPatch& patch : patches.patches) {
+    const Corner r = patch.corner;
+    FaceQuadrant at = control ? control->roots[r.idx] : FaceQuadrant{r};
+    const Corner c = at.corner;
+    std::vector<FaceQuadrant>& tile = tiles[c.idx];
+    if (!tile.empty() && tile.back().corner == r) continue;  // the root's other cells
+    if (tile.empty()) corners.push_back(c);
+    at.corner = r;
+    tile.push_back(at);
+  }
   const KgonSet& kgons = surface.bezier().kgons;
-  const auto sharp = [&](Halfedge h) { return kgons.sharp(HalfedgeMesh::edge(h)); };
-  // A corner patch's sides 0 and 3 are halves of the edges of its corner and the one before;
-  // sides 1 and 2 run inside the face.
+  // Whether side 0 (along the corner's edge) or side 3 (along the edge before it) of a control
+  // corner's square lies on a sharp edge: the side of the root at the square's corner (0, 0)
+  // there. A root's side j lies on the square's side (j + rotation) % 4; its sides 0 and 3 are
+  // halves of the edges of its corner and the one before, sides 1 and 2 run inside its face.
+  const auto sharp_side = [&](Corner c, int side) {
+    for (const FaceQuadrant& q : tiles[c.idx]) {
+      if (q.origin[0] != 0 || q.origin[1] != 0) continue;
+      const int j = (side - q.rotation + 4) % 4;
+      if (j == 0) return kgons.sharp(HalfedgeMesh::edge(q.corner));
+      if (j == 3) return kgons.sharp(HalfedgeMesh::edge(mesh.prev(q.corner)));
+    }
+    return false;
+  };
   const auto single = [&](Corner c) {
     BsplineFace face;
-    face.face = mesh.face(c).idx;
-    face.vertex = mesh.origin(c).idx;
-    face.quadrants = {{c, 0, 1.0}};
-    face.sharp_side = {sharp(c), false, false, sharp(mesh.prev(c))};
+    face.face = named.face(c).idx;
+    face.vertex = named.origin(c).idx;
+    face.corner = c;
+    face.quadrants = tiles[c.idx];
+    face.sharp_side = {sharp_side(c, 0), false, false, sharp_side(c, 3)};
     return face;
   };
   std::vector<BsplineFace> faces;
   if (packing == FacePacking::corners) {
-    for (Corner c : roots) faces.push_back(single(c));
+    for (Corner c : corners) faces.push_back(single(c));
   } else {
-    for (Face f : mesh.surface_faces()) {
-      const std::vector<Halfedge> loop = mesh.face_loop(f);
+    // Corner k of a quad is the quadrant at the face's corner k, turned k quarter turns.
+    constexpr std::array<std::array<double, 2>, 4> kOrigin{
+        {{0, 0}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}}};
+    for (Face f : named.surface_faces()) {
+      const std::vector<Halfedge> loop = named.face_loop(f);
       if (loop.size() != 4) {
         for (Halfedge h : loop) faces.push_back(single(h));
         continue;
@@ -208,8 +256,10 @@ std::vector<BsplineFace> layout(const HalfedgeMesh& mesh, const Surface& surface
       BsplineFace face;
       face.face = f.idx;
       for (int k = 0; k < 4; ++k) {
-        face.quadrants.push_back({loop[k], k, 0.5});
-        face.sharp_side[k] = sharp(loop[k]);  // side k runs along the edge of corner k
+        const FaceQuadrant square{loop[k], k, 0.5, kOrigin[k]};
+        for (const FaceQuadrant& q : tiles[loop[k].idx])
+          face.quadrants.push_back(compose(square, q));
+        face.sharp_side[k] = sharp_side(loop[k], 0);  // side k runs along the edge of corner k
       }
       faces.push_back(std::move(face));
     }
@@ -230,28 +280,38 @@ ChoiceTable<FacePacking> face_packing_table() {
 }
 
 RootPoint root_point(const BsplineFace& face, double s, double t) {
-  size_t q = 0;
-  if (face.quadrants.size() == 4) q = s < 0.5 ? (t < 0.5 ? 0 : 3) : (t < 0.5 ? 1 : 2);
-  const FaceQuadrant& quadrant = face.quadrants[q];
-  const auto [x, y] = unrotate(quadrant.rotation, s, t);
-  return {quadrant.corner, x / quadrant.size, y / quadrant.size};
+  // The quadrant whose square holds (s, t) deepest inside (any of them on a shared side).
+  const FaceQuadrant* best = &face.quadrants.front();
+  double best_outside = std::numeric_limits<double>::infinity();
+  for (const FaceQuadrant& q : face.quadrants) {
+    const double outside = std::max(
+        {q.origin[0] - s, s - q.origin[0] - q.size, q.origin[1] - t, t - q.origin[1] - q.size});
+    if (outside < best_outside) {
+      best_outside = outside;
+      best = &q;
+    }
+  }
+  const auto [u, v] = to_root(*best, s, t);
+  return {best->corner, u, v};
 }
 
 std::string face_name(const HalfedgeMesh& mesh, const BsplineFace& face) {
   if (face.vertex < 0) return fmt::format("face {}", face.face + 1);
-  return "corner " + corner_name(mesh, face.quadrants.front().corner);
+  return "corner " + corner_name(mesh, face.corner);
 }
 
 std::vector<BsplineFace> bspline_face_layout(const HalfedgeMesh& mesh, const Surface& surface,
-                                             const PatchSet& patches, FacePacking packing) {
-  return layout(mesh, surface, patches, packing, cells_by_root(mesh, patches));
+                                             const PatchSet& patches, FacePacking packing,
+                                             const ControlMesh* control) {
+  return layout(mesh, surface, patches, packing, cells_by_root(mesh, patches), control);
 }
 
 std::vector<BsplineFace> bspline_faces(const HalfedgeMesh& mesh, const Surface& surface,
                                        const PatchSet& patches, FacePacking packing,
-                                       const std::function<void(double)>& progress) {
+                                       const std::function<void(double)>& progress,
+                                       const ControlMesh* control) {
   const std::vector<RootCells> cells = cells_by_root(mesh, patches);
-  std::vector<BsplineFace> faces = layout(mesh, surface, patches, packing, cells);
+  std::vector<BsplineFace> faces = layout(mesh, surface, patches, packing, cells, control);
   // In blocks, so that progress can be told from this thread between them.
   const size_t block = std::max<size_t>(64, faces.size() / 100);
   for (size_t begin = 0; begin < faces.size(); begin += block) {

@@ -20,13 +20,25 @@ enum class FacePacking {
 /// The packings by name (quads first: the default).
 ChoiceTable<FacePacking> face_packing_table();
 
-/// Where a root patch lies in its face: the face's (s, t) of the root's (u, v) is the quadrant's
-/// rotation of (u, v) * size + origin (size 1 and rotation 0 for a face of one corner patch).
+/// Where a root patch lies in its face: the face's (s, t) of the root's (u, v) is origin + size *
+/// the quarter turn of (u, v) about the unit square's centre (origin 0, size 1 and rotation 0
+/// for a face of one corner patch).
 struct FaceQuadrant {
   Corner corner;
   int rotation =
-      0;  ///< quarter turns: 0 (s, t) = (x, y), 1 (1 - y, x), 2 (1 - x, 1 - y), 3 (y, 1 - x)
-  double size = 1;  ///< 1, or 1/2 in a packed quad: x = u / 2, y = v / 2
+      0;  ///< quarter turns of (u, v): 0 (u, v), 1 (1 - v, u), 2 (1 - u, 1 - v), 3 (v, 1 - u)
+  double size = 1;  ///< 1; 1/2 in a packed quad; smaller for a refined mesh (ControlMesh)
+  std::array<double, 2> origin{0, 0};
+};
+
+/// The mesh a surface's faces are packed and named after when the surface was built on a
+/// refinement of it (for semi-sharp tags, SemiSharpMesh): the refined patches of one control
+/// corner tile its patch's square dyadically, as the cells of a hierarchy do, so a control quad
+/// is still one face. `roots`, by half-edge of the refined mesh: the control corner whose patch
+/// holds that corner's patch, and where (FaceQuadrant's rule, in the control patch's square).
+struct ControlMesh {
+  const HalfedgeMesh* mesh = nullptr;
+  std::vector<FaceQuadrant> roots;
 };
 
 /// One bicubic B-spline face. Its knots are clamped (multiplicity 4 at 0 and 1) and its interior
@@ -34,8 +46,9 @@ struct FaceQuadrant {
 /// their sides: exact for any piecewise polynomial that is continuous. A CAD writer lowers the
 /// multiplicities where the surface is smoother (cad/cad.hpp).
 struct BsplineFace {
-  int face = 0;     ///< the mesh face (0-based)
+  int face = 0;     ///< the (control) mesh face (0-based)
   int vertex = -1;  ///< the corner's vertex for a face of one corner patch; -1 for a packed quad
+  Corner corner;    ///< that corner of the (control) mesh; invalid for a packed quad
   std::vector<FaceQuadrant> quadrants;   ///< 1, or 4 in the order of the face's corners
   std::vector<double> u_knots, v_knots;  ///< distinct, from 0 to 1 (u is s, v is t)
   std::vector<Vec3> poles;               ///< u major: poles[i * num_v_poles() + j]
@@ -57,17 +70,20 @@ RootPoint root_point(const BsplineFace& face, double s, double t);
 
 /// The face's name, after its control elements (numbered from 1 as in the input file):
 /// "face F" for a packed quad, "corner V@F" (as `stitch edit` writes corners) for one corner.
+/// `mesh` is the control mesh when the faces were laid out after one.
 std::string face_name(const HalfedgeMesh& mesh, const BsplineFace& face);
 
 /// The faces' quadrants, sides and knots, without poles: what a writer can tell before the work.
 std::vector<BsplineFace> bspline_face_layout(const HalfedgeMesh& mesh, const Surface& surface,
-                                             const PatchSet& patches, FacePacking packing);
+                                             const PatchSet& patches, FacePacking packing,
+                                             const ControlMesh* control = nullptr);
 
 /// The faces of the patch set: for `quads`, one per quad of the mesh and one per corner of every
-/// other face, in face order; for `corners`, one per root patch, in the patch set's order.
-/// `progress` (optional) is told the fraction done.
+/// other face, in face order; for `corners`, one per corner patch. With a control mesh, its
+/// faces and corners are the ones packed. `progress` (optional) is told the fraction done.
 std::vector<BsplineFace> bspline_faces(const HalfedgeMesh& mesh, const Surface& surface,
                                        const PatchSet& patches, FacePacking packing,
-                                       const std::function<void(double)>& progress = {});
+                                       const std::function<void(double)>& progress = {},
+                                       const ControlMesh* control = nullptr);
 
 }  // namespace stitch
