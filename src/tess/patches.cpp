@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "stitch/error.hpp"
+#include "stitch/eval/bezier_surface.hpp"
 #include "stitch/topology/operation.hpp"
 
 namespace stitch {
@@ -104,15 +105,25 @@ std::vector<CellDeviation> measure(const Surface& surface, const std::vector<Cel
     const Corner corner = surface.corners()[cell.root];
     const Vec3& origin = surface.bezier().nets[corner.idx].p[0];
     const double scale = std::ldexp(1.0, -cell.level);
-    const Vec3 centre =
-        surface.evaluate(corner, (cell.cell_u + 0.5) * scale, (cell.cell_v + 0.5) * scale).normal;
+    // The cell is the net the descent of Surface::evaluate reaches at its level, and no point
+    // inside it is a corner of a coarser net, so continuing the descent from the cell gives
+    // Surface::evaluate's bits without the splits above it (the root's corners, where the
+    // descent stops at the root, are evaluated there).
+    const auto exact_at = [&](double s, double t, double u, double v) {
+      const bool root_corner = (u == 0 || u == 1) && (v == 0 || v == 1);
+      return root_corner
+                 ? surface.evaluate(corner, u, v)
+                 : evaluate_relative(cell.net, origin, s, t, kMaxEvaluationLevel - cell.level);
+    };
+    const double cu = (cell.cell_u + 0.5) * scale, cv = (cell.cell_v + 0.5) * scale;
+    const Vec3 centre = exact_at(0.5, 0.5, cu, cv).normal;
     CellDeviation d;
     for (int i = 0; i < kSamples; ++i)
       for (int j = 0; j < kSamples; ++j) {
         const double s = double(i) / (kSamples - 1), t = double(j) / (kSamples - 1);
         const double u = (cell.cell_u + s) * scale, v = (cell.cell_v + t) * scale;
         const SurfacePoint cell_point = evaluate_polynomial(cell.net, s, t);
-        const SurfacePoint exact = surface.evaluate(corner, u, v);
+        const SurfacePoint exact = exact_at(s, t, u, v);
         d.position = std::max(d.position, (cell_point.position + origin - exact.position).norm());
         bool at_point_without_normal = false;
         for (const auto& [bit, at] : kPatchCorners)
