@@ -7,6 +7,7 @@
 // clang-format on
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <tbb/parallel_for.h>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -63,13 +64,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
 #include <vector>
-
 namespace stitch::cad {
 
 namespace {
@@ -308,13 +310,29 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   BRep_Builder builder;
   TopoDS_Compound compound;
   builder.MakeCompound(compound);
+  std::vector<TopoDS_Shell> shells;
+  for (TopExp_Explorer it(sewn, TopAbs_SHELL); it.More(); it.Next())
+    shells.push_back(TopoDS::Shell(it.Current()));
+  const bool loose_faces = TopExp_Explorer(sewn, TopAbs_FACE, TopAbs_SHELL).More();
+  // The faces are the patches' polynomials, so the solids' volume is theirs, integrated exactly
+  // (OCCT's numerical integration over many knot spans takes seconds).
+  const bool closed = !shells.empty() && !loose_faces &&
+                      std::all_of(shells.begin(), shells.end(), [](const TopoDS_Shell& shell) {
+                        return BRep_Tool::IsClosed(shell);
+                      });
+  if (closed) r.volume = enclosed_volume(patches);
   std::vector<TopoDS_Shape> parts;
-  for (TopExp_Explorer it(sewn, TopAbs_SHELL); it.More(); it.Next()) {
-    const TopoDS_Shell& shell = TopoDS::Shell(it.Current());
+  for (const TopoDS_Shell& shell : shells) {
     ++r.shells;
     if (BRep_Tool::IsClosed(shell)) {
       TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(shell).Solid();
-      BRepLib::OrientClosedSolid(solid);
+      // One shell whose faces keep their surfaces' orientation encloses the patches' volume with
+      // its sign (du x dv out of it when positive): then it is oriented already, and OCCT's
+      // classification against a point at infinity (about a second for 3k faces) is not needed.
+      bool forward = closed && shells.size() == 1 && r.volume > 0;
+      for (TopExp_Explorer f(solid, TopAbs_FACE); forward && f.More(); f.Next())
+        forward = f.Current().Orientation() == TopAbs_FORWARD;
+      if (!forward) BRepLib::OrientClosedSolid(solid);
       parts.push_back(solid);
       ++r.solids;
     } else {
@@ -323,10 +341,6 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   }
   for (TopExp_Explorer it(sewn, TopAbs_FACE, TopAbs_SHELL); it.More(); it.Next())
     parts.push_back(it.Current());  // faces sewing left on their own
-  // The faces are the patches' polynomials, so the solids' volume is theirs, integrated exactly
-  // (OCCT's numerical integration over many knot spans takes seconds).
-  if (r.solids > 0 && static_cast<int>(parts.size()) == r.solids)
-    r.volume = enclosed_volume(patches);
   NamedShape named;
   for (size_t i = 0; i < faces.size(); ++i) {
     const TopoDS_Shape now = sewing.IsModified(occt_faces[i]) ? sewing.Modified(occt_faces[i])
