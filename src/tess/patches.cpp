@@ -105,13 +105,19 @@ std::vector<CellDeviation> measure(const Surface& surface, const std::vector<Cel
     const Corner corner = surface.corners()[cell.root];
     const Vec3& origin = surface.bezier().nets[corner.idx].p[0];
     const double scale = std::ldexp(1.0, -cell.level);
-    // The cell is the net the descent of Surface::evaluate reaches at its level, and no point
-    // inside it is a corner of a coarser net, so continuing the descent from the cell gives
-    // Surface::evaluate's bits without the splits above it (the root's corners, where the
-    // descent stops at the root, are evaluated there).
+    // The cell is the net the descent of Surface::evaluate reaches at its level for the points
+    // it puts in the cell (ties go to the upper child; 1 stays in the last), and none of them
+    // is a corner of a coarser net but the root's, where the descent stops at the root. So
+    // continuing the descent from the cell gives Surface::evaluate's bits without the splits
+    // above it; the other points (the cell's sides that the descent gives to a neighbour) and
+    // the root's corners are evaluated from the root.
+    const auto in_cell = [&](double x, int index) {
+      return (x == 1 ? (1 << cell.level) - 1 : static_cast<int>(std::ldexp(x, cell.level))) ==
+             index;
+    };
     const auto exact_at = [&](double s, double t, double u, double v) {
       const bool root_corner = (u == 0 || u == 1) && (v == 0 || v == 1);
-      return root_corner
+      return root_corner || !in_cell(u, cell.cell_u) || !in_cell(v, cell.cell_v)
                  ? surface.evaluate(corner, u, v)
                  : evaluate_relative(cell.net, origin, s, t, kMaxEvaluationLevel - cell.level);
     };
