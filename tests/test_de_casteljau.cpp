@@ -1,6 +1,7 @@
 // The split rules of method.md section 4.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "eval/split_net.hpp"
@@ -171,6 +172,36 @@ TEST(HierarchicalEvaluation, AgreesWithExplicitSplitsAndScalesDerivatives) {
   EXPECT_EQ(evaluate_patch(net, 0.9, 0.9, BezierRule::mdc).level, 1);
   // asc never splits.
   EXPECT_EQ(evaluate_patch(net, 0.2, 0.1, BezierRule::asc).level, 0);
+}
+
+TEST(HierarchicalEvaluation, ContinuedFromACellGivesTheSameBits) {
+  // bezier_patches measures its innermost cells with evaluate_relative from the cell: the same
+  // splits of the same nets as evaluate_patch's descent from the root, so equal to the bit
+  // (ASSERT_EQ, no tolerance), for cells towards an extraordinary corner at (0, 0) and at (1, 1).
+  for (const auto& [bit, child] : {std::pair{corner00, 0}, {corner33, 3}}) {
+    const ControlNet root = random_net(5, bit);
+    const Vec3 origin = root.p[0];
+    ControlNet cell = root;
+    for (Vec3& p : cell.p) p -= origin;
+    constexpr int kLevel = 6;
+    for (int level = 0; level < kLevel; ++level) cell = split(cell, SplitRule::modified)[child];
+    const double offset = child == 0 ? 0 : (1 << kLevel) - 1, scale = std::ldexp(1.0, -kLevel);
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j) {
+        const double s = i / 8.0, t = j / 8.0;
+        const double u = (offset + s) * scale, v = (offset + t) * scale;
+        if ((u == 0 || u == 1) && (v == 0 || v == 1)) continue;  // the root's own corner
+        // The root's descent gives the sides s = 1 and t = 1 of a cell at (0, 0) to its
+        // neighbours (ties go to the upper child).
+        if (child == 0 && (i == 8 || j == 8)) continue;
+        const SurfacePoint from_root = evaluate_patch(root, u, v, BezierRule::mdc);
+        const SurfacePoint from_cell =
+            evaluate_relative(cell, origin, s, t, kMaxEvaluationLevel - kLevel);
+        ASSERT_EQ(from_cell.position, from_root.position) << u << " " << v;
+        ASSERT_EQ(from_cell.normal, from_root.normal) << u << " " << v;
+        ASSERT_EQ(from_cell.level + kLevel, from_root.level);
+      }
+  }
 }
 
 }  // namespace

@@ -10,6 +10,11 @@ SurfacePoint evaluate_patch(const ControlNet& root, double u, double v, BezierRu
   const Vec3 origin = root.p[0];
   ControlNet relative = root;
   for (Vec3& p : relative.p) p -= origin;
+  return evaluate_relative(relative, origin, u, v, max_level);
+}
+
+SurfacePoint evaluate_relative(const ControlNet& relative, const Vec3& origin, double u, double v,
+                               int max_level) {
   // Two buffers: the net being split lives in the one not being written.
   std::array<std::array<ControlNet, 4>, 2> children;
   int latest = 0;

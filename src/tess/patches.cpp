@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "stitch/error.hpp"
+#include "stitch/eval/bezier_surface.hpp"
 #include "stitch/topology/operation.hpp"
 
 namespace stitch {
@@ -104,15 +105,31 @@ std::vector<CellDeviation> measure(const Surface& surface, const std::vector<Cel
     const Corner corner = surface.corners()[cell.root];
     const Vec3& origin = surface.bezier().nets[corner.idx].p[0];
     const double scale = std::ldexp(1.0, -cell.level);
-    const Vec3 centre =
-        surface.evaluate(corner, (cell.cell_u + 0.5) * scale, (cell.cell_v + 0.5) * scale).normal;
+    // The cell is the net the descent of Surface::evaluate reaches at its level for the points
+    // it puts in the cell (ties go to the upper child; 1 stays in the last), and none of them
+    // is a corner of a coarser net but the root's, where the descent stops at the root. So
+    // continuing the descent from the cell gives Surface::evaluate's bits without the splits
+    // above it; the other points (the cell's sides that the descent gives to a neighbour) and
+    // the root's corners are evaluated from the root.
+    const auto in_cell = [&](double x, int index) {
+      return (x == 1 ? (1 << cell.level) - 1 : static_cast<int>(std::ldexp(x, cell.level))) ==
+             index;
+    };
+    const auto exact_at = [&](double s, double t, double u, double v) {
+      const bool root_corner = (u == 0 || u == 1) && (v == 0 || v == 1);
+      return root_corner || !in_cell(u, cell.cell_u) || !in_cell(v, cell.cell_v)
+                 ? surface.evaluate(corner, u, v)
+                 : evaluate_relative(cell.net, origin, s, t, kMaxEvaluationLevel - cell.level);
+    };
+    const double cu = (cell.cell_u + 0.5) * scale, cv = (cell.cell_v + 0.5) * scale;
+    const Vec3 centre = exact_at(0.5, 0.5, cu, cv).normal;
     CellDeviation d;
     for (int i = 0; i < kSamples; ++i)
       for (int j = 0; j < kSamples; ++j) {
         const double s = double(i) / (kSamples - 1), t = double(j) / (kSamples - 1);
         const double u = (cell.cell_u + s) * scale, v = (cell.cell_v + t) * scale;
         const SurfacePoint cell_point = evaluate_polynomial(cell.net, s, t);
-        const SurfacePoint exact = surface.evaluate(corner, u, v);
+        const SurfacePoint exact = exact_at(s, t, u, v);
         d.position = std::max(d.position, (cell_point.position + origin - exact.position).norm());
         bool at_point_without_normal = false;
         for (const auto& [bit, at] : kPatchCorners)

@@ -20,8 +20,15 @@ enum class BezierRule {
 /// until (u, v) lies in a regular child (at most `max_level` splits; beyond that the child
 /// polynomial is used, which differs from the limit by far less than double round-off).
 /// At an extraordinary corner itself the result is the K-gon centroid with the K-gon normal.
+inline constexpr int kMaxEvaluationLevel = 60;
 SurfacePoint evaluate_patch(const ControlNet& net, double u, double v, BezierRule rule,
-                            int max_level = 60);
+                            int max_level = kMaxEvaluationLevel);
+/// The mdc descent of evaluate_patch from a net already moved by -origin (its root's first
+/// point): from a cell of the hierarchy, the splits and bits of evaluate_patch's descent through
+/// that cell, without the splits above it. (u, v) are the cell's; derivatives are the cell's
+/// scaled by 2^levels split below it, and `max_level` counts from the cell.
+SurfacePoint evaluate_relative(const ControlNet& relative, const Vec3& origin, double u, double v,
+                               int max_level);
 
 struct BezierSurface {
   KgonSet kgons;
