@@ -242,7 +242,9 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
                            : std::max({2 * patches.max_position_deviation,
                                        1e-7 * patches.model_size, Precision::Confusion()});
   const std::vector<BsplineFace> faces = bspline_faces(
-      mesh, surface, patches, options.packing, [&](double done) { progress(0.0, 0.3, done); });
+      mesh, surface, patches, options.packing, [&](double done) { progress(0.0, 0.3, done); },
+      options.control);
+  const HalfedgeMesh& named_after = options.control ? *options.control->mesh : mesh;
   r.faces = static_cast<int>(faces.size());
 
   // The OCCT surfaces, their knots lowered (each face on its own, so in parallel), then the
@@ -261,8 +263,8 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
     r.poles += static_cast<std::int64_t>(surfaces[i]->NbUPoles()) * surfaces[i]->NbVPoles();
     BRepBuilderAPI_MakeFace make(surfaces[i], Precision::Confusion());
     if (!make.IsDone())
-      throw Error(
-          fmt::format("OpenCASCADE refused the B-spline face of {}", face_name(mesh, faces[i])));
+      throw Error(fmt::format("OpenCASCADE refused the B-spline face of {}",
+                              face_name(named_after, faces[i])));
     occt_faces[i] = make.Face();
     for (TopExp_Explorer e(occt_faces[i], TopAbs_EDGE); e.More(); e.Next()) {
       const int side = side_of(TopoDS::Edge(e.Current()), occt_faces[i]);
@@ -346,7 +348,7 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
     const TopoDS_Shape now = sewing.IsModified(occt_faces[i]) ? sewing.Modified(occt_faces[i])
                                                               : TopoDS_Shape(occt_faces[i]);
     for (TopExp_Explorer f(now, TopAbs_FACE); f.More(); f.Next())
-      named.names.emplace_back(TopoDS::Face(f.Current()), face_name(mesh, faces[i]));
+      named.names.emplace_back(TopoDS::Face(f.Current()), face_name(named_after, faces[i]));
   }
   if (parts.size() == 1) {
     named.shape = parts.front();
@@ -399,12 +401,12 @@ TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const 
 }
 
 CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
-                         FacePacking packing, CadFormat format) {
+                         FacePacking packing, CadFormat format, const ControlMesh* control) {
   // Bytes per pole and per face of OCCT's writers, measured on the examples (docs/formats.md).
   const double pole_bytes = format == CadFormat::step ? 100 : 64;
   const double face_bytes = format == CadFormat::step ? 3000 : 1500;
   CadEstimate e;
-  for (const BsplineFace& face : bspline_face_layout(mesh, surface, patches, packing)) {
+  for (const BsplineFace& face : bspline_face_layout(mesh, surface, patches, packing, control)) {
     ++e.faces;
     e.poles += static_cast<std::int64_t>(face.u_knots.size() + 2) * (face.v_knots.size() + 2);
   }

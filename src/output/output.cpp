@@ -129,7 +129,8 @@ OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
   // The patch set takes about a fifth of the whole, the faces and the file the rest.
   constexpr double kPatchShare = 0.2;
   const PatchSet set = patch_set(mesh, surface, spec, kPatchShare);
-  const cad::CadEstimate e = cad::estimate_cad(mesh, surface, set, spec.packing, cad_format);
+  const cad::CadEstimate e =
+      cad::estimate_cad(mesh, surface, set, spec.packing, cad_format, spec.control);
   if (spec.note)
     spec.note(fmt::format(
         "writing {} {} ({} B-spline faces, about {} poles and {:.1f} MB{})", path, format.name,
@@ -139,6 +140,7 @@ OutputReport write_cad_file(const std::string& path, const HalfedgeMesh& mesh,
   cad::CadOptions options;
   options.units = spec.units;
   options.packing = spec.packing;
+  options.control = spec.control;
   options.angle_tolerance_deg = spec.patches.angle_tolerance_deg;
   if (spec.progress)
     options.progress = [&](double done) { spec.progress(kPatchShare + (1 - kPatchShare) * done); };

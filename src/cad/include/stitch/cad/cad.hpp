@@ -53,6 +53,8 @@ struct CadOptions {
   double sewing_tolerance = 0;
   /// Called with the fraction (0..1) done, from one thread at a time.
   std::function<void(double)> progress;
+  /// The mesh to pack and name the faces after when the surface's mesh refines it (not owned).
+  const ControlMesh* control = nullptr;
 };
 
 struct CadReport {
@@ -87,7 +89,8 @@ struct CadEstimate {
   double seconds = 0;
 };
 CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
-                         FacePacking packing, CadFormat format);
+                         FacePacking packing, CadFormat format,
+                         const ControlMesh* control = nullptr);
 
 /// Writes the shape as STEP AP214 or IGES 5.3, every face named (face_name). Atomic: nothing is
 /// left at `path` unless the whole file was written. Throws stitch::Error (unknown unit, write

@@ -54,6 +54,9 @@ struct OutputSpec {
   FacePacking packing = FacePacking::quads;
   std::string units = "mm";  ///< declared by STEP and IGES; coordinates are not scaled
   bool kgons = false;        ///< Bézier JSON: every K-gon as well
+  /// STEP and IGES: the mesh to pack and name the faces after when the surface's mesh refines it
+  /// (write_surface of a BuiltSurface sets it; other formats ignore it); not owned.
+  const ControlMesh* control = nullptr;
   // Both.
   /// The fraction (0..1) done, from one thread at a time.
   std::function<void(double)> progress;
