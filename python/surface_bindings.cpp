@@ -49,8 +49,7 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method,
                            const KgonKeywords& kgons, bool unfold) {
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
   const MeshHandle snapshot = mesh;
-  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold,
-                         kgons.sharp_from ? SemiSharp::round : SemiSharp::refine,
+  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold, semi_sharp(kgons),
                          snapshot.uvs.get()};
   py::gil_scoped_release release;
   auto built = std::make_shared<const BuiltSurface>(build_surface(*snapshot.mesh, spec));
@@ -415,17 +414,30 @@ KgonOptions kgon_options(const KgonKeywords& k) {
   return o;
 }
 
+SemiSharp semi_sharp(const KgonKeywords& k) {
+  return k.sharp_from ? SemiSharp::round : SemiSharp::refine;
+}
+
+py::dict refinement_dict(const SemiSharpRefinement& r) {
+  py::dict d;
+  d["levels"] = r.levels;
+  d["levels_wanted"] = r.levels_wanted;
+  d["largest_tag"] = r.largest_tag;
+  d["faces"] = r.faces;
+  d["patches"] = r.patches;
+  d["summary"] = r.summary();
+  return d;
+}
+
 std::string kgon_keywords_help() {
   return fmt::format(
       "kgon_scale, kgon_rotate (degrees), regularize: applied to every K-gon with K != 4, as "
       "stitch's --kgon-scale, --kgon-rotate and --regularize. kgon_construction: {}. boundary: "
       "{}. sharp_from: None (default) honours semi-sharp crease and corner tags as OpenSubdiv "
-      "does, by refining the mesh before the patches (Surface; refinement, refined_mesh); a "
+      "does, by refining the mesh before the patches (refinement; Surface.refined_mesh); a "
       "number rounds them for the K-gon methods: tags of at least this sharpness (0 to 10) "
-      "infinitely sharp, smaller ones smooth (IncrementalSurface always rounds, at {:g} when "
-      "None).",
-      choice_help(kgon_construction_table()), choice_help(boundary_table()),
-      KgonOptions{}.sharp_from);
+      "infinitely sharp, smaller ones smooth.",
+      choice_help(kgon_construction_table()), choice_help(boundary_table()));
 }
 
 void bind_surface(py::module_& m) {
@@ -536,18 +548,7 @@ void bind_surface(py::module_& m) {
           "The mesh whose corners are the patches when the surface refined `mesh` for its "
           "semi-sharp tags (a copy); None otherwise, when the patches are mesh's corners")
       .def_property_readonly(
-          "refinement",
-          [](const SurfaceHandle& s) {
-            const SemiSharpRefinement& r = s.built->refinement;
-            py::dict d;
-            d["levels"] = r.levels;
-            d["levels_wanted"] = r.levels_wanted;
-            d["largest_tag"] = r.largest_tag;
-            d["faces"] = r.faces;
-            d["patches"] = r.patches;
-            d["summary"] = r.summary();
-            return d;
-          },
+          "refinement", [](const SurfaceHandle& s) { return refinement_dict(s.built->refinement); },
           "What honouring the semi-sharp tags took: levels of uniform refinement (0: none), "
           "levels_wanted, largest_tag, faces and patches of the refined mesh, summary")
       .def_property_readonly(
