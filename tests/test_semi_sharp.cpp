@@ -236,14 +236,18 @@ struct FarPoint {
 double distance_from_far(const HalfedgeMesh& mesh, int levels, BoundaryInterpolation boundary) {
   namespace Far = OpenSubdiv::Far;
   const std::unique_ptr<Far::TopologyRefiner> refiner = catmark_refiner(mesh, boundary);
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  Far::TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = true;  // FindEdge there for the halves' sharpness
+  refiner->RefineUniform(uniform);
   std::vector<std::vector<FarPoint>> far(static_cast<size_t>(levels) + 1);
   far[0].resize(static_cast<size_t>(mesh.num_vertices()));
   for (Vertex v : mesh.vertices()) far[0][v.idx].p = mesh.position(v);
   const Far::PrimvarRefinerReal<double> primvar(*refiner);
   for (int l = 1; l <= levels; ++l) {
     far[l].resize(static_cast<size_t>(refiner->GetLevel(l).GetNumVertices()));
-    primvar.Interpolate(l, far[l - 1].data(), far[l].data());
+    const FarPoint* src = far[l - 1].data();
+    FarPoint* dst = far[l].data();
+    primvar.Interpolate(l, src, dst);
   }
   HalfedgeMesh ours = mesh;
   std::vector<int> far_of(static_cast<size_t>(mesh.vertex_capacity()));
