@@ -518,7 +518,7 @@ ScriptLine read_script_line(std::string_view line) {
 std::span<const ScriptCommand> script_command_table() {
   // The order of `help` and of the unknown-command message; docs/modeler.md describes each row.
   // Built once: some synopses and helps read the library's tables.
-  static const std::array<ScriptCommand, 28> table{{
+  static const std::array<ScriptCommand, 29> table{{
       {"primitive", "primitive NAME [PARAMS]",
        "a new document from a primitive (cube, torus 8 6, ...); undoable", run_primitive},
       {"move-vertex", "move-vertex V X Y Z", "sets vertex V's position", run_move_vertex},
