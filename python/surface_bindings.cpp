@@ -594,13 +594,18 @@ void bind_surface(py::module_& m) {
           "patch_faces",
           [](const SurfaceHandle& s) {
             const std::vector<Corner>& corners = s.surface().corners();
+            // A refined surface's patches come from the input corners whose patches hold them.
+            const std::vector<Corner> input =
+                s.built->refined ? s.built->refined->input_corners() : std::vector<Corner>{};
             py::array_t<int> faces(static_cast<py::ssize_t>(corners.size()));
             for (size_t k = 0; k < corners.size(); ++k)
-              faces.mutable_data()[k] = s.patch_mesh().face(corners[k]).idx;
+              faces.mutable_data()[k] = input.empty() ? s.mesh->face(corners[k]).idx
+                                                      : s.mesh->face(input[corners[k].idx]).idx;
             return faces;
           },
-          "(p,) int32: the 0-based face (as in mesh.faces) of each patch, in the order of "
-          "patches: where each patch, and each quad of a tessellation, comes from")
+          "(p,) int32: the 0-based face of mesh (as in mesh.faces, also when the surface "
+          "refined it for semi-sharp tags) of each patch, in the order of patches: where each "
+          "patch, and each quad of a tessellation, comes from")
       .def("texcoords", &texcoords, py::arg("resolution") = kDefaultResolution, py::kw_only(),
            py::arg("uv") = py::none(), py::arg("uvs") = py::none(), texcoords_doc.c_str())
       .def(
