@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "stitch/eval/semi_sharp.hpp"
 #include "stitch/kgon/kgon.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
@@ -34,11 +35,14 @@ struct KgonKeywords {
   bool regularize = false;
   std::string construction;
   std::string boundary;
-  /// None: semi-sharp tags honoured by refinement (stitch.Surface) or rounded at the library's
-  /// default (IncrementalSurface, which does not refine); a value rounds them there.
+  /// None: semi-sharp tags honoured by refinement; a value rounds them there.
   std::optional<double> sharp_from;
 };
 KgonOptions kgon_options(const KgonKeywords& k);
+/// How the keywords take semi-sharp tags: rounded when sharp_from is given.
+SemiSharp semi_sharp(const KgonKeywords& k);
+/// Surface.refinement and IncrementalSurface.refinement: a dict of SemiSharpRefinement.
+pybind11::dict refinement_dict(const SemiSharpRefinement& r);
 /// The keywords' help, their names listed from the tables.
 std::string kgon_keywords_help();
 

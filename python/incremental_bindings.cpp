@@ -31,7 +31,7 @@ std::unique_ptr<IncrementalHandle> make_incremental(const MeshHandle& mesh,
   h->mesh = mesh.mesh;
   h->options = kgon_options(kgons);
   limits::check_extent(*h->mesh);  // as stitch.Surface: no normals to build a surface from
-  h->surface.rebuild(*h->mesh, h->options, m, resolution);
+  h->surface.rebuild(*h->mesh, h->options, m, resolution, semi_sharp(kgons));
   return h;
 }
 
@@ -64,7 +64,9 @@ void bind_incremental_surface(py::module_& m) {
       m, "IncrementalSurface",
       "A smooth surface kept up to date as the mesh's vertices move, its connectivity fixed (a "
       "deformation, an animation): update_positions recomputes the K-gons, control nets and "
-      "the samples of the patches whose nets changed, and keeps the layout. Tubes keep their "
+      "the samples of the patches whose nets changed, and keeps the layout; semi-sharp tags are "
+      "honoured as stitch.Surface honours them (the points refined again on each update). "
+      "Tubes keep their "
       "fitted K-gons: the search stitch.Surface runs where they fold (unfold_tubes) is not run "
       "here, so a surface that folds shows it.")
       .def(py::init([](const MeshHandle& mesh, const std::string& method, int resolution,
@@ -112,6 +114,12 @@ void bind_incremental_surface(py::module_& m) {
           "method", [](const IncrementalHandle& h) { return to_string(h.surface.method()); })
       .def_property_readonly("resolution",
                              [](const IncrementalHandle& h) { return h.surface.resolution(); })
+      .def_property_readonly(
+          "refinement",
+          [](const IncrementalHandle& h) { return refinement_dict(h.surface.refinement()); },
+          "What honouring the semi-sharp tags took, as Surface.refinement: with levels > 0 the "
+          "patches (tessellation blocks, recomputed) are the corners of the refined mesh, "
+          "Surface.refined_mesh's")
       .def_property_readonly("num_patches",
                              [](const IncrementalHandle& h) { return h.surface.num_patches(); })
       .def("__repr__", [](const IncrementalHandle& h) {

@@ -49,8 +49,7 @@ SurfaceHandle make_surface(const MeshHandle& mesh, const std::string& method,
                            const KgonKeywords& kgons, bool unfold) {
   // Copied while the GIL is held: another thread may edit `mesh` meanwhile.
   const MeshHandle snapshot = mesh;
-  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold,
-                         kgons.sharp_from ? SemiSharp::round : SemiSharp::refine,
+  const SurfaceSpec spec{parse_method(method), kgon_options(kgons), unfold, semi_sharp(kgons),
                          snapshot.uvs.get()};
   py::gil_scoped_release release;
   auto built = std::make_shared<const BuiltSurface>(build_surface(*snapshot.mesh, spec));
@@ -415,17 +414,30 @@ KgonOptions kgon_options(const KgonKeywords& k) {
   return o;
 }
 
+SemiSharp semi_sharp(const KgonKeywords& k) {
+  return k.sharp_from ? SemiSharp::round : SemiSharp::refine;
+}
+
+py::dict refinement_dict(const SemiSharpRefinement& r) {
+  py::dict d;
+  d["levels"] = r.levels;
+  d["levels_wanted"] = r.levels_wanted;
+  d["largest_tag"] = r.largest_tag;
+  d["faces"] = r.faces;
+  d["patches"] = r.patches;
+  d["summary"] = r.summary();
+  return d;
+}
+
 std::string kgon_keywords_help() {
   return fmt::format(
       "kgon_scale, kgon_rotate (degrees), regularize: applied to every K-gon with K != 4, as "
       "stitch's --kgon-scale, --kgon-rotate and --regularize. kgon_construction: {}. boundary: "
       "{}. sharp_from: None (default) honours semi-sharp crease and corner tags as OpenSubdiv "
-      "does, by refining the mesh before the patches (Surface; refinement, refined_mesh); a "
+      "does, by refining the mesh before the patches (refinement; Surface.refined_mesh); a "
       "number rounds them for the K-gon methods: tags of at least this sharpness (0 to 10) "
-      "infinitely sharp, smaller ones smooth (IncrementalSurface always rounds, at {:g} when "
-      "None).",
-      choice_help(kgon_construction_table()), choice_help(boundary_table()),
-      KgonOptions{}.sharp_from);
+      "infinitely sharp, smaller ones smooth.",
+      choice_help(kgon_construction_table()), choice_help(boundary_table()));
 }
 
 void bind_surface(py::module_& m) {
@@ -536,18 +548,7 @@ void bind_surface(py::module_& m) {
           "The mesh whose corners are the patches when the surface refined `mesh` for its "
           "semi-sharp tags (a copy); None otherwise, when the patches are mesh's corners")
       .def_property_readonly(
-          "refinement",
-          [](const SurfaceHandle& s) {
-            const SemiSharpRefinement& r = s.built->refinement;
-            py::dict d;
-            d["levels"] = r.levels;
-            d["levels_wanted"] = r.levels_wanted;
-            d["largest_tag"] = r.largest_tag;
-            d["faces"] = r.faces;
-            d["patches"] = r.patches;
-            d["summary"] = r.summary();
-            return d;
-          },
+          "refinement", [](const SurfaceHandle& s) { return refinement_dict(s.built->refinement); },
           "What honouring the semi-sharp tags took: levels of uniform refinement (0: none), "
           "levels_wanted, largest_tag, faces and patches of the refined mesh, summary")
       .def_property_readonly(
@@ -593,13 +594,18 @@ void bind_surface(py::module_& m) {
           "patch_faces",
           [](const SurfaceHandle& s) {
             const std::vector<Corner>& corners = s.surface().corners();
+            // A refined surface's patches come from the input corners whose patches hold them.
+            const std::vector<Corner> input =
+                s.built->refined ? s.built->refined->input_corners() : std::vector<Corner>{};
             py::array_t<int> faces(static_cast<py::ssize_t>(corners.size()));
             for (size_t k = 0; k < corners.size(); ++k)
-              faces.mutable_data()[k] = s.patch_mesh().face(corners[k]).idx;
+              faces.mutable_data()[k] = input.empty() ? s.mesh->face(corners[k]).idx
+                                                      : s.mesh->face(input[corners[k].idx]).idx;
             return faces;
           },
-          "(p,) int32: the 0-based face (as in mesh.faces) of each patch, in the order of "
-          "patches: where each patch, and each quad of a tessellation, comes from")
+          "(p,) int32: the 0-based face of mesh (as in mesh.faces, also when the surface "
+          "refined it for semi-sharp tags) of each patch, in the order of patches: where each "
+          "patch, and each quad of a tessellation, comes from")
       .def("texcoords", &texcoords, py::arg("resolution") = kDefaultResolution, py::kw_only(),
            py::arg("uv") = py::none(), py::arg("uvs") = py::none(), texcoords_doc.c_str())
       .def(

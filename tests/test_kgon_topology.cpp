@@ -146,7 +146,9 @@ TEST(KgonTopology, UpdatePositionsKeepsItsKgonsEqualToABuild) {
   for (Case& c : cases()) {
     SCOPED_TRACE(c.name);
     IncrementalSurface live;
-    live.rebuild(c.mesh, c.options, Method::mdc, 2);
+    // Rounded: the K-gons are the input's (catmark_torus_creases0's semi-sharp tags would
+    // otherwise put them on the refined mesh).
+    live.rebuild(c.mesh, c.options, Method::mdc, 2, SemiSharp::round);
     for (int round = 0; round < 3; ++round) {
       for (Vertex v : c.mesh.vertices())
         c.mesh.position(v) += Vec3(step(rng), step(rng), step(rng));

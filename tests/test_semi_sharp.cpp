@@ -2,15 +2,18 @@
 // what the tags do to mdc's surface against what they do to OpenSubdiv's (cc), and the ends of
 // the scale (0: no tag, 10: infinitely sharp).
 #include <gtest/gtest.h>
+#include <opensubdiv/far/primvarRefiner.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "cli_run.hpp"
+#include "mesh/opensubdiv_topology.hpp"
 #include "stitch/analysis/build_surface.hpp"
 #include "stitch/analysis/continuity.hpp"
 #include "stitch/eval/catmull_clark.hpp"
@@ -18,7 +21,9 @@
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/topology/remesh.hpp"
+#include "temp_folder.hpp"
 #include "test_support.hpp"
+#include "topology/catmark_refinement.hpp"
 
 namespace stitch {
 namespace {
@@ -218,6 +223,115 @@ TEST(SemiSharp, RefinesCeilOfTheLargestTagLevels) {
 // resolves both to the same exact patches away from extraordinary points and to its Gregory
 // approximation near them, which differs between the two meshes: 1e-3 of the size is far
 // below a misplaced quadrant (a quarter of a face).
+struct FarPoint {
+  Vec3 p = Vec3::Zero();
+  void Clear() { p.setZero(); }
+  void AddWithWeight(const FarPoint& o, double w) { p += w * o.p; }
+};
+
+/// The largest distance between the refinement's points and OpenSubdiv's own (Far refining the
+/// input uniformly `levels` times, its tags subdivided by Vtr): each level's vertex, edge and
+/// face points matched through Far's child vertices. Fails the test on a crease sharpness that
+/// differs from Vtr's.
+double distance_from_far(const HalfedgeMesh& mesh, int levels, BoundaryInterpolation boundary) {
+  namespace Far = OpenSubdiv::Far;
+  const std::unique_ptr<Far::TopologyRefiner> refiner = catmark_refiner(mesh, boundary);
+  Far::TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = true;  // FindEdge there for the halves' sharpness
+  refiner->RefineUniform(uniform);
+  std::vector<std::vector<FarPoint>> far(static_cast<size_t>(levels) + 1);
+  far[0].resize(static_cast<size_t>(mesh.num_vertices()));
+  for (Vertex v : mesh.vertices()) far[0][v.idx].p = mesh.position(v);
+  const Far::PrimvarRefinerReal<double> primvar(*refiner);
+  for (int l = 1; l <= levels; ++l) {
+    far[l].resize(static_cast<size_t>(refiner->GetLevel(l).GetNumVertices()));
+    const FarPoint* src = far[l - 1].data();
+    FarPoint* dst = far[l].data();
+    primvar.Interpolate(l, src, dst);
+  }
+  HalfedgeMesh ours = mesh;
+  std::vector<int> far_of(static_cast<size_t>(mesh.vertex_capacity()));
+  for (Vertex v : mesh.vertices()) far_of[v.idx] = v.idx;  // catmark_refiner keeps the numbers
+  double worst = 0;
+  for (int l = 1; l <= levels; ++l) {
+    const Far::TopologyLevel& coarse = refiner->GetLevel(l - 1);
+    const Far::TopologyLevel& fine = refiner->GetLevel(l);
+    const CatmullClarkRefinement step = catmark_refinement_with_features(ours, boundary);
+    std::vector<int> next_far(static_cast<size_t>(step.mesh.vertex_capacity()), -1);
+    for (Corner c : ours.patch_corners()) {
+      const int a = far_of[ours.origin(c).idx], b = far_of[ours.target(c).idx];
+      const int across = far_of[ours.origin(ours.next(ours.next(c))).idx];
+      const int edge = coarse.FindEdge(a, b);
+      if (edge < 0) {
+        ADD_FAILURE() << "level " << l << ": Far has no edge for corner " << c.idx;
+        return INFINITY;
+      }
+      int face = -1;  // the face of edge (a, b) that holds c's face's third vertex
+      for (int f : coarse.GetEdgeFaces(edge)) {
+        const auto vertices = coarse.GetFaceVertices(f);
+        if (std::find(vertices.begin(), vertices.end(), across) != vertices.end()) face = f;
+      }
+      if (face < 0) {
+        ADD_FAILURE() << "level " << l << ": Far has no face for corner " << c.idx;
+        return INFINITY;
+      }
+      const Halfedge q = step.mesh.halfedge(step.corner_quad[c.idx]);
+      const Vertex points[3] = {step.mesh.origin(q), step.mesh.origin(step.mesh.next(q)),
+                                step.mesh.origin(step.mesh.next(step.mesh.next(q)))};
+      const int far_points[3] = {coarse.GetVertexChildVertex(a), coarse.GetEdgeChildVertex(edge),
+                                 coarse.GetFaceChildVertex(face)};
+      for (int i = 0; i < 3; ++i) {
+        next_far[points[i].idx] = far_points[i];
+        worst = std::max(worst, (step.mesh.position(points[i]) - far[l][far_points[i]].p).norm());
+      }
+      // The half of c's edge at its vertex carries the sharpness Vtr gave it (floats in Sdc).
+      if (!ours.is_boundary(HalfedgeMesh::edge(c))) {
+        const int half = fine.FindEdge(far_points[0], far_points[1]);
+        EXPECT_NEAR(step.mesh.sharpness(HalfedgeMesh::edge(q)), fine.GetEdgeSharpness(half), 1e-5)
+            << "level " << l << " corner " << c.idx;
+      }
+    }
+    ours = step.mesh;
+    far_of = std::move(next_far);
+  }
+  return worst;
+}
+
+// OpenSubdiv's Chaikin shape (creases of 1 to 5 along two loops, `t creasemethod chaikin`): the
+// refinement follows Chaikin's rule for the sharpness, so its points differ from the uniform
+// rule's (the same shape without the tag, catmark_chaikin0) and are Far's own at every level to
+// round-off (1e-12 of the size: the same Sdc masks, summed in the same order; a rule missed moves
+// points by a fraction of an edge).
+TEST(SemiSharp, ChaikinCreasesAreRefinedAsOpenSubdivRefinesThem) {
+  const HalfedgeMesh chaikin = read_mesh(test::opensubdiv_shape("catmark_chaikin1.obj"));
+  ASSERT_EQ(chaikin.crease_method(), CreaseMethod::chaikin);
+  HalfedgeMesh uniform = chaikin;
+  uniform.set_crease_method(CreaseMethod::uniform);
+  const int levels = semi_sharp_refinement(chaikin, Method::mdc, SemiSharp::refine).levels;
+  ASSERT_EQ(levels, 5);
+  const double size = mesh_size(chaikin);
+  for (BoundaryInterpolation boundary :
+       {BoundaryInterpolation::edge_and_corner, BoundaryInterpolation::edge_only}) {
+    const double far = distance_from_far(chaikin, levels, boundary);
+    EXPECT_LT(far, 1e-12 * size);
+    EXPECT_LT(distance_from_far(uniform, levels, boundary), 1e-12 * size);
+    // The same connectivity and numbering, other points where the rules differ.
+    const SemiSharpMesh a = refine_semi_sharp(chaikin, levels, boundary);
+    const SemiSharpMesh b = refine_semi_sharp(uniform, levels, boundary);
+    ASSERT_EQ(a.mesh.vertex_capacity(), b.mesh.vertex_capacity());
+    double apart = 0;
+    for (Vertex v : a.mesh.vertices())
+      apart = std::max(apart, (a.mesh.position(v) - b.mesh.position(v)).norm());
+    std::printf("chaikin: %.3g of the size from uniform creasing, %.1e from Far\n", apart / size,
+                far / size);
+    EXPECT_GT(apart, 1e-3 * size);
+  }
+  // The writer keeps the tag, and the reader reads it back.
+  const testing::TempFolder folder;
+  write_mesh(folder.file("chaikin.obj"), chaikin);
+  EXPECT_EQ(read_mesh(folder.file("chaikin.obj")).crease_method(), CreaseMethod::chaikin);
+}
+
 TEST(SemiSharp, PointMapFollowsTheRefinement) {
   const HalfedgeMesh mesh = creased_cube(1.5);
   const SemiSharpMesh fine = refine_semi_sharp(mesh, 2, BoundaryInterpolation::edge_and_corner);

@@ -169,21 +169,19 @@ TEST(ReadTags, OtherTagsAreIgnoredWithOneWarningPerNameNamingTheirLine) {
                                                          "t interpolateboundary 1/0/0 1\n"  // 15
                                                          "t hole 1/0/0 2\n"                 // 16
                                                          "t interpolateboundary 1/0/0 2\n"  // 17
-                                                         "t creasemethod 0/0/1 chaikin\n"   // 18
                                                          "t smoothtriangles 0/0/1 smooth\n"
                                                          "t mystery 0/2/0 1.5 2\n");
   std::vector<std::string> warnings;
   const PolygonSoup soup = stitch::read_polygon_soup(path, &warnings);
   EXPECT_TRUE(soup.creases.empty());
   EXPECT_TRUE(soup.corners.empty());
-  ASSERT_EQ(warnings.size(), 5u);
+  ASSERT_EQ(warnings.size(), 4u);
   EXPECT_TRUE(contains(warnings[0], "line 15: OpenSubdiv tag 'interpolateboundary' ignored"))
       << warnings[0];
   EXPECT_TRUE(contains(warnings[0], "1 more")) << warnings[0];
   EXPECT_TRUE(contains(warnings[1], "line 16: OpenSubdiv tag 'hole' ignored")) << warnings[1];
-  EXPECT_TRUE(contains(warnings[2], "line 18: OpenSubdiv tag 'creasemethod'")) << warnings[2];
-  EXPECT_TRUE(contains(warnings[3], "'smoothtriangles'")) << warnings[3];
-  EXPECT_TRUE(contains(warnings[4], "line 20: OpenSubdiv tag 'mystery' ignored")) << warnings[4];
+  EXPECT_TRUE(contains(warnings[2], "'smoothtriangles'")) << warnings[2];
+  EXPECT_TRUE(contains(warnings[3], "line 19: OpenSubdiv tag 'mystery' ignored")) << warnings[3];
   for (const std::string& w : warnings) EXPECT_TRUE(contains(w, path)) << w;
 }
 

@@ -119,6 +119,15 @@ void operators_section(App& app, Widgets& ui) {
   const bool sharp_edge = edge && m.sharpness(e) > 0;
   op_button(sharp_edge ? "Smooth##edge" : "Crease",
             on_edge(ops::SetCrease{e, sharp_edge ? 0.0 : infinitely_sharp}), Check::every_frame);
+  // Any sharpness, live, on a row of its own (the panel keeps its width): the script line
+  // `sharpness S`, which keeps the edge selected.
+  row_label("Crease:");
+  ImGui::SetNextItemWidth(ems(12.0f));
+  ImGui::BeginDisabled(!edge);
+  float sharpness = edge ? static_cast<float>(m.sharpness(e)) : 0.0f;
+  if (ui.slider("##edge sharpness", &sharpness, 0.0f, static_cast<float>(infinitely_sharp)) && edge)
+    run_line(app, fmt::format("sharpness {:g}", sharpness));
+  ImGui::EndDisabled();
 
   row_label("Vertex:");
   const bool vertex = picked(sel, PickKind::vertex);

@@ -74,7 +74,8 @@ void upload_overlays(const App& app, const View3D& view, const IncrementalSurfac
   // Overlays are rebuilt only when shown: they cost time proportional to the mesh.
   LineSet mesh_set = d.overlays[int(Overlay::mesh)] ? mesh_lines(m) : LineSet{};
   MarkerSet markers;
-  if (d.markers) markers = extraordinary_markers(extraordinary_points(m, surface.kgons()));
+  if (d.markers)
+    markers = extraordinary_markers(extraordinary_points(surface.mesh(m), surface.kgons()));
   if (app.picking.previous)
     add_highlight(m, *app.picking.previous, Colour(0.1f, 0.7f, 0.2f), mesh_set, markers);
   if (s.selection) add_highlight(m, *s.selection, Colour(1.0f, 0.45f, 0.0f), mesh_set, markers);

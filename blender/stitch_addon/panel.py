@@ -42,7 +42,9 @@ class STITCH_PT_smooth(bpy.types.Panel):
         ):
             kgons.prop(settings, name, text=text)
         kgons.prop(settings, "regularize")
-        layout.prop(settings, "sharp_from")
+        rounding = layout.row()
+        rounding.prop(settings, "round_semi_sharp")
+        rounding.prop(settings, "sharp_from")
         layout.prop(settings, "live")
         layout.operator("object.stitch_smooth", icon="MOD_SUBSURF")
         if settings.target is not None:

@@ -96,11 +96,17 @@ class StitchSettings(bpy.types.PropertyGroup):
         description="stitch smooth --kgon-construction",
         update=settings_changed,
     )
+    round_semi_sharp: bpy.props.BoolProperty(
+        name="Round Semi-sharp",
+        description="mdc and asc: round semi-sharp creases at Sharp From (one patch per corner) "
+        "instead of honouring them as OpenSubdiv does by refining the mesh first (--sharp-from)",
+        update=settings_changed,
+    )
     sharp_from: bpy.props.FloatProperty(
         name="Sharp From",
-        description="Sharpness (crease c is 10 c^2, as Blender gives OpenSubdiv) from which mdc "
-        "and asc make an edge or corner infinitely sharp, smaller ones smooth; cc honours every "
-        "value (--sharp-from)",
+        description="With Round Semi-sharp: sharpness (crease c is 10 c^2, as Blender gives "
+        "OpenSubdiv) from which mdc and asc make an edge or corner infinitely sharp, smaller ones "
+        "smooth; cc honours every value (--sharp-from)",
         default=4.0,  # --sharp-from's before semi-sharp tags were honoured by refinement
         soft_min=0.0,
         soft_max=10.0,

@@ -32,7 +32,8 @@ def surface_keywords(settings):
         regularize=settings.regularize,
         kgon_construction=settings.kgon_construction,
         boundary=settings.boundary,
-        sharp_from=typed(settings.sharp_from),
+        # None: semi-sharp creases honoured by refinement, as `stitch smooth` without the option.
+        sharp_from=typed(settings.sharp_from) if settings.round_semi_sharp else None,
     )
 
 

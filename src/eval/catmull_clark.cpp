@@ -293,7 +293,8 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
 
   const OsdTopology topo(mesh);
   using RefinerFactory = Osd::Far::TopologyRefinerFactory<OsdTopology>;
-  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK, catmark_options(boundary));
+  RefinerFactory::Options options(Osd::Sdc::SCHEME_CATMARK,
+                                  catmark_options(boundary, mesh.crease_method()));
   options.validateFullTopology = true;
   const std::unique_ptr<Osd::Far::TopologyRefiner> refiner(RefinerFactory::Create(topo, options));
   if (!refiner || !topo.problems.empty()) {

@@ -284,19 +284,19 @@ void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
   if (!edges.empty())
     warnings.push_back(fmt::format(
         "{} {} finite sharpness (semi-sharp): the K-gon methods honour them by refining the "
-        "mesh ceil(sharpness) levels before the patches (those of 6 or more: infinitely sharp), "
-        "or with --sharp-from S make those of sharpness >= S infinitely sharp and the others "
-        "smooth (vertices numbered {}): {}",
-        edges.size(), edges.size() == 1 ? "edge has" : "edges have", numbered,
-        soup_places::listed(edges)));
+        "mesh ceil(sharpness) levels before the patches (those of {:g} or more: infinitely "
+        "sharp), or with --sharp-from S make those of sharpness >= S infinitely sharp and the "
+        "others smooth (vertices numbered {}): {}",
+        edges.size(), edges.size() == 1 ? "edge has" : "edges have", semi_sharp_refined_below,
+        numbered, soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
         "{} {} finite corner sharpness (semi-sharp): the K-gon methods honour them by refining "
-        "the mesh ceil(sharpness) levels before the patches (those of 6 or more: corners), or "
-        "with --sharp-from S make those of sharpness >= S corners and ignore the others "
+        "the mesh ceil(sharpness) levels before the patches (those of {:g} or more: corners), "
+        "or with --sharp-from S make those of sharpness >= S corners and ignore the others "
         "(numbered {}): {}",
-        vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have", numbered,
-        soup_places::listed(vertices)));
+        vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have",
+        semi_sharp_refined_below, numbered, soup_places::listed(vertices)));
 }
 
 /// Puts the soup's crease and corner tags on the mesh's edges and vertices. A crease names two
@@ -528,6 +528,7 @@ HalfedgeMesh build_as_is(const PolygonSoup& soup, const BuildOptions& options, B
   if (rep.filled_holes > 0 && options.fill_holes)
     rep.warnings.push_back(fmt::format("filled {} hole(s), each with one face", rep.filled_holes));
   apply_tags(soup, remap, rep, mesh);
+  mesh.set_crease_method(soup.crease_method);
   validate(mesh);
   // Soup face f is Face(f), its loop starting at slot 0 (assemble), so texture coordinates go to
   // the corners by position. Faces edited after reading (code that does not know about UVs) no
@@ -645,6 +646,7 @@ PolygonSoup to_polygon_soup(const HalfedgeMesh& mesh) {
     }
   for (Vertex v : mesh.vertices())
     if (mesh.sharpness(v) > 0) soup.corners.push_back({index[v.idx], mesh.sharpness(v), 0});
+  soup.crease_method = mesh.crease_method();
   return soup;
 }
 

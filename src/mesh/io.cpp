@@ -120,8 +120,10 @@ namespace {
 constexpr std::string_view kComment = "written by stitch";
 
 /// The soup's crease and corner tags as OpenSubdiv's `t` lines (vertices counted from 0, one
-/// line per element so a diff shows which changed); the OBJ reader reads them back.
+/// line per element so a diff shows which changed), and its crease method when not the default;
+/// the OBJ reader reads them back.
 void write_obj_tags(detail::OutputFile& out, const PolygonSoup& soup) {
+  if (soup.crease_method == CreaseMethod::chaikin) out << "t creasemethod 0/0/1 chaikin\n";
   for (const SoupCrease& c : soup.creases)
     out << fmt::format("t crease 2/1/0 {} {} {}\n", c.a, c.b, c.sharpness);
   for (const SoupCorner& c : soup.corners)

@@ -194,6 +194,18 @@ void read_corner(const Tag& tag, int line, const Where& where, PolygonSoup& soup
         {tag_vertex(tag.ints[k], tag, where), tag_sharpness(tag, k, where), line});
 }
 
+/// OpenSubdiv's shape reader takes "chaikin" for Chaikin's rule and anything else ("normal") for
+/// the uniform one; here anything else is refused, so that a typo is not a silent difference.
+CreaseMethod read_crease_method(const Tag& tag, const Where& where) {
+  if (!tag.ints.empty() || !tag.floats.empty() || tag.strings.size() != 1 ||
+      (tag.strings[0] != "chaikin" && tag.strings[0] != "normal" && tag.strings[0] != "uniform"))
+    throw InputError(fmt::format(
+        "{}: creasemethod tag takes one string, chaikin or normal ('t creasemethod 0/0/1 "
+        "chaikin')",
+        where));
+  return tag.strings[0] == "chaikin" ? CreaseMethod::chaikin : CreaseMethod::uniform;
+}
+
 /// Why stitch does not use an OpenSubdiv tag it knows.
 std::string_view why_ignored(std::string_view name) {
   if (name == "interpolateboundary")
@@ -202,7 +214,6 @@ std::string_view why_ignored(std::string_view name) {
   if (name == "facevaryinginterpolateboundary" || name == "facevaryingpropagatecorners")
     return "stitch's texture coordinates follow its own rule: a UV seam is a boundary of the UV "
            "layout, smoothed like the surface (docs/formats.md)";
-  if (name == "creasemethod") return "stitch has no Chaikin rule for semi-sharp creases";
   if (name == "smoothtriangles") return "stitch has no special rule for triangles";
   if (name == "hole") return "the faces it names stay part of the surface";
   return "stitch does not know it";
@@ -289,6 +300,8 @@ PolygonSoup read_obj(std::string_view text, const std::string& path,
         read_crease(tag, number, where, soup);
       } else if (tag.name == "corner") {
         read_corner(tag, number, where, soup);
+      } else if (tag.name == "creasemethod") {
+        soup.crease_method = read_crease_method(tag, where);
       } else {
         auto [it, fresh] = ignored_tags.try_emplace(std::string(tag.name));
         if (fresh) it->second = {number, 0, ignored_tags.size()};

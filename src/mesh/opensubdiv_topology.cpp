@@ -18,8 +18,10 @@ Sdc::Options catmark_options() {
   return options;
 }
 
-Sdc::Options catmark_options(BoundaryInterpolation boundary) {
+Sdc::Options catmark_options(BoundaryInterpolation boundary, CreaseMethod creasing) {
   Sdc::Options options;
+  options.SetCreasingMethod(creasing == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
+                                                              : Sdc::Options::CREASE_UNIFORM);
   options.SetVtxBoundaryInterpolation(boundary == BoundaryInterpolation::edge_only
                                           ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
                                           : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
@@ -121,8 +123,9 @@ std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> catmark_refiner(const Halfedge
   desc.cornerVertexIndices = corners.data();
   desc.cornerWeights = corner_sharpness.data();
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, catmark_options(boundary))));
+  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(
+      desc,
+      Factory::Options(Sdc::SCHEME_CATMARK, catmark_options(boundary, mesh.crease_method()))));
   if (!refiner) throw InputError("OpenSubdiv refused the mesh's topology");
   return refiner;
 }

@@ -16,9 +16,8 @@ namespace stitch {
 /// The subdivision options of meshes without boundary (catmull_clark_refinement): Catmull-Clark's
 /// own rules; the boundary rule never applies but must be named.
 OpenSubdiv::Sdc::Options catmark_options();
-/// Catmull-Clark's rules with the given boundary interpolation (uniform creasing, as OpenSubdiv's
-/// default).
-OpenSubdiv::Sdc::Options catmark_options(BoundaryInterpolation boundary);
+/// Catmull-Clark's rules with the given boundary interpolation and creasing method (the mesh's).
+OpenSubdiv::Sdc::Options catmark_options(BoundaryInterpolation boundary, CreaseMethod creasing);
 
 /// The surface around a vertex as OpenSubdiv orders it: faces counter-clockwise, edge k leading
 /// out of face k (the edge from the vertex to the next vertex of face k), so face k lies between

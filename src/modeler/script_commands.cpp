@@ -116,7 +116,8 @@ ScriptResult run_operation(Session& s, std::string_view raw, const ScriptLine& l
   }
   if (const SurfaceProblems& p = s.surface_problems(); !p.empty()) {
     result.message += "; " + p.summary();
-    if (hooks.print) hooks.print("warning: " + describe_problems(s.document.mesh(), p));
+    if (hooks.print)
+      hooks.print("warning: " + describe_problems(s.surface.mesh(s.document.mesh()), p));
   }
   return result;
 }
@@ -172,6 +173,25 @@ Pick pick_of(const HalfedgeMesh& mesh, const std::vector<std::string>& w) {
     p.index = f - 1;
   }
   return p;
+}
+
+/// The selected edge's crease or vertex's corner sharpness, as the operation line `crease` or
+/// `corner` sets it (checked, one undo step, kept in the mesh and its project). A tag edit
+/// renumbers nothing: the selection stays, so that a field can set it again and again.
+ScriptResult run_sharpness(Session& s, const ScriptLine& line, const ScriptHooks& hooks) {
+  expect(line.words, 1, 1, "sharpness S");
+  const std::optional<Pick> kept = s.selection;
+  if (!kept || (kept->kind != PickKind::edge && kept->kind != PickKind::vertex))
+    throw UsageError("sharpness: select an edge (its crease) or a vertex (its corner) first");
+  const double value = number(line.words[1], "sharpness");
+  const Operation op =
+      kept->kind == PickKind::edge
+          ? Operation(ops::SetCrease{HalfedgeMesh::edge(Halfedge(kept->index)), value})
+          : Operation(ops::SetCorner{Vertex(kept->index), value});
+  const std::string op_line = format_operation(s.document.mesh(), op);
+  ScriptResult result = run_operation(s, op_line, read_script_line(op_line), hooks);
+  s.selection = kept;
+  return result;
 }
 
 ScriptResult run_select(Session& s, const ScriptLine& line, const ScriptHooks&) {
@@ -406,7 +426,8 @@ ScriptResult run_check(Session& s, const ScriptLine& line, const ScriptHooks& ho
     throw UsageError("check: the Catmull-Clark surface has no patches of its own to check");
   s.check_surface_near(s.surface.corners());  // every patch: a pass over the whole surface
   const SurfaceProblems& p = s.surface_problems();
-  if (!p.empty()) return printed("check: " + describe_problems(s.document.mesh(), p), hooks);
+  if (!p.empty())
+    return printed("check: " + describe_problems(s.surface.mesh(s.document.mesh()), p), hooks);
   return printed(fmt::format("check: no folds or self-intersections ({} patches, {} triangles at "
                              "resolution {}, {:.0f} ms)",
                              p.checked_patches, p.triangles, kHealthResolution, p.milliseconds),
@@ -497,7 +518,7 @@ ScriptLine read_script_line(std::string_view line) {
 std::span<const ScriptCommand> script_command_table() {
   // The order of `help` and of the unknown-command message; docs/modeler.md describes each row.
   // Built once: some synopses and helps read the library's tables.
-  static const std::array<ScriptCommand, 28> table{{
+  static const std::array<ScriptCommand, 29> table{{
       {"primitive", "primitive NAME [PARAMS]",
        "a new document from a primitive (cube, torus 8 6, ...); undoable", run_primitive},
       {"move-vertex", "move-vertex V X Y Z", "sets vertex V's position", run_move_vertex},
@@ -505,6 +526,11 @@ std::span<const ScriptCommand> script_command_table() {
        run_move_vertex},
       {"select", "select vertex V | edge V W[@F] | face F | corner V@F[#k] | none",
        "the selection, numbered as in operation lines", run_select},
+      {"sharpness", "sharpness S",
+       fmt::format("the selected edge's crease or vertex's corner sharpness: 0 smooth, {:g} or "
+                   "more infinitely sharp, between semi-sharp (the operation crease or corner)",
+                   infinitely_sharp),
+       run_sharpness},
       {"kgon",
        "kgon [global] scale S | rotate DEG | offset X Y Z | stretch S [X Y Z] | "
        "stretch_along X Y Z | regularize on|off | reset",

@@ -20,12 +20,14 @@ Session::Session(HalfedgeMesh mesh) {
 }
 
 void Session::load(DocumentState state) {
-  // build_surface's recipe, so that a document shows the surface `stitch smooth` writes for it,
-  // but for semi-sharp tags: the live surface keeps one patch per corner of the edited mesh and
-  // rounds them (KgonOptions::sharp_from), where build_surface refines (open_file says so).
+  // build_surface's recipe, so that a document shows the surface `stitch smooth` writes for it.
+  // Tubes are looked for on the mesh as it is: with semi-sharp tags to refine for, the live
+  // surface is built on the refined mesh, whose faces no face control names.
   const auto start = std::chrono::steady_clock::now();
-  SurfaceKgons chosen =
-      surface_kgons(state.mesh, {display.method, std::move(state.kgons), unfold_folding_tubes});
+  const SurfaceSpec spec{display.method, std::move(state.kgons), unfold_folding_tubes};
+  SurfaceKgons chosen = semi_sharp_refinement(state.mesh, spec).levels > 0
+                            ? SurfaceKgons{spec.kgons, {}}
+                            : surface_kgons(state.mesh, spec);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   document = Document(std::move(state.mesh), std::move(chosen.kgons));
@@ -89,7 +91,7 @@ const SurfaceUpdateStats& Session::apply_edit(const Change& change) {
   update_surface(change);
   std::vector<Face> tubes;
   if (unfold_folding_tubes && change.kind == Change::Kind::topology && !last_update.full &&
-      surface.method() != Method::cc)
+      surface.method() != Method::cc && surface.refined() == nullptr)
     tubes = faces_with_two_openings(document.mesh(), document.kgon_options(), change.faces);
   if (tubes.empty()) {
     check_after(change, surface.recomputed());
@@ -145,7 +147,7 @@ std::vector<int> Session::changed_blocks() const {
 void Session::check_surface_near(const std::vector<Corner>& corners) {
   std::vector<Corner> all = corners;
   all.insert(all.end(), problems_.corners.begin(), problems_.corners.end());
-  problems_ = check_live_surface(document.mesh(), surface, all);
+  problems_ = check_live_surface(surface.mesh(document.mesh()), surface, all);
 }
 
 void Session::rebuild() {
@@ -210,13 +212,8 @@ std::string open_file(Session& session, const std::string& path) {
   for (const std::string& line : report.repair.summary()) message += "; repaired: " + line;
   if (const auto& u = session.tube_unfoldings(); !u.empty())
     message += "; " + describe_unfoldings(session.document.mesh(), u);
-  const SemiSharpRefinement refinement =
-      semi_sharp_refinement(session.document.mesh(), {session.display.method, {}, true});
-  if (refinement.levels > 0)
-    message += fmt::format(
-        "; semi-sharp tags rounded here (infinitely sharp from {:g}); stitch smooth honours them: "
-        "{}",
-        session.document.kgon_options().sharp_from, refinement.summary());
+  if (session.surface.refinement().levels > 0)
+    message += "; " + session.surface.refinement().summary();
   return message;
 }
 
@@ -267,8 +264,11 @@ std::string export_surface(const Session& session, const std::string& path,
   spec.note = note;
   check_output(path, spec);  // an unknown extension before the surface is built for nothing
   const HalfedgeMesh& mesh = session.document.mesh();
-  const Surface surface(mesh, session.display.method, session.document.kgon_options());
-  return fmt::format("exported {} ({})", path, write_surface(path, mesh, surface, spec).summary);
+  // The shown surface's recipe: the tubes' controls are the document's already.
+  const BuiltSurface built =
+      build_surface(mesh, {session.display.method, session.document.kgon_options(), false});
+  return fmt::format("exported {} ({})", path,
+                     write_surface(path, built.mesh(mesh), built.surface, spec).summary);
 }
 
 std::optional<KgonTarget> kgon_target(const Session& s) {

@@ -73,6 +73,19 @@ std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
   json positions = json::array(), faces = json::array();
   for (const Vec3& p : soup.positions) positions.push_back(vec_json(p));
   for (const auto& f : soup.faces) faces.push_back(f);
+  json mesh = {{"positions", positions}, {"faces", faces}};
+  // The tags as the OBJ writer writes them (to_polygon_soup), so a project keeps its creases.
+  if (!soup.creases.empty()) {
+    json creases = json::array();
+    for (const SoupCrease& c : soup.creases) creases.push_back({c.a, c.b, c.sharpness});
+    mesh["creases"] = creases;
+  }
+  if (!soup.corners.empty()) {
+    json corners = json::array();
+    for (const SoupCorner& c : soup.corners) corners.push_back({c.vertex, c.sharpness});
+    mesh["corners"] = corners;
+  }
+  if (soup.crease_method == CreaseMethod::chaikin) mesh["crease_method"] = "chaikin";
 
   json kf = json::array(), kv = json::array(), ke = json::array();
   for (const auto& [f, c] : k.face) {
@@ -108,7 +121,7 @@ std::string write_project_json(const HalfedgeMesh& m, const KgonOptions& k,
 
   json j = {{"format", kFormat},
             {"version", 1},
-            {"mesh", {{"positions", positions}, {"faces", faces}}},
+            {"mesh", mesh},
             {"kgons",
              {{"global", detail::kgon_control_json(k.global)},
               {"faces", kf},
@@ -133,6 +146,16 @@ ProjectFile parse_project_json(const std::string& text, const std::string& sourc
     const json& mesh = j.at("mesh");
     for (const json& q : mesh.at("positions")) soup.positions.push_back(vec_from(q, "a position"));
     for (const json& f : mesh.at("faces")) soup.faces.push_back(f.get<std::vector<int>>());
+    // build_mesh checks the tags as it checks a file's (vertices in range, sharpness >= 0).
+    for (const json& c : mesh.value("creases", json::array()))
+      soup.creases.push_back({c.at(0).get<int>(), c.at(1).get<int>(), c.at(2).get<double>(), 0});
+    for (const json& c : mesh.value("corners", json::array()))
+      soup.corners.push_back({c.at(0).get<int>(), c.at(1).get<double>(), 0});
+    const std::string creasing = mesh.value("crease_method", "uniform");
+    if (creasing != "uniform" && creasing != "chaikin")
+      throw InputError(fmt::format("crease_method \"{}\" is neither uniform nor chaikin",
+                                   limits::quoted(creasing)));
+    soup.crease_method = creasing == "chaikin" ? CreaseMethod::chaikin : CreaseMethod::uniform;
     build.allow_two_gons = true;
     // Its K-gon controls number the faces and vertices as stored: stitch wrote them, so they
     // need no repair, and a repair would renumber them.

@@ -10,6 +10,7 @@
 
 #include "eval/patch_sampler.hpp"
 #include "mesh/sort_unique.hpp"
+#include "stitch/error.hpp"
 
 namespace stitch {
 
@@ -160,8 +161,9 @@ void IncrementalSurface::fresh_tessellation(int room_slots) {
   tess_.quads.reserve(halfedges * static_cast<size_t>(quads_per_patch()));
 }
 
-SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                               Method method, int resolution) {
+SurfaceUpdateStats IncrementalSurface::rebuild_on(const HalfedgeMesh& mesh,
+                                                  const KgonOptions& options, Method method,
+                                                  int resolution) {
   const Stopwatch watch;
   PatchGrid grid(resolution);  // may refuse the resolution: nothing has changed yet
   const auto cc = cc_surface(mesh, options, method);
@@ -188,7 +190,7 @@ SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const K
 SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
                                                        const KgonOptions& options,
                                                        const SurfaceChange& change) {
-  if (change.whole) return rebuild(m, options, method_, resolution());
+  if (change.whole) return rebuild_on(m, options, method_, resolution());
   const Stopwatch watch;
   const auto cc = cc_surface(m, options, method_);  // may refuse: nothing has changed yet
   const int nh = m.halfedge_capacity(), old_nh = static_cast<int>(live_.size());
@@ -304,8 +306,9 @@ SurfaceUpdateStats IncrementalSurface::update_topology(const HalfedgeMesh& m,
   return stats;
 }
 
-SurfaceUpdateStats IncrementalSurface::update(const HalfedgeMesh& mesh, const KgonOptions& options,
-                                              const SurfaceChange& change) {
+SurfaceUpdateStats IncrementalSurface::update_on(const HalfedgeMesh& mesh,
+                                                 const KgonOptions& options,
+                                                 const SurfaceChange& change) {
   if (change.kind == SurfaceChange::Kind::topology) return update_topology(mesh, options, change);
   relaid_.clear();
   if (change.kind == SurfaceChange::Kind::none) {
@@ -337,8 +340,8 @@ SurfaceUpdateStats IncrementalSurface::update(const HalfedgeMesh& mesh, const Kg
   return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
 }
 
-SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh,
-                                                        const KgonOptions& options) {
+SurfaceUpdateStats IncrementalSurface::update_positions_on(const HalfedgeMesh& mesh,
+                                                           const KgonOptions& options) {
   const auto slots = static_cast<int>(live_.size());
   if (mesh.halfedge_capacity() != slots ||
       mesh.face_capacity() != static_cast<int>(kgons_.face.size()) ||
@@ -369,8 +372,13 @@ SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh
 
 SurfaceUpdateStats IncrementalSurface::set_method(const HalfedgeMesh& mesh,
                                                   const KgonOptions& options, Method method) {
+  // A method that takes the tags otherwise (cc honours them itself) needs other K-gons, or
+  // another mesh.
+  if (semi_sharp_refinement(mesh, method, semi_sharp_).levels != refinement_.levels ||
+      on(options, method).sharp_from != on(options, method_).sharp_from)
+    return rebuild(mesh, options, method, resolution(), semi_sharp_);
   const Stopwatch watch;
-  const auto cc = cc_surface(mesh, options, method);
+  const auto cc = cc_surface(this->mesh(mesh), on(options, method), method);
   method_ = method;
   evaluate(corners(), cc.get());
   return update_stats(0, num_patches_, true, watch);
@@ -380,7 +388,7 @@ SurfaceUpdateStats IncrementalSurface::set_resolution(const HalfedgeMesh& mesh,
                                                       const KgonOptions& options, int resolution) {
   const Stopwatch watch;
   PatchGrid grid(resolution);
-  const auto cc = cc_surface(mesh, options, method_);
+  const auto cc = cc_surface(this->mesh(mesh), on(options, method_), method_);
   grid_ = std::move(grid);
   std::vector<int> all(live_.size());
   std::iota(all.begin(), all.end(), 0);
@@ -390,6 +398,80 @@ SurfaceUpdateStats IncrementalSurface::set_resolution(const HalfedgeMesh& mesh,
   evaluate(corners(), cc.get());
   SurfaceUpdateStats stats = update_stats(0, num_patches_, true, watch);
   stats.layout_changed = true;
+  return stats;
+}
+
+KgonOptions IncrementalSurface::on(const KgonOptions& options, Method method) const {
+  KgonOptions k = semi_sharp_kgons(options, method, semi_sharp_);
+  if (refined_) {
+    k.face.clear();
+    k.edge.clear();
+  }
+  return k;
+}
+
+SemiSharpMesh IncrementalSurface::refine_again(const HalfedgeMesh& input,
+                                               const KgonOptions& options) const {
+  if (input.halfedge_capacity() != input_halfedges_ || input.vertex_capacity() != input_vertices_)
+    throw UsageError(fmt::format(
+        "IncrementalSurface: the mesh has {} half-edge and {} vertex slots, the surface was "
+        "refined from {} and {}: after a topology edit call update with its SurfaceChange",
+        input.halfedge_capacity(), input.vertex_capacity(), input_halfedges_, input_vertices_));
+  return refine_semi_sharp(input, refinement_.levels, options.boundary);
+}
+
+SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                               Method method, int resolution,
+                                               SemiSharp semi_sharp) {
+  const Stopwatch watch;
+  // Everything that can refuse (the refinement, OpenSubdiv's, the resolution) before anything
+  // changes.
+  const SemiSharpRefinement refinement = semi_sharp_refinement(mesh, method, semi_sharp);
+  std::optional<SemiSharpMesh> refined;
+  if (refinement.levels > 0)
+    refined.emplace(refine_semi_sharp(mesh, refinement.levels, options.boundary));
+  const PatchGrid grid(resolution);
+  semi_sharp_ = semi_sharp;
+  refinement_ = refinement;
+  refined_ = std::move(refined);
+  input_halfedges_ = mesh.halfedge_capacity();
+  input_vertices_ = mesh.vertex_capacity();
+  SurfaceUpdateStats stats = rebuild_on(this->mesh(mesh), on(options, method), method, resolution);
+  stats.milliseconds = watch.ms();
+  return stats;
+}
+
+SurfaceUpdateStats IncrementalSurface::update(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                              const SurfaceChange& change) {
+  if (!refined_) {
+    // A tag edit can make tags to refine for: then refined from here on.
+    if (change.kind != SurfaceChange::Kind::topology ||
+        semi_sharp_refinement(mesh, method_, semi_sharp_).levels == 0)
+      return update_on(mesh, on(options, method_), change);
+    return rebuild(mesh, options, method_, resolution(), semi_sharp_);
+  }
+  // The refined mesh's numbers follow no edit of the input's connectivity or tags: refined again
+  // and rebuilt.
+  if (change.kind == SurfaceChange::Kind::topology)
+    return rebuild(mesh, options, method_, resolution(), semi_sharp_);
+  if (change.kind == SurfaceChange::Kind::none) {
+    recomputed_.clear();
+    relaid_.clear();
+    return {};
+  }
+  return update_positions(mesh, options);
+}
+
+SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh,
+                                                        const KgonOptions& options) {
+  if (!refined_) return update_positions_on(mesh, on(options, method_));
+  const Stopwatch watch;
+  // The same connectivity refined again gives the same numbers: only the points differ, and
+  // the nets compared tell which patches to evaluate again.
+  SemiSharpMesh refined = refine_again(mesh, options);
+  SurfaceUpdateStats stats = update_positions_on(refined.mesh, on(options, method_));
+  refined_ = std::move(refined);
+  stats.milliseconds = watch.ms();
   return stats;
 }
 

@@ -64,7 +64,8 @@ CatmullClarkRefinement catmark_refinement_with_features(const HalfedgeMesh& mesh
                                                         BoundaryInterpolation boundary) {
   CatmullClarkRefinement step = catmull_clark_refinement(mesh);
   HalfedgeMesh& fine = step.mesh;
-  const Sdc::Options options = catmark_options(boundary);
+  fine.set_crease_method(mesh.crease_method());
+  const Sdc::Options options = catmark_options(boundary, mesh.crease_method());
   const Sdc::Scheme<Sdc::SCHEME_CATMARK> scheme(options);
   const Sdc::Crease crease(options);
 

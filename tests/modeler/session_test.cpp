@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/export.hpp"
+#include "stitch/tess/tessellate.hpp"
 #include "stitch/topology/primitives.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
@@ -281,16 +283,79 @@ TEST(ModelerSession, OpeningAMeshSaysWhatReadingRepaired) {
             "opened " + test::example_path("cube.obj"));
 }
 
-TEST(ModelerSession, OpeningSemiSharpTagsSaysTheyAreRoundedHere) {
-  // The live surface rounds them; stitch smooth refines (build_surface): the message says both.
+/// The live surface's samples equal those build_surface's surface gives for the same request,
+/// block for block (exact: the same refinement and K-gons, the same evaluation).
+void expect_live_surface_is_built_surface(const Session& s) {
+  const HalfedgeMesh& input = s.document.mesh();
+  const BuiltSurface built =
+      build_surface(input, {s.display.method, s.document.kgon_options(), false});
+  const HalfedgeMesh& mesh = built.mesh(input);
+  ASSERT_EQ(s.surface.num_patches(), static_cast<int>(mesh.patch_corners().size()));
+  ASSERT_EQ(s.surface.corners(), mesh.patch_corners());
+  TessellationOptions t;
+  t.resolution = s.surface.resolution();
+  t.welded = false;
+  const TessellatedMesh expected = tessellate(mesh, built.surface, t);
+  const int per = s.surface.vertices_per_patch();
+  const std::vector<Corner> corners = s.surface.corners();
+  for (size_t k = 0; k < corners.size(); ++k)
+    for (int i = 0; i < per; ++i)
+      ASSERT_EQ(s.surface.tessellation().positions[corners[k].idx * per + i],
+                expected.positions[static_cast<int>(k) * per + i])
+          << "patch " << corners[k].idx << " sample " << i;
+}
+
+TEST(ModelerSession, OpeningSemiSharpTagsHonoursThemAsStitchSmoothDoes) {
   Session s;
   const std::string message = open_file(s, test::opensubdiv_shape("catmark_cube_creases0.obj"));
-  EXPECT_NE(message.find("semi-sharp tags rounded here (infinitely sharp from 4)"),
-            std::string::npos)
-      << message;
   EXPECT_NE(message.find("2 levels of uniform refinement: 96 faces, 384 patches"),
             std::string::npos)
       << message;
+  EXPECT_EQ(s.surface.num_patches(), 384);
+  expect_live_surface_is_built_surface(s);
+  // A move refines the points again: still build_surface's surface.
+  ASSERT_FALSE(run_script(s, {"translate-vertex 1 0.1 0.2 0.3"}, {}));
+  EXPECT_FALSE(s.last_update.layout_changed);
+  expect_live_surface_is_built_surface(s);
+}
+
+TEST(ModelerSession, SharpnessSetsTheSelectedEdgesCreaseLiveAndIsSaved) {
+  stitch::testing::TempFolder dir;
+  Session s(make_cube());
+  ASSERT_EQ(s.surface.num_patches(), 24);
+  // Refused without an edge or a vertex selected, and for a sharpness that is not a number.
+  EXPECT_TRUE(run_script(s, {"sharpness 2"}, {}));
+  EXPECT_TRUE(run_script(s, {"select edge 1 2", "sharpness two"}, {}));
+  const Edge e = HalfedgeMesh::edge(Halfedge(s.selection->index));
+  // Semi-sharp: refined 2 levels, 16 patches per corner, the edge still selected for the next.
+  ASSERT_FALSE(run_script(s, {"sharpness 1.5"}, {}));
+  EXPECT_EQ(s.document.mesh().sharpness(e), 1.5);
+  EXPECT_EQ(s.surface.refinement().levels, 2);
+  EXPECT_EQ(s.surface.num_patches(), 24 * 16);
+  expect_live_surface_is_built_surface(s);
+  ASSERT_TRUE(s.selection);
+  ASSERT_FALSE(run_script(s, {"sharpness 0.5"}, {}));
+  EXPECT_EQ(s.surface.refinement().levels, 1);
+  expect_live_surface_is_built_surface(s);
+  // Infinitely sharp, and smooth: one patch per corner again.
+  ASSERT_FALSE(run_script(s, {"sharpness 10"}, {}));
+  EXPECT_EQ(s.surface.num_patches(), 24);
+  EXPECT_TRUE(s.document.mesh().is_sharp(e));
+  ASSERT_FALSE(run_script(s, {"sharpness 0", "undo"}, {}));
+  EXPECT_EQ(s.document.mesh().sharpness(e), 10.0);
+  // Kept in the project, and in an OBJ file's crease tag.
+  ASSERT_FALSE(
+      run_script(s, {"undo", "save " + dir.file("p.stitch"), "save " + dir.file("p.obj")}, {}));
+  const auto tagged = [](const HalfedgeMesh& m) {
+    int n = 0;
+    for (Edge x : m.edges()) n += m.sharpness(x) == 0.5 ? 1 : 0;
+    return n;
+  };
+  Session t;
+  ASSERT_FALSE(run_script(t, {"open " + dir.file("p.stitch")}, {}));
+  EXPECT_EQ(tagged(t.document.mesh()), 1);
+  EXPECT_EQ(t.surface.num_patches(), 24 * 4);
+  EXPECT_EQ(tagged(read_mesh(dir.file("p.obj"))), 1);
 }
 
 }  // namespace

@@ -79,3 +79,25 @@ def test_bad_positions_are_refused_and_change_nothing():
     assert np.array_equal(live.tessellation.vertices, before)
     with pytest.raises(ValueError, match="resolution must be 1 to 1024"):
         stitch.IncrementalSurface(mesh, resolution=0)
+
+
+def test_semi_sharp_tags_are_honoured_as_stitch_surface_honours_them():
+    """A semi-sharp crease: the live surface is Surface's, on the same refined mesh, before and
+    after a move; sharp_from rounds it, one patch per corner."""
+    cube = stitch.primitive("cube")
+    with pytest.warns(UserWarning, match="semi-sharp"):
+        mesh = stitch.Mesh(cube.vertices, cube.faces, creases=[[0, 1]], crease_sharpness=[1.5])
+    live = stitch.IncrementalSurface(mesh, "mdc", 2)
+    built = stitch.Surface(mesh, "mdc")
+    assert live.refinement["levels"] == built.refinement["levels"] == 2
+    assert live.num_patches == len(built.patches) == 16 * mesh.num_patches
+    # Each patch comes from a face of the input: 4 corners of 16 patches each per face.
+    assert np.array_equal(np.bincount(built.patch_faces), [64] * 6)
+    vertices = mesh.vertices.copy()
+    vertices[3] += [0.1, -0.05, 0.2]
+    assert 0 < live.update_positions(vertices) < live.num_patches
+    moved = stitch.Surface(live.mesh, "mdc").tessellate(2, welded=False)
+    t = live.tessellation
+    assert np.array_equal(t.vertices[t.patches >= 0], moved.vertices)
+    rounded = stitch.IncrementalSurface(mesh, "mdc", 2, sharp_from=4)
+    assert rounded.refinement["levels"] == 0 and rounded.num_patches == mesh.num_patches

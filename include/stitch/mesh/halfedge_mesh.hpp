@@ -47,6 +47,18 @@ inline constexpr double infinitely_sharp = 10.0;
 constexpr bool is_semi_sharp(double s) {
   return s > 0 && s < infinitely_sharp;
 }
+/// Tags from this sharpness on are taken as infinitely sharp, not refined: OpenSubdiv rounds
+/// them over less than 2^-6 of the faces beside them, and its own surface (cc, Bfr's sharp
+/// approximation level) resolves semi-sharp features to 6 levels too. So at most 6 levels are
+/// refined, and OpenSubdiv's chess pieces (creases of 6 and 7.9) keep their sharp rims without
+/// 4^6 patches per corner.
+inline constexpr double semi_sharp_refined_below = 6.0;
+
+/// How semi-sharp creases lose sharpness level by level (OpenSubdiv's Sdc::Options::
+/// CreasingMethod, an OBJ file's `t creasemethod`): by one per level (uniform), or by Chaikin's
+/// rule, which blends the sharpness of each half of a crease with that of the crease's other
+/// edges at the vertex, so that a crease's sharpness varies smoothly along it.
+enum class CreaseMethod { uniform, chaikin };
 
 /// How the surface treats boundary vertices with a single face (OpenSubdiv's
 /// Sdc::Options::VtxBoundaryInterpolation): interpolated as corners, or smoothed along the
@@ -132,6 +144,9 @@ class HalfedgeMesh {
   [[nodiscard]] bool is_sharp(Edge e) const {
     return is_boundary(e) || edge_sharpness_[e.idx] >= infinitely_sharp;
   }
+  [[nodiscard]] CreaseMethod crease_method() const { return crease_method_; }
+  /// The whole mesh's, as OpenSubdiv's option is: not an element edit, so no journal sees it.
+  void set_crease_method(CreaseMethod m) { crease_method_ = m; }
   /// Whether any face is a hole or any edge or vertex carries a sharpness tag.
   [[nodiscard]] bool has_features() const;
   /// The corners that make patches (not in holes), in index order.
@@ -286,6 +301,7 @@ class HalfedgeMesh {
   std::vector<int> face_he_;
   std::vector<std::uint8_t> face_deleted_, face_hole_;
   int deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+  CreaseMethod crease_method_ = CreaseMethod::uniform;
   ObserverSlot observer_;
 };
 

@@ -37,6 +37,8 @@ struct PolygonSoup {
   std::vector<int> vertex_lines;
   std::vector<SoupCrease> creases;
   std::vector<SoupCorner> corners;
+  /// OBJ's `t creasemethod 0/0/1 chaikin|normal` (the last one given).
+  CreaseMethod crease_method = CreaseMethod::uniform;
   /// Texture coordinates (OBJ `vt`, PLY s t, glTF TEXCOORD_0 with v flipped to OBJ's
   /// bottom-left origin) and, per face, the index into `uvs` of each corner (face_uvs[f][i] for
   /// faces[f][i]). Both empty when the file has none; otherwise every face has them.

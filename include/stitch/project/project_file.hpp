@@ -5,7 +5,9 @@
 //
 // Format (version 1):
 //   { "format": "stitch-modeler-project", "version": 1,
-//     "mesh": { "positions": [[x, y, z], ...], "faces": [[i, j, k, ...], ...] },   // 0-based
+//     "mesh": { "positions": [[x, y, z], ...], "faces": [[i, j, k, ...], ...],    // 0-based
+//               "creases": [[i, j, s], ...], "corners": [[i, s], ...],  // sharpness tags
+//               "crease_method": "chaikin" },   // the last three optional (none, uniform)
 //     "kgons": { "global": CONTROL,
 //                "faces": [{"face": F, CONTROL...}], "vertices": [{"vertex": V, ...}],
 //                "edges": [{"face": F, "corner": K, ...}] },  // the edge of face F's K-th side

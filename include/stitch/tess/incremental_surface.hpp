@@ -30,6 +30,14 @@
 // vertex may have moved, the connectivity did not" (a deforming animation): it keeps all of that
 // (the K-gons' preparation from its first call after a topology change) and recomputes only the
 // K-gons' points, the nets and the samples of the patches whose nets changed.
+//
+// Semi-sharp tags are taken as build_surface takes them (eval/semi_sharp.hpp): honoured by
+// default, the surface is then built on the mesh refined for them, whose corners number the
+// slots, nets, K-gons and blocks (mesh(input) is that mesh). A move re-refines the points (the
+// refinement is linear in them, the connectivity the same) and updates as update_positions does;
+// a K-gon control change updates the same way; a topology or tag edit refines again and rebuilds.
+// Face and edge K-gon controls name elements the refinement replaced and are not applied there.
+// SemiSharp::round rounds the tags at KgonOptions::sharp_from instead, one patch per corner.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +45,7 @@
 #include <optional>
 #include <vector>
 
+#include "stitch/eval/semi_sharp.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/tess/patch_grid.hpp"
@@ -66,7 +75,7 @@ class IncrementalSurface {
   IncrementalSurface() = default;
   /// Builds everything from scratch.
   SurfaceUpdateStats rebuild(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
-                             int resolution);
+                             int resolution, SemiSharp semi_sharp = SemiSharp::refine);
   /// Brings the surface up to date with `mesh` and `options` after `change`. The functions that
   /// can fail (cc on a mesh OpenSubdiv refuses) throw stitch::Error before changing anything.
   SurfaceUpdateStats update(const HalfedgeMesh& mesh, const KgonOptions& options,
@@ -83,6 +92,15 @@ class IncrementalSurface {
   SurfaceUpdateStats set_resolution(const HalfedgeMesh& mesh, const KgonOptions& options,
                                     int resolution);
 
+  [[nodiscard]] SemiSharp semi_sharp() const { return semi_sharp_; }
+  /// What honouring the semi-sharp tags took (levels == 0: the patches are the input's corners).
+  [[nodiscard]] const SemiSharpRefinement& refinement() const { return refinement_; }
+  /// The refined mesh and its map from the input's corners, when refinement.levels > 0.
+  [[nodiscard]] const SemiSharpMesh* refined() const { return refined_ ? &*refined_ : nullptr; }
+  /// The mesh whose corners number the patches: `input`, or its refinement.
+  [[nodiscard]] const HalfedgeMesh& mesh(const HalfedgeMesh& input) const {
+    return refined_ ? refined_->mesh : input;
+  }
   [[nodiscard]] Method method() const { return method_; }
   [[nodiscard]] int resolution() const { return grid_.resolution(); }
   /// The sample layout of every block.
@@ -123,8 +141,28 @@ class IncrementalSurface {
   void layout(int slots, const std::vector<int>& changed_slots);
   SurfaceUpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options,
                                      const SurfaceChange& change);
+  // The surface's own steps on the mesh the patches are built on (mesh(input)), with its
+  // options (on()); the public functions above refine first where the tags ask for it.
+  SurfaceUpdateStats rebuild_on(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
+                                int resolution);
+  SurfaceUpdateStats update_on(const HalfedgeMesh& mesh, const KgonOptions& options,
+                               const SurfaceChange& change);
+  SurfaceUpdateStats update_positions_on(const HalfedgeMesh& mesh, const KgonOptions& options);
+  /// The K-gon options on mesh(input): sharp_from as build_surface sets it, face and edge
+  /// controls dropped on a refined mesh.
+  [[nodiscard]] KgonOptions on(const KgonOptions& options, Method method) const;
+  /// The input refined again for the same levels, or a throw where its element capacities
+  /// differ from the input the surface was refined from (a topology edit).
+  [[nodiscard]] SemiSharpMesh refine_again(const HalfedgeMesh& input,
+                                           const KgonOptions& options) const;
 
   Method method_ = Method::mdc;
+  SemiSharp semi_sharp_ = SemiSharp::refine;
+  SemiSharpRefinement refinement_;
+  std::optional<SemiSharpMesh> refined_;
+  /// The input's half-edge and vertex capacities when refined_ was made, which a position-only
+  /// update keeps.
+  int input_halfedges_ = 0, input_vertices_ = 0;
   PatchGrid grid_{8};
   KgonSet kgons_;
   /// The K-gons' topology update_positions placed kgons_ from; none after a rebuild or a topology
