@@ -253,7 +253,7 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
       warnings = uvs->warnings();
       spec.uvs = uvs.get();
     }
-    report = write_surface(path, s.patch_mesh(), s.surface(), spec);
+    report = write_surface(path, *s.mesh, *s.built, spec);
   }
   if (asked && report.texcoords == 0)
     warnings.push_back(

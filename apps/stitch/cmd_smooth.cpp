@@ -172,7 +172,7 @@ void run_smooth(SmoothArgs& a) {
   if (!a.patches.empty()) {
     stage.begin("writing " + a.patches);
     patches_spec.note = a.spec.note;
-    write_surface(a.patches, surface_mesh, built.surface, patches_spec);
+    write_surface(a.patches, mesh, built, patches_spec);
     stage.end();
   }
   stage.begin(
@@ -181,7 +181,7 @@ void run_smooth(SmoothArgs& a) {
           ? fmt::format("tessellating to tolerance {} and writing {}", a.spec.adaptive_tolerance,
                         a.out)
           : fmt::format("tessellating at resolution {} and writing {}", a.spec.resolution, a.out));
-  const OutputReport written = write_surface(a.out, surface_mesh, built.surface, a.spec);
+  const OutputReport written = write_surface(a.out, mesh, built, a.spec);
   stage.end();
   if (a.check && format.kind == OutputKind::tessellated)
     warn_if_not_clean(stage, a, surface_mesh, built.surface);

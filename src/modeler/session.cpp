@@ -267,8 +267,7 @@ std::string export_surface(const Session& session, const std::string& path,
   // The shown surface's recipe: the tubes' controls are the document's already.
   const BuiltSurface built =
       build_surface(mesh, {session.display.method, session.document.kgon_options(), false});
-  return fmt::format("exported {} ({})", path,
-                     write_surface(path, built.mesh(mesh), built.surface, spec).summary);
+  return fmt::format("exported {} ({})", path, write_surface(path, mesh, built, spec).summary);
 }
 
 std::optional<KgonTarget> kgon_target(const Session& s) {

@@ -375,6 +375,18 @@ OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
   return format.write(path, mesh, surface, spec, format);
 }
 
+OutputReport write_surface(const std::string& path, const HalfedgeMesh& input,
+                           const BuiltSurface& built, OutputSpec spec,
+                           std::span<const OutputFormat> formats) {
+  std::optional<ControlMesh> control;
+  const OutputFormat* format = find_output_format(path, formats);
+  if (built.refined && !spec.control && format && format->kind == OutputKind::exact) {
+    control = control_mesh(input, *built.refined);
+    spec.control = &*control;
+  }
+  return write_surface(path, built.mesh(input), built.surface, spec, formats);
+}
+
 bool output_streams(const OutputFormat& format, const OutputSpec& spec) {
   return format.kind == OutputKind::tessellated && format.memory == MemoryModel::streamed &&
          !spec.unwelded && spec.adaptive_tolerance == 0 &&

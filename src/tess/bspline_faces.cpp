@@ -279,6 +279,26 @@ ChoiceTable<FacePacking> face_packing_table() {
   return kPackings;
 }
 
+ControlMesh control_mesh(const HalfedgeMesh& input, const SemiSharpMesh& refined) {
+  ControlMesh control;
+  control.mesh = &input;
+  control.roots.resize(static_cast<size_t>(refined.mesh.halfedge_capacity()));
+  const int n = 1 << refined.quad_corners.size();  // refined patches along a side
+  const double size = 1.0 / n;
+  for (Corner c : input.patch_corners())
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        // The refined patch at the square's middle, and which way the input's u runs in it.
+        const SemiSharpMesh::Point p = refined.point(c, (i + 0.5) * size, (j + 0.5) * size);
+        const SemiSharpMesh::Point q = refined.point(c, (i + 0.75) * size, (j + 0.5) * size);
+        const double du = q.u - p.u, dv = q.v - p.v;
+        // The input's +u (+x) is the refined patch's +u (no turn), -v (1), -u (2) or +v (3).
+        const int rotation = std::abs(du) > std::abs(dv) ? (du > 0 ? 0 : 2) : (dv > 0 ? 3 : 1);
+        control.roots[p.corner.idx] = {c, rotation, size, {i * size, j * size}};
+      }
+  return control;
+}
+
 RootPoint root_point(const BsplineFace& face, double s, double t) {
   // The quadrant whose square holds (s, t) deepest inside (any of them on a shared side).
   const FaceQuadrant* best = &face.quadrants.front();

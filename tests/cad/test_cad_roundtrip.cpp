@@ -11,7 +11,9 @@
 
 // stitch's headers before OCCT's (OCCT defines a macro Handle, see cad.hpp)
 // clang-format off
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/cad/cad.hpp"
+#include "stitch/output/output.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/validate.hpp"
 #include "stitch/tess/bezier_json.hpp"
@@ -70,8 +72,10 @@ double mesh_volume(const TessellatedMesh& t) {
 /// centre, then compared with exact evaluation at interior points of its parameter square. The
 /// faces are within the patch set's tolerance, plus the knot removal's (kKnotRemovalTolerance)
 /// and 1e-10 of the model size for the files' 12 significant digits.
-void expect_faces_match_surface(const TopoDS_Shape& shape, const Exact& e, FacePacking packing) {
-  const std::vector<BsplineFace> written = bspline_face_layout(e.mesh, e.surface, e.set, packing);
+void expect_faces_match_surface(const TopoDS_Shape& shape, const Exact& e, FacePacking packing,
+                                const ControlMesh* control = nullptr) {
+  const std::vector<BsplineFace> written =
+      bspline_face_layout(e.mesh, e.surface, e.set, packing, control);
   std::vector<Vec3> centres;
   for (const BsplineFace& f : written) {
     const RootPoint p = root_point(f, 0.5, 0.5);
@@ -187,6 +191,35 @@ INSTANTIATE_TEST_SUITE_P(
              (c.packing == FacePacking::quads ? "_packed_" : "_corners_") +
              std::get<1>(info.param).substr(1);
     });
+
+// Semi-sharp creases honoured by refinement (two levels): the refined patches of each input
+// quad pack into one face again, named after the input's face, and the faces match the refined
+// surface as the unrefined ones match theirs.
+TEST(CadSemiSharp, RefinedSurfaceKeepsTheInputsFacesAndNames) {
+  TempFolder folder;
+  HalfedgeMesh input = read_mesh(test::example_path("cube.obj"));
+  for (Halfedge h : input.face_loop(Face(0))) input.set_sharpness(HalfedgeMesh::edge(h), 1.5);
+  const BuiltSurface built = build_surface(input, {});
+  ASSERT_TRUE(built.refined);
+  ASSERT_EQ(built.refinement.levels, 2);
+  const std::string path = folder.file("creased.step");
+  const OutputReport report = write_surface(path, input, built);
+  EXPECT_EQ(report.faces, 6);
+
+  const TopoDS_Shape shape = cad::read_cad(path);
+  EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+  EXPECT_EQ(count(shape, TopAbs_SOLID), 1);
+  EXPECT_EQ(count(shape, TopAbs_FACE), 6);
+  std::vector<std::string> names = cad::read_face_names(path);
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"face 1", "face 2", "face 3", "face 4", "face 5", "face 6"}));
+  const ControlMesh control = control_mesh(input, *built.refined);
+  const HalfedgeMesh& refined = built.refined->mesh;
+  const Exact e{refined, Surface(refined, Method::mdc, built.kgons),
+                bezier_patches(refined, built.surface)};
+  expect_faces_match_surface(shape, e, FacePacking::quads, &control);
+}
 
 TEST(CadContinuity, KnotsAndEdgesAsTheSurfaceIsSmooth) {
   // The cube's packed faces: inside each corner patch the hierarchy is C2 (every interior knot

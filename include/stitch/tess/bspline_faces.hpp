@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "stitch/eval/semi_sharp.hpp"
 #include "stitch/tess/patches.hpp"
 
 namespace stitch {
@@ -40,6 +41,8 @@ struct ControlMesh {
   const HalfedgeMesh* mesh = nullptr;
   std::vector<FaceQuadrant> roots;
 };
+/// `input` as the control mesh of a surface built on its semi-sharp refinement `refined`.
+ControlMesh control_mesh(const HalfedgeMesh& input, const SemiSharpMesh& refined);
 
 /// One bicubic B-spline face. Its knots are clamped (multiplicity 4 at 0 and 1) and its interior
 /// knots have multiplicity 3, so the poles are the Bézier nets of the grid's rectangles sharing

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/formats.hpp"
@@ -130,6 +131,13 @@ void check_output(const std::string& path, const OutputSpec& spec,
 /// writer. Atomic: nothing is left at `path` unless the whole file was written.
 OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,
                            const Surface& surface, const OutputSpec& spec = {},
+                           std::span<const OutputFormat> formats = output_formats());
+
+/// The surface a request built on `input` (build_surface), written as above on the mesh it was
+/// built on; when the request refined `input` for semi-sharp tags, STEP and IGES pack and name
+/// their faces after `input`'s faces and corners (ControlMesh).
+OutputReport write_surface(const std::string& path, const HalfedgeMesh& input,
+                           const BuiltSurface& built, OutputSpec spec = {},
                            std::span<const OutputFormat> formats = output_formats());
 
 /// Whether write_surface writes this request block by block, holding no more than the mesh, its
