@@ -63,7 +63,8 @@ std::shared_ptr<const CornerUvs> corner_uvs(const HalfedgeMesh& mesh, py::handle
 /// Raises ValueError unless 1 <= resolution <= limits::max_resolution and a tessellation of
 /// `mesh` at that resolution, (resolution + 1)^2 samples per half-edge, can number its samples
 /// with int.
-void check_tessellation_size(const HalfedgeMesh& mesh, int resolution);
+/// `patches`: the surface's patches when it is built on a refinement of `mesh` (0: mesh's own).
+void check_tessellation_size(const HalfedgeMesh& mesh, int resolution, long long patches = 0);
 
 /// stitch.Mesh, stitch.read, stitch.primitive.
 void bind_mesh(py::module_& m);

@@ -26,7 +26,9 @@ std::unique_ptr<IncrementalHandle> make_incremental(const MeshHandle& mesh,
                                                     const std::string& method, int resolution,
                                                     const KgonKeywords& kgons) {
   const Method m = parse_method(method);
-  check_tessellation_size(*mesh.mesh, resolution);
+  // Before the work, for the mesh the surface will be built on (refined for semi-sharp tags).
+  check_tessellation_size(*mesh.mesh, resolution,
+                          semi_sharp_refinement(*mesh.mesh, m, semi_sharp(kgons)).patches);
   auto h = std::make_unique<IncrementalHandle>();
   h->mesh = mesh.mesh;
   h->options = kgon_options(kgons);

@@ -383,19 +383,21 @@ const TessellatedMesh& samples(const py::object& self) {
 
 }  // namespace
 
-void check_tessellation_size(const HalfedgeMesh& mesh, int resolution) {
+void check_tessellation_size(const HalfedgeMesh& mesh, int resolution, long long patches) {
   // The command line's range; and TessellatedMesh numbers its samples with int, so their count
   // (at most (resolution + 1)^2 per half-edge) must fit one.
   if (resolution < 1 || resolution > limits::max_resolution)
     throw py::value_error(
         fmt::format("resolution must be 1 to {}, not {}", limits::max_resolution, resolution));
-  const double samples =
-      static_cast<double>(mesh.halfedge_capacity()) * (resolution + 1) * (resolution + 1);
+  const double corners = std::max<double>(mesh.halfedge_capacity(), static_cast<double>(patches));
+  const double samples = corners * (resolution + 1) * (resolution + 1);
   if (samples > INT_MAX)
-    throw py::value_error(
-        fmt::format("resolution {} gives up to {:.0f} samples on {} half-edges, more than the {} a "
-                    "tessellation can number",
-                    resolution, samples, mesh.halfedge_capacity(), INT_MAX));
+    throw py::value_error(fmt::format(
+        "resolution {} gives up to {:.0f} samples on {:.0f} {}, more than the {} a "
+        "tessellation can number",
+        resolution, samples, corners,
+        patches > mesh.halfedge_capacity() ? "patches of the refined mesh" : "half-edges",
+        INT_MAX));
 }
 
 KgonOptions kgon_options(const KgonKeywords& k) {

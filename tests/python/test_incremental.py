@@ -101,3 +101,13 @@ def test_semi_sharp_tags_are_honoured_as_stitch_surface_honours_them():
     assert np.array_equal(t.vertices[t.patches >= 0], moved.vertices)
     rounded = stitch.IncrementalSurface(mesh, "mdc", 2, sharp_from=4)
     assert rounded.refinement["levels"] == 0 and rounded.num_patches == mesh.num_patches
+
+
+def test_a_tessellation_too_large_to_number_is_refused_for_the_refined_mesh():
+    """Sharpness 5.5 refines the cube 6 times: 98 304 patches, whose samples at resolution 1024
+    (about 1e11) no int numbers, though the cube's own 24 patches' would fit."""
+    cube = stitch.primitive("cube")
+    with pytest.warns(UserWarning, match="semi-sharp"):
+        mesh = stitch.Mesh(cube.vertices, cube.faces, creases=[[0, 1]], crease_sharpness=[5.5])
+    with pytest.raises(ValueError, match="98304 patches of the refined mesh"):
+        stitch.IncrementalSurface(mesh, "mdc", 1024)
