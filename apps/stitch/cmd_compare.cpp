@@ -272,7 +272,8 @@ void run_compare(const CompareArgs& a) {
     const HalfedgeMesh& surface_mesh = built->mesh(mesh);
     const Surface& surface = built->surface;
     const SceneGeometry scene =
-        build_scene(surface_mesh, surface, a.resolution, OverlaySelection{});
+        build_scene(surface_mesh, surface, a.resolution, OverlaySelection{}, SceneSurface::blocks);
+    const SurfaceBlocks blocks = surface_blocks(surface_mesh, surface, a.resolution);
     // One camera for all methods (from the first one's surface), so the images line up.
     if (!has_camera) {
       has_camera = true;
@@ -289,11 +290,13 @@ void run_compare(const CompareArgs& a) {
       }
     }
     upload_scene(renderer, scene);
-    whole.push_back(render_image(renderer, whole_camera, style, size.width, size.height));
+    whole.push_back(
+        render_image(renderer, whole_camera, style, size.width, size.height, {}, &blocks));
     write_png((dir / ("zebra_whole_" + to_string(m) + std::string(kImageExtension))).string(),
               whole.back());
     if (has_closeup) {
-      closeup.push_back(render_image(renderer, closeup_camera, style, size.width, size.height));
+      closeup.push_back(
+          render_image(renderer, closeup_camera, style, size.width, size.height, {}, &blocks));
       write_png((dir / ("zebra_closeup_" + to_string(m) + std::string(kImageExtension))).string(),
                 closeup.back());
     }
