@@ -6,8 +6,10 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -560,12 +562,20 @@ SurfaceCheckReport check_tiles(std::span<const std::uint32_t> keys, const CheckG
   params.focus_all = !focused_only;
   std::vector<SurfaceCheckReport> found(keys.size());
   tbb::enumerable_thread_specific<TileScratch> scratch;
+  // Tiles checked, told by whichever thread finds no other telling: one at a time, none waits.
+  std::atomic<size_t> checked{0};
+  std::mutex telling;
   const auto run = [&](unsigned passes) {
+    checked = 0;
     tbb::parallel_for(size_t{0}, keys.size(), [&](size_t k) {
       TileScratch& s = scratch.local();
       s.triangles.clear();
       gather(k, s.triangles);
       check_tile(grid, keys[k], passes, params, options, s, found[k]);
+      const size_t done = ++checked;
+      if (!options.progress) return;
+      if (const std::unique_lock lock(telling, std::try_to_lock); lock.owns_lock())
+        options.progress(static_cast<double>(done) / static_cast<double>(keys.size()));
     });
   };
   if (passes == (kEdges | kCrossings) && options.crossings_only_when_unfolded) {
