@@ -91,7 +91,9 @@ void add_check_surface_command(CLI::App& app) {
       "check-surface",
       "report self-intersecting, folded and degenerate triangles of a surface mesh (quads are "
       "split along their shorter diagonal, other polygons fanned); exit status 1 when there are "
-      "any. Memory: the file's triangles, checked a region of space at a time on every core");
+      "any. Memory: the file's polygons and their triangles, checked a region of space at a time "
+      "on "
+      "every core");
   cmd->add_option("MESH", args->path, "surface mesh (" + extension_list(kMeshReadExtensions) + ")")
       ->required();
   cmd->add_flag("--json", args->json, "print the report as JSON");

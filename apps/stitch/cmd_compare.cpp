@@ -332,7 +332,9 @@ void add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compare",
       "Compare AS&C, modified de Casteljau and Catmull-Clark: zebra images side by side, the "
-      "normal jump against distance from extraordinary points, and DIR/index.html");
+      "normal jump against distance from extraordinary points, and DIR/index.html. Memory: the "
+      "mesh and one method's surface at a time, each picture drawn a block of patches at a "
+      "time, so nothing grows with --resolution");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--size", args->size, "size WxH of each image")->capture_default_str();

@@ -142,7 +142,9 @@ void add_render_command(CLI::App& app) {
       "render",
       "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
       "isophotes, levels, patches, a checker through the texture coordinates, with the mesh, "
-      "K-gons, nets and extraordinary points");
+      "K-gons, nets and extraordinary points. Memory: the mesh and its surface; the tessellation "
+      "is evaluated and drawn a block of patches at a time, so it does not grow with "
+      "--resolution");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out,
                   fmt::format("output image ({}), written atomically", kImageExtension))

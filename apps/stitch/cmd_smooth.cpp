@@ -209,7 +209,9 @@ void add_smooth_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "smooth",
       "Turn a mesh (closed or with boundaries) into its smooth surface: a tessellated polygon "
-      "mesh, or the exact patches as Bezier JSON, STEP or IGES");
+      "mesh, or the exact patches as Bezier JSON, STEP or IGES. Memory: the mesh and its "
+      "surface, and what the format holds (below; the streamed ones do not grow with "
+      "--resolution)");
   cmd->footer(formats_help());
   add_input_options(cmd, args->in);
   cmd->add_option(
