@@ -121,8 +121,10 @@ void run_render(const RenderArgs& a) {
   stage.begin(fmt::format("tessellating and rendering {}x{}", size.width, size.height));
   const OffscreenContext context;
   Renderer renderer;
+  if (a.draw == "input") scene.input = input_faces(surface_mesh);
   upload_scene(renderer, scene, a.draw == "input");
-  SurfaceBlocks blocks = surface_blocks(surface_mesh, surface, a.resolution, uvs ? &*uvs : nullptr);
+  SurfaceBlocks blocks = surface_blocks(surface_mesh, surface, a.resolution, uvs ? &*uvs : nullptr,
+                                        0, [&stage](double done) { stage.fraction(done); });
   blocks.shaded = a.draw == "smooth";
   const Image image = render_image(renderer, camera, style, size.width, size.height, {}, &blocks);
   stage.end();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 
@@ -46,7 +47,7 @@ SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int 
                         for (const Vec3& p : block.positions) scene.bounds.extend(p);
                       });
   }
-  scene.input = input_faces(mesh);
+  if (tessellation == SceneSurface::whole) scene.input = input_faces(mesh);
   const BezierSurface& bezier = surface.bezier();
   if (wanted(Overlay::mesh)) lines[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
   if (wanted(Overlay::kgons))
@@ -72,18 +73,23 @@ std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
 }
 
 SurfaceBlocks surface_blocks(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
-                             const UvSurface* uvs, int patches_per_block) {
+                             const UvSurface* uvs, int patches_per_block,
+                             std::function<void(double)> progress) {
   SurfaceBlocks blocks;
-  const int patches = block_patches(resolution, patches_per_block);
-  blocks.for_each = [&mesh, &surface, uvs, resolution, patches](const SurfaceBlockVisitor& visit) {
+  const int per_block = block_patches(resolution, patches_per_block);
+  blocks.for_each = [&mesh, &surface, uvs, resolution, per_block,
+                     progress = std::move(progress)](const SurfaceBlockVisitor& visit) {
     TessellationOptions options = unwelded(resolution);
     options.patch = options.level = true;  // for the levels and patches modes
     options.uv = uvs != nullptr;           // with the patch, where a texture coordinate comes from
+    const auto patches = static_cast<double>(surface.corners().size());
     std::vector<Eigen::Vector2d> texcoords;
-    tessellate_blocks(mesh, surface, options, patches, [&](const TessellatedMesh& block, int) {
-      if (uvs) texcoords = surface_texcoords(block, *uvs);
-      visit(block, texcoords);
-    });
+    tessellate_blocks(
+        mesh, surface, options, per_block, [&](const TessellatedMesh& block, int first) {
+          if (uvs) texcoords = surface_texcoords(block, *uvs);
+          visit(block, texcoords);
+          if (progress) progress(std::min(1.0, (first + static_cast<double>(per_block)) / patches));
+        });
   };
   return blocks;
 }

@@ -78,8 +78,10 @@ TEST_P(SurfaceBlocksTest, BlocksDrawWhatOneUploadDraws) {
 
 TEST_P(SurfaceBlocksTest, UnshadedBlocksGiveTheTessellationOverlayOnly) {
   // --draw input: the input polygons are shaded, the blocks give the tessellation's lines.
-  const SceneGeometry outline =
+  SceneGeometry outline =
       build_scene(mesh_, *surface_, kResolution, all_overlays, SceneSurface::blocks);
+  EXPECT_TRUE(outline.input.positions.empty());
+  outline.input = input_faces(mesh_);
   RenderStyle style;
   style.show(Overlay::tessellation);
   const auto input_picture = [&](const SceneGeometry& scene, const SurfaceBlocks* blocks) {

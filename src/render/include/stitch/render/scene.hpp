@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
@@ -43,7 +44,8 @@ enum class SceneSurface {
 /// Tessellates `surface` at `resolution` segments per patch side (unwelded) and builds the
 /// selected overlays, the input polygons and the extraordinary points. With SceneSurface::blocks
 /// the tessellation is only passed over for the bounds (the same as whole) and kept neither in
-/// `surface` nor in the tessellation overlay: draw it from surface_blocks.
+/// `surface` nor in the tessellation overlay: draw it from surface_blocks; `input` is left empty
+/// too (input_faces, for a picture of the input polygons: 0.4 GB for a million quads).
 SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
                           const OverlaySelection& overlays = all_overlays,
                           SceneSurface tessellation = SceneSurface::whole);
@@ -55,9 +57,11 @@ inline constexpr int kSceneBlockVertices = 1 << 17;
 /// The unwelded tessellation of `surface` at `resolution`, produced block by block as it is
 /// drawn (Renderer::draw, render_image): blocks of `patches_per_block` patches (0: about
 /// kSceneBlockVertices vertices), with patch ids and levels, and texture coordinates from `uvs`
-/// when given. Keeps references to `mesh`, `surface` and `uvs`.
+/// when given. Keeps references to `mesh`, `surface` and `uvs`. `progress`, if set, is told the
+/// fraction of the patches drawn after each block, on the drawing thread.
 SurfaceBlocks surface_blocks(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
-                             const UvSurface* uvs = nullptr, int patches_per_block = 0);
+                             const UvSurface* uvs = nullptr, int patches_per_block = 0,
+                             std::function<void(double)> progress = {});
 
 /// The UV of every sample of `surface`: `uvs` at the sample's patch and (u, v).
 std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
