@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <string>
 
 #include "stitch/analysis/surface_check.hpp"
@@ -105,6 +106,23 @@ TEST(SurfaceCheck, CleanClosedSurfacesHaveNoProblems) {
   EXPECT_TRUE(r.clean()) << r.describe(sphere);
   const TriangleSoup torus = triangulate(to_polygon_soup(make_torus(32, 16)));
   EXPECT_TRUE(check_surface(torus).clean()) << check_surface(torus).describe(torus);
+}
+
+// The progress told: from one thread at a time, never going back, ending at 1; the report is
+// the one of a check without it.
+TEST(SurfaceCheck, ProgressRisesToOneAndChangesNothing) {
+  const TriangleSoup torus = triangulate(to_polygon_soup(make_torus(64, 32)));
+  SurfaceCheckOptions options;
+  std::vector<double> told;
+  options.progress = [&told](double done) { told.push_back(done); };
+  const SurfaceCheckReport r = check_surface(torus, options);
+  ASSERT_FALSE(told.empty());
+  EXPECT_TRUE(std::is_sorted(told.begin(), told.end()));
+  EXPECT_GT(told.front(), 0.0);
+  EXPECT_EQ(told.back(), 1.0);
+  const SurfaceCheckReport plain = check_surface(torus);
+  EXPECT_EQ(r.triangles, plain.triangles);
+  EXPECT_TRUE(r.clean()) << r.describe(torus);
 }
 
 TEST(SurfaceCheck, SurfaceMeshQuadsAndAPushedThroughVertex) {

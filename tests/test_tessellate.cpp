@@ -213,6 +213,55 @@ TEST(Tessellate, EveryRangeSplitGivesTheSameSamples) {
   }
 }
 
+// tessellate_blocks: the blocks, put one after the other (their quads moved by the vertices
+// before them), are the unwelded tessellation to the bit, whatever the block size; a block's
+// quads stay within it.
+TEST(Tessellate, BlocksOfPatchesMakeTheUnweldedTessellation) {
+  for (const HalfedgeMesh& mesh : closed_and_open_meshes()) {
+    const Surface surface(mesh, Method::mdc);
+    const TessellationOptions options{
+        .resolution = 3, .welded = false, .uv = true, .patch = true, .level = true};
+    const TessellatedMesh whole = tessellate(mesh, surface, options);
+    const int patches = static_cast<int>(surface.corners().size());
+    for (const int per_block : {1, 4, patches, patches + 3}) {
+      TessellatedMesh joined;
+      int next = 0;
+      tessellate_blocks(mesh, surface, options, per_block,
+                        [&](const TessellatedMesh& block, int first) {
+                          EXPECT_EQ(first, next);
+                          next += std::min(per_block, patches - first);
+                          const int base = joined.num_vertices();
+                          for (auto q : block.quads) {
+                            for (int& v : q) {
+                              EXPECT_TRUE(v >= 0 && v < block.num_vertices());
+                              v += base;
+                            }
+                            joined.quads.push_back(q);
+                          }
+                          const auto append = [](auto& to, const auto& from) {
+                            to.insert(to.end(), from.begin(), from.end());
+                          };
+                          append(joined.positions, block.positions);
+                          append(joined.normals, block.normals);
+                          append(joined.uv, block.uv);
+                          append(joined.patch, block.patch);
+                          append(joined.level, block.level);
+                        });
+      EXPECT_EQ(next, patches);
+      EXPECT_EQ(joined.positions, whole.positions) << per_block;
+      EXPECT_EQ(joined.normals, whole.normals) << per_block;
+      EXPECT_EQ(joined.uv, whole.uv) << per_block;
+      EXPECT_EQ(joined.patch, whole.patch) << per_block;
+      EXPECT_EQ(joined.level, whole.level) << per_block;
+      EXPECT_EQ(joined.quads, whole.quads) << per_block;
+    }
+    const auto nothing = [](const TessellatedMesh&, int) {};
+    EXPECT_THROW(tessellate_blocks(mesh, surface, {.resolution = 3}, 4, nothing),
+                 std::invalid_argument);
+    EXPECT_THROW(tessellate_blocks(mesh, surface, options, 0, nothing), std::invalid_argument);
+  }
+}
+
 // Tessellating into a TessellatedMesh that already holds another tessellation (larger, then
 // smaller, with and without attributes) gives exactly the fresh result: nothing of the old one
 // survives in the reused storage.

@@ -152,6 +152,15 @@ TEST(TopologyCli, CheckSurface) {
   ASSERT_EQ(stitch_cli(folder, "primitive torus 24 12 -o torus.obj").status, 0);
   r = stitch_cli(folder, "check-surface torus.obj");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
+  // Stages only when asked (stderr is no terminal here), never under --quiet.
+  EXPECT_EQ(r.err, "");
+  r = stitch_cli(folder, "check-surface torus.obj --progress");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("stitch: reading torus.obj..."), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stitch: checking 288 polygons..."), std::string::npos) << r.err;
+  r = stitch_cli(folder, "check-surface torus.obj --progress -q");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
   EXPECT_EQ(stitch_cli(folder, "check-surface missing.obj").status, 2);
 }
 

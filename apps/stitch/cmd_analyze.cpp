@@ -113,7 +113,8 @@ void add_analyze_command(CLI::App& app) {
       "analyze",
       "Measure continuity: the largest and mean normal jump across patch boundaries, near "
       "extraordinary points and elsewhere, and the tangent plane at extraordinary points; on "
-      "meshes with boundaries or creases also the crease gap and G1 within each sector");
+      "meshes with boundaries or creases also the crease gap and G1 within each sector. Memory: "
+      "the mesh and one method's surface at a time, its patches measured a chunk at a time");
   add_input_options(cmd, args->in);
   add_method_option(cmd, args->method, true, &args->in);
   cmd->add_flag("--json", args->json,

@@ -21,14 +21,23 @@ struct CheckSurfaceArgs {
   bool json = false;
   SurfaceCheckOptions options;
   std::vector<double> through;  ///< x1 y1 z1 x2 y2 z2: a segment that must meet no triangle
+  ProgressFlags progress;
 };
 
 void run_check_surface(const CheckSurfaceArgs& a) {
+  StageReporter stage(a.progress);
+  stage.begin("reading " + a.path);
   std::vector<std::string> warnings;
-  const PolygonSoup polygons = read_polygon_soup(a.path, &warnings);
+  const PolygonSoup polygons =
+      read_polygon_soup(a.path, &warnings, [&stage](double done) { stage.fraction(done); });
+  stage.end();
   for (const std::string& w : warnings) fmt::print(stderr, "stitch: warning: {}: {}\n", a.path, w);
+  stage.begin(fmt::format("checking {} polygons", polygons.faces.size()));
   const TriangleSoup soup = triangulate(polygons);
-  const SurfaceCheckReport r = check_surface(soup, a.options);
+  SurfaceCheckOptions options = a.options;
+  options.progress = [&stage](double done) { stage.fraction(done); };
+  const SurfaceCheckReport r = check_surface(soup, options);
+  stage.end();
   std::vector<SegmentHit> hits;
   if (!a.through.empty())
     hits = segment_hits(soup, Vec3(a.through[0], a.through[1], a.through[2]),
@@ -82,7 +91,9 @@ void add_check_surface_command(CLI::App& app) {
       "check-surface",
       "report self-intersecting, folded and degenerate triangles of a surface mesh (quads are "
       "split along their shorter diagonal, other polygons fanned); exit status 1 when there are "
-      "any. Memory: the file's triangles, checked a region of space at a time on every core");
+      "any. Memory: the file's polygons and their triangles, checked a region of space at a time "
+      "on "
+      "every core");
   cmd->add_option("MESH", args->path, "surface mesh (" + extension_list(kMeshReadExtensions) + ")")
       ->required();
   cmd->add_flag("--json", args->json, "print the report as JSON");
@@ -97,6 +108,7 @@ void add_check_surface_command(CLI::App& app) {
                   "the axis of a hole); hits count as problems")
       ->expected(6)
       ->check(finite_range(-limits::max_coordinate, limits::max_coordinate));
+  add_progress_option(cmd, args->progress);
   cmd->callback([args] { run_check_surface(*args); });
 }
 

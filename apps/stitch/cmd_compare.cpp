@@ -272,7 +272,8 @@ void run_compare(const CompareArgs& a) {
     const HalfedgeMesh& surface_mesh = built->mesh(mesh);
     const Surface& surface = built->surface;
     const SceneGeometry scene =
-        build_scene(surface_mesh, surface, a.resolution, OverlaySelection{});
+        build_scene(surface_mesh, surface, a.resolution, OverlaySelection{}, SceneSurface::blocks);
+    const SurfaceBlocks blocks = surface_blocks(surface_mesh, surface, a.resolution);
     // One camera for all methods (from the first one's surface), so the images line up.
     if (!has_camera) {
       has_camera = true;
@@ -289,11 +290,13 @@ void run_compare(const CompareArgs& a) {
       }
     }
     upload_scene(renderer, scene);
-    whole.push_back(render_image(renderer, whole_camera, style, size.width, size.height));
+    whole.push_back(
+        render_image(renderer, whole_camera, style, size.width, size.height, {}, &blocks));
     write_png((dir / ("zebra_whole_" + to_string(m) + std::string(kImageExtension))).string(),
               whole.back());
     if (has_closeup) {
-      closeup.push_back(render_image(renderer, closeup_camera, style, size.width, size.height));
+      closeup.push_back(
+          render_image(renderer, closeup_camera, style, size.width, size.height, {}, &blocks));
       write_png((dir / ("zebra_closeup_" + to_string(m) + std::string(kImageExtension))).string(),
                 closeup.back());
     }
@@ -329,7 +332,9 @@ void add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "compare",
       "Compare AS&C, modified de Casteljau and Catmull-Clark: zebra images side by side, the "
-      "normal jump against distance from extraordinary points, and DIR/index.html");
+      "normal jump against distance from extraordinary points, and DIR/index.html. Memory: the "
+      "mesh and one method's surface at a time, each picture drawn a block of patches at a "
+      "time, so nothing grows with --resolution");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out, "output directory (created if missing)")->required();
   cmd->add_option("--size", args->size, "size WxH of each image")->capture_default_str();

@@ -84,7 +84,7 @@ void run_render(const RenderArgs& a) {
     throw UsageError(fmt::format("--mode {} needs texture coordinates: {} has none",
                                  to_string(ShadingMode::checker), a.in.path));
   }
-  stage.begin(fmt::format("building and tessellating the {} surface", a.method));
+  stage.begin(fmt::format("building the {} surface", a.method));
   const Method method = parse_method(a.method);
   const BuiltSurface built =
       build_cli_surface(a.kgon, mesh, method, a.in.path, a.progress.quiet, &report.corner_uvs);
@@ -94,14 +94,17 @@ void run_render(const RenderArgs& a) {
   // refined mesh's, and so are the texture coordinates.
   const HalfedgeMesh& surface_mesh = built.mesh(mesh);
   const CornerUvs& corner_uvs = built.refined ? built.refined->uvs : report.corner_uvs;
-  SceneGeometry scene = build_scene(surface_mesh, surface, a.resolution, style.overlays);
+  // The tessellation is never held: passed over here for the bounds, then drawn block by block.
+  SceneGeometry scene =
+      build_scene(surface_mesh, surface, a.resolution, style.overlays, SceneSurface::blocks);
   stage.end();
+  std::optional<UvSurface> uvs;
   if (checker) {
-    stage.begin("evaluating the texture coordinates");
-    const UvSurface uvs(surface_mesh, corner_uvs, uv_mode, kgons);
-    add_texcoords(scene, surface_mesh, corner_uvs, uvs);
+    stage.begin("building the texture coordinates' surface");
+    uvs.emplace(surface_mesh, corner_uvs, uv_mode, kgons);
+    add_texcoords(scene, surface_mesh, corner_uvs, *uvs);
     stage.end();
-    for (const std::string& w : uvs.warnings())
+    for (const std::string& w : uvs->warnings())
       fmt::print(stderr, "stitch: warning: {}: {}\n", a.in.path, w);
   }
 
@@ -115,11 +118,15 @@ void run_render(const RenderArgs& a) {
     camera = frame_view(view, scene.bounds, aspect, up);
   }
 
-  stage.begin(fmt::format("rendering {}x{}", size.width, size.height));
+  stage.begin(fmt::format("tessellating and rendering {}x{}", size.width, size.height));
   const OffscreenContext context;
   Renderer renderer;
+  if (a.draw == "input") scene.input = input_faces(surface_mesh);
   upload_scene(renderer, scene, a.draw == "input");
-  const Image image = render_image(renderer, camera, style, size.width, size.height);
+  SurfaceBlocks blocks = surface_blocks(surface_mesh, surface, a.resolution, uvs ? &*uvs : nullptr,
+                                        0, [&stage](double done) { stage.fraction(done); });
+  blocks.shaded = a.draw == "smooth";
+  const Image image = render_image(renderer, camera, style, size.width, size.height, {}, &blocks);
   stage.end();
   write_png(a.out, image);
   fmt::print("wrote {} ({}x{}, method {}, mode {}, {})\n", a.out, size.width, size.height, a.method,
@@ -137,7 +144,9 @@ void add_render_command(CLI::App& app) {
       "render",
       "Render the smooth surface to a PNG (headless): shading, zebra stripes, "
       "isophotes, levels, patches, a checker through the texture coordinates, with the mesh, "
-      "K-gons, nets and extraordinary points");
+      "K-gons, nets and extraordinary points. Memory: the mesh and its surface; the tessellation "
+      "is evaluated and drawn a block of patches at a time, so it does not grow with "
+      "--resolution");
   add_input_options(cmd, args->in);
   cmd->add_option("-o,--output", args->out,
                   fmt::format("output image ({}), written atomically", kImageExtension))

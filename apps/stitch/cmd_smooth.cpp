@@ -54,16 +54,18 @@ void warn_if_not_clean(StageReporter& stage, const SmoothArgs& a, const Halfedge
                        const Surface& surface) {
   stage.begin("checking the surface");
   const bool adaptive = a.spec.adaptive_tolerance > 0;
+  SurfaceCheckOptions options;
+  options.progress = [&stage](double done) { stage.fraction(done); };
   std::string problems;
   if (adaptive) {
     // The same triangles as written (the writer does not keep them).
     const TriangleSoup tris =
         triangulate(tessellate_adaptive(mesh, surface, {a.spec.adaptive_tolerance}));
-    const SurfaceCheckReport r = check_surface(tris);
+    const SurfaceCheckReport r = check_surface(tris, options);
     if (!r.clean()) problems = r.describe(tris);
   } else {
     // The tessellation as written, a region at a time, knowing the surface's creases.
-    const SurfaceCheckReport r = check_surface(mesh, surface, a.spec.resolution);
+    const SurfaceCheckReport r = check_surface(mesh, surface, a.spec.resolution, options);
     if (!r.clean()) problems = r.describe_quads();
   }
   stage.end();
@@ -207,7 +209,9 @@ void add_smooth_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "smooth",
       "Turn a mesh (closed or with boundaries) into its smooth surface: a tessellated polygon "
-      "mesh, or the exact patches as Bezier JSON, STEP or IGES");
+      "mesh, or the exact patches as Bezier JSON, STEP or IGES. Memory: the mesh and its "
+      "surface, and what the format holds (below; the streamed ones do not grow with "
+      "--resolution)");
   cmd->footer(formats_help());
   add_input_options(cmd, args->in);
   cmd->add_option(

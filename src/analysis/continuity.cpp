@@ -84,64 +84,71 @@ ContinuityReport analyze_continuity(const HalfedgeMesh& mesh, const Surface& sur
   const std::vector<int>& vertex_k = surface.bezier().kgons.vertex_k;
   const std::vector<std::uint8_t> sharp = sharp_edges(mesh, surface);
 
-  // Sides 0 and 1 of every patch cover every interior boundary and every crease once (sides 3
-  // and 2 are their partners). A boundary side has no partner, so side 3 is needed to count
-  // those on the far half of each boundary edge.
-  const auto& corners = surface.corners();
-  std::vector<SideResult> results(corners.size() * 2);
-  std::vector<int> far_boundary_sides(corners.size(), 0);
-  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t k) {
-    const Corner c = corners[k];
-    far_boundary_sides[k] = side_kind(mesh, sharp, c, 3) == SideKind::boundary ? 1 : 0;
-    for (int side = 0; side < 2; ++side) {
-      SideResult& r = results[2 * k + side];
-      r.kind = side_kind(mesh, sharp, c, side);
-      if (r.kind == SideKind::boundary) continue;
-      // Side 0 starts at the mesh vertex, side 1 ends at the face centre; the other ends are
-      // edge midpoints, where K = 4 always.
-      const int ev_k = side == 0 ? vertex_k[c.idx] : mesh.degree(mesh.face(c));
-      r.touches_ev = ev_k != 4;
-      const PatchNeighbour nb = neighbour_across(mesh, c, side);
-      for (double t : ts) {
-        const auto [u0, v0] = side_point(side, t);
-        const auto [u1, v1] = side_point(nb.side, t);
-        const SurfacePoint a = surface.evaluate(c, u0, v0);
-        const SurfacePoint b = surface.evaluate(nb.corner, u1, v1);
-        r.max_gap = std::max(r.max_gap, (a.position - b.position).norm() / diagonal);
-        ++r.count;
-        // Across a crease the surface is C0 by design: only the gap means something there.
-        if (r.kind == SideKind::crease) continue;
-        const double jump = angle_deg(a.normal, b.normal);
-        r.max_deg = std::max(r.max_deg, jump);
-        r.sum_deg += jump;
-        if (r.touches_ev) r.by_distance.emplace_back(side == 0 ? t : 1.0 - t, jump);
-      }
-    }
-  });
-
   ContinuityReport rep;
   rep.method = surface.method();
   FeatureReport& feat = rep.features;
   std::map<double, double> by_distance;
   double sum_ev = 0, sum_reg = 0;
-  for (const SideResult& r : results) {
-    if (r.kind == SideKind::boundary) {
-      ++feat.boundary_sides;
-      continue;
+  // Sides 0 and 1 of every patch cover every interior boundary and every crease once (sides 3
+  // and 2 are their partners). A boundary side has no partner, so side 3 is needed to count
+  // those on the far half of each boundary edge. The patches are measured a chunk at a time on
+  // every core and each chunk's sides are summed in patch order, so memory holds one chunk and
+  // the sums do not depend on the threads.
+  const auto& corners = surface.corners();
+  constexpr size_t kChunk = 1 << 14;
+  std::vector<SideResult> results(std::min(corners.size(), kChunk) * 2);
+  for (size_t chunk = 0; chunk < corners.size(); chunk += kChunk) {
+    const size_t chunk_end = std::min(corners.size(), chunk + kChunk);
+    tbb::parallel_for(chunk, chunk_end, [&](size_t k) {
+      const Corner c = corners[k];
+      for (int side = 0; side < 2; ++side) {
+        SideResult& r = results[2 * (k - chunk) + side];
+        r = SideResult{.by_distance = std::move(r.by_distance)};  // its storage kept
+        r.by_distance.clear();
+        r.kind = side_kind(mesh, sharp, c, side);
+        if (r.kind == SideKind::boundary) continue;
+        // Side 0 starts at the mesh vertex, side 1 ends at the face centre; the other ends are
+        // edge midpoints, where K = 4 always.
+        const int ev_k = side == 0 ? vertex_k[c.idx] : mesh.degree(mesh.face(c));
+        r.touches_ev = ev_k != 4;
+        const PatchNeighbour nb = neighbour_across(mesh, c, side);
+        for (double t : ts) {
+          const auto [u0, v0] = side_point(side, t);
+          const auto [u1, v1] = side_point(nb.side, t);
+          const SurfacePoint a = surface.evaluate(c, u0, v0);
+          const SurfacePoint b = surface.evaluate(nb.corner, u1, v1);
+          r.max_gap = std::max(r.max_gap, (a.position - b.position).norm() / diagonal);
+          ++r.count;
+          // Across a crease the surface is C0 by design: only the gap means something there.
+          if (r.kind == SideKind::crease) continue;
+          const double jump = angle_deg(a.normal, b.normal);
+          r.max_deg = std::max(r.max_deg, jump);
+          r.sum_deg += jump;
+          if (r.touches_ev) r.by_distance.emplace_back(side == 0 ? t : 1.0 - t, jump);
+        }
+      }
+    });
+    for (size_t i = 0; i < 2 * (chunk_end - chunk); ++i) {
+      const SideResult& r = results[i];
+      if (r.kind == SideKind::boundary) {
+        ++feat.boundary_sides;
+        continue;
+      }
+      if (r.kind == SideKind::crease) {
+        ++feat.crease_sides;
+        feat.crease_gap = std::max(feat.crease_gap, r.max_gap);
+        continue;
+      }
+      JumpStats& s = r.touches_ev ? rep.touching_ev : rep.away_from_ev;
+      s.max_deg = std::max(s.max_deg, r.max_deg);
+      s.samples += r.count;
+      (r.touches_ev ? sum_ev : sum_reg) += r.sum_deg;
+      rep.max_gap = std::max(rep.max_gap, r.max_gap);
+      for (const auto& [d, j] : r.by_distance) by_distance[d] = std::max(by_distance[d], j);
     }
-    if (r.kind == SideKind::crease) {
-      ++feat.crease_sides;
-      feat.crease_gap = std::max(feat.crease_gap, r.max_gap);
-      continue;
-    }
-    JumpStats& s = r.touches_ev ? rep.touching_ev : rep.away_from_ev;
-    s.max_deg = std::max(s.max_deg, r.max_deg);
-    s.samples += r.count;
-    (r.touches_ev ? sum_ev : sum_reg) += r.sum_deg;
-    rep.max_gap = std::max(rep.max_gap, r.max_gap);
-    for (const auto& [d, j] : r.by_distance) by_distance[d] = std::max(by_distance[d], j);
   }
-  for (int n : far_boundary_sides) feat.boundary_sides += n;
+  for (const Corner c : corners)
+    if (side_kind(mesh, sharp, c, 3) == SideKind::boundary) ++feat.boundary_sides;
   if (rep.touching_ev.samples) rep.touching_ev.mean_deg = sum_ev / rep.touching_ev.samples;
   if (rep.away_from_ev.samples) rep.away_from_ev.mean_deg = sum_reg / rep.away_from_ev.samples;
   rep.jump_by_distance.assign(by_distance.begin(), by_distance.end());

@@ -6,8 +6,10 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -560,15 +562,25 @@ SurfaceCheckReport check_tiles(std::span<const std::uint32_t> keys, const CheckG
   params.focus_all = !focused_only;
   std::vector<SurfaceCheckReport> found(keys.size());
   tbb::enumerable_thread_specific<TileScratch> scratch;
+  const bool two_runs = passes == (kEdges | kCrossings) && options.crossings_only_when_unfolded;
+  // Tiles checked (each run's), told by whichever thread finds no other telling, none waiting;
+  // read under the lock, so the fractions told never go back.
+  const double tiles = static_cast<double>(keys.size()) * (two_runs ? 2 : 1);
+  std::atomic<size_t> checked{0};
+  std::mutex telling;
   const auto run = [&](unsigned passes) {
     tbb::parallel_for(size_t{0}, keys.size(), [&](size_t k) {
       TileScratch& s = scratch.local();
       s.triangles.clear();
       gather(k, s.triangles);
       check_tile(grid, keys[k], passes, params, options, s, found[k]);
+      ++checked;
+      if (!options.progress) return;
+      if (const std::unique_lock lock(telling, std::try_to_lock); lock.owns_lock())
+        options.progress(static_cast<double>(checked.load()) / tiles);
     });
   };
-  if (passes == (kEdges | kCrossings) && options.crossings_only_when_unfolded) {
+  if (two_runs) {
     run(kEdges);
     int folds = 0;
     for (const SurfaceCheckReport& r : found) folds += r.folds;
@@ -576,6 +588,7 @@ SurfaceCheckReport check_tiles(std::span<const std::uint32_t> keys, const CheckG
   } else {
     run(passes);
   }
+  if (options.progress) options.progress(1.0);
   for (const SurfaceCheckReport& r : found) merge(report, r, options.max_listed);
   return report;
 }

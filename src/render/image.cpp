@@ -55,7 +55,7 @@ struct Framebuffer {
 }  // namespace
 
 Image render_image(const Renderer& renderer, const Camera& camera, const RenderStyle& style,
-                   int width, int height, const Antialiasing& aa) {
+                   int width, int height, const Antialiasing& aa, const SurfaceBlocks* blocks) {
   if (width < 1 || height < 1) {
     throw UsageError(fmt::format("image size {}x{} is empty", width, height));
   }
@@ -83,7 +83,7 @@ Image render_image(const Renderer& renderer, const Camera& camera, const RenderS
       ~RestoreBinding() { glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(fbo)); }
     } restore{previous_fbo};
     Framebuffer target(w, h, samples, true);
-    renderer.draw(camera, style, w, h, static_cast<float>(factor));
+    renderer.draw(camera, style, w, h, static_cast<float>(factor), blocks);
     // Resolve the samples into a single-sample framebuffer, then read it.
     Framebuffer resolved(w, h, 0, false);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo);

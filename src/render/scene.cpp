@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 
@@ -9,32 +10,53 @@
 
 namespace stitch {
 
-SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
-                          const OverlaySelection& overlays) {
-  SceneGeometry scene;
+namespace {
+
+int block_patches(int resolution, int patches_per_block) {
+  return patches_per_block > 0
+             ? patches_per_block
+             : std::max(1, kSceneBlockVertices / ((resolution + 1) * (resolution + 1)));
+}
+
+TessellationOptions unwelded(int resolution) {
   TessellationOptions options;
   options.resolution = resolution;
   options.welded = false;
-  // Every attribute: the levels and patches modes shade by them, texture coordinates come from
-  // each sample's patch and (u, v).
-  options.uv = options.patch = options.level = true;
-  scene.surface = tessellate(mesh, surface, options);
-  scene.input = input_faces(mesh);
-  const BezierSurface& bezier = surface.bezier();
+  return options;
+}
+
+}  // namespace
+
+SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                          const OverlaySelection& overlays, SceneSurface tessellation) {
+  SceneGeometry scene;
   const auto wanted = [&](Overlay o) { return overlays[static_cast<int>(o)]; };
   auto& lines = scene.overlays;
+  if (tessellation == SceneSurface::whole) {
+    TessellationOptions options = unwelded(resolution);
+    // Every attribute: the levels and patches modes shade by them, texture coordinates come from
+    // each sample's patch and (u, v).
+    options.uv = options.patch = options.level = true;
+    scene.surface = tessellate(mesh, surface, options);
+    for (const Vec3& p : scene.surface.positions) scene.bounds.extend(p);
+    if (wanted(Overlay::tessellation))
+      lines[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
+  } else {
+    tessellate_blocks(mesh, surface, unwelded(resolution), block_patches(resolution, 0),
+                      [&scene](const TessellatedMesh& block, int) {
+                        for (const Vec3& p : block.positions) scene.bounds.extend(p);
+                      });
+  }
+  if (tessellation == SceneSurface::whole) scene.input = input_faces(mesh);
+  const BezierSurface& bezier = surface.bezier();
   if (wanted(Overlay::mesh)) lines[static_cast<int>(Overlay::mesh)] = mesh_lines(mesh);
   if (wanted(Overlay::kgons))
     lines[static_cast<int>(Overlay::kgons)] = kgon_lines(mesh, bezier.kgons);
   if (wanted(Overlay::nets)) {
     lines[static_cast<int>(Overlay::nets)] = control_net_lines(bezier.nets, bezier.corners);
   }
-  if (wanted(Overlay::tessellation)) {
-    lines[static_cast<int>(Overlay::tessellation)] = surface_mesh_lines(scene.surface);
-  }
   scene.extraordinary = extraordinary_points(mesh, bezier.kgons);
   scene.sharp_curves = sharp_curve_lines(mesh, surface, resolution);
-  for (const Vec3& p : scene.surface.positions) scene.bounds.extend(p);
   for (const Vertex v : mesh.vertices()) scene.bounds.extend(mesh.position(v));
   return scene;
 }
@@ -48,6 +70,28 @@ std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
   for (size_t i = 0; i < out.size(); ++i)
     out[i] = uvs.evaluate(Corner(surface.patch[i]), surface.uv[i].x(), surface.uv[i].y());
   return out;
+}
+
+SurfaceBlocks surface_blocks(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                             const UvSurface* uvs, int patches_per_block,
+                             std::function<void(double)> progress) {
+  SurfaceBlocks blocks;
+  const int per_block = block_patches(resolution, patches_per_block);
+  blocks.for_each = [&mesh, &surface, uvs, resolution, per_block,
+                     progress = std::move(progress)](const SurfaceBlockVisitor& visit) {
+    TessellationOptions options = unwelded(resolution);
+    options.patch = options.level = true;  // for the levels and patches modes
+    options.uv = uvs != nullptr;           // with the patch, where a texture coordinate comes from
+    const auto patches = static_cast<double>(surface.corners().size());
+    std::vector<Eigen::Vector2d> texcoords;
+    tessellate_blocks(
+        mesh, surface, options, per_block, [&](const TessellatedMesh& block, int first) {
+          if (uvs) texcoords = surface_texcoords(block, *uvs);
+          visit(block, texcoords);
+          if (progress) progress(std::min(1.0, (first + static_cast<double>(per_block)) / patches));
+        });
+  };
+  return blocks;
 }
 
 void add_texcoords(SceneGeometry& scene, const HalfedgeMesh& mesh, const CornerUvs& corner_uvs,

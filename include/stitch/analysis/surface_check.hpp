@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ struct SurfaceCheckOptions {
   /// caller that only needs to know whether the surface is clean (unfold_tubes' search), since
   /// the crossing test is most of the time of a check.
   bool crossings_only_when_unfolded = false;
+  /// If set, told the fraction of the regions of space checked so far, from one thread at a
+  /// time, never less than it was told before, 1 at the end (a progress bar's percentage).
+  std::function<void(double)> progress;
 };
 
 struct SurfaceCheckReport {

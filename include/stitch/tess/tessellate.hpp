@@ -1,6 +1,8 @@
 // Sampling the surface on a regular grid per patch.
 #pragma once
 
+#include <functional>
+
 #include "stitch/eval/surface.hpp"
 #include "stitch/tess/tessellated_mesh.hpp"
 
@@ -40,5 +42,16 @@ TessellatedMesh tessellate(const HalfedgeMesh& mesh, const Surface& surface,
 /// On an exception, `out` holds no usable tessellation.
 void tessellate(const HalfedgeMesh& mesh, const Surface& surface,
                 const TessellationOptions& options, TessellatedMesh& out);
+
+/// The unwelded tessellation (options.welded false) a block of `patches_per_block` whole patches
+/// at a time, for a reader that needs each sample once and in order (a picture, a bound):
+/// visit(block, first) gets patches [first, first + count) of surface.corners(), their samples
+/// and attributes as tessellate gives them (to the bit), their quads numbered from the block's
+/// first vertex. The block's storage is reused for the next one, so memory holds one block
+/// whatever the mesh and resolution. Throws std::invalid_argument for welded options or fewer
+/// than one patch a block, InputError as tessellate does.
+void tessellate_blocks(const HalfedgeMesh& mesh, const Surface& surface,
+                       const TessellationOptions& options, int patches_per_block,
+                       const std::function<void(const TessellatedMesh& block, int first)>& visit);
 
 }  // namespace stitch

@@ -30,9 +30,11 @@ struct Antialiasing {
   int supersample = 2;   ///< render at this multiple of the size, then box-filter down
 };
 
-/// Renders one frame offscreen (needs the renderer's context current). Throws RenderError.
+/// Renders one frame offscreen (needs the renderer's context current), the surface from
+/// `blocks` when given (Renderer::draw). Throws RenderError.
 Image render_image(const Renderer& renderer, const Camera& camera, const RenderStyle& style,
-                   int width, int height, const Antialiasing& aa = {});
+                   int width, int height, const Antialiasing& aa = {},
+                   const SurfaceBlocks* blocks = nullptr);
 
 /// Mean of each factor x factor block (the size must divide evenly).
 Image downsample(const Image& image, int factor);

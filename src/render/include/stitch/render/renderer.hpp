@@ -9,9 +9,12 @@
 // welded = false) lets an editor re-upload only the patches it changed (patch_vertex_ranges +
 // update_surface_vertices). A block surface (set_block_surface) also gives each block its own
 // range of the index buffer, so blocks can appear and disappear (update_surface_blocks).
+// A surface too large to hold is drawn from SurfaceBlocks instead: tessellated, uploaded and drawn
+// one block at a time, the depth buffer making the result independent of the blocks.
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +79,24 @@ struct PatchRange {
 };
 std::vector<PatchRange> patch_vertex_ranges(const TessellatedMesh& surface);
 
+/// Called for each block of a SurfaceBlocks: the block (its quads numbering its own vertices,
+/// with patch ids and levels for those modes) and its texture coordinates (empty, or one per
+/// vertex).
+using SurfaceBlockVisitor = std::function<void(const TessellatedMesh& block,
+                                               const std::vector<Eigen::Vector2d>& texcoords)>;
+
+/// A surface produced block by block each time it is drawn (Renderer::draw), so that neither it
+/// nor its GPU buffers are ever held whole: blocks are drawn in the order given, with the same
+/// triangles in the same order as one upload of them all would draw, hence the same pixels.
+struct SurfaceBlocks {
+  /// Calls the visitor for each block, in order.
+  std::function<void(const SurfaceBlockVisitor&)> for_each;
+  /// Shade the blocks in place of the uploaded surface (RenderStyle::draw_surface); false: the
+  /// uploaded surface is shaded (e.g. the input polygons) and the blocks give the tessellation
+  /// overlay only.
+  bool shaded = true;
+};
+
 class Renderer {
  public:
   /// Compiles the shaders; needs a current GL >= 3.3 core context. Throws RenderError.
@@ -114,9 +135,12 @@ class Renderer {
   void set_markers(const MarkerSet& markers);
 
   /// Clears and draws into the currently bound framebuffer, viewport (0, 0, width, height).
-  /// `pixel_scale` multiplies line widths and marker sizes (for supersampled targets).
+  /// `pixel_scale` multiplies line widths and marker sizes (for supersampled targets). With
+  /// `blocks`, the surface (when blocks->shaded) and the tessellation overlay are drawn from them
+  /// block by block, each block uploaded into buffers kept for the purpose and replaced by the
+  /// next, in place of the uploaded ones.
   void draw(const Camera& camera, const RenderStyle& style, int width, int height,
-            float pixel_scale = 1.0f) const;
+            float pixel_scale = 1.0f, const SurfaceBlocks* blocks = nullptr) const;
 
  private:
   struct Impl;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
@@ -14,7 +15,8 @@
 namespace stitch {
 
 struct SceneGeometry {
-  TessellatedMesh surface;                     ///< unwelded: one vertex block per patch
+  /// Unwelded: one vertex block per patch; empty when built with SceneSurface::blocks.
+  TessellatedMesh surface;
   TessellatedMesh input;                       ///< the input polygons (input_faces)
   std::array<LineSet, num_overlays> overlays;  ///< indexed by Overlay
   std::vector<ExtraordinaryPoint> extraordinary;
@@ -31,10 +33,35 @@ struct SceneGeometry {
 using OverlaySelection = std::array<bool, num_overlays>;
 inline constexpr OverlaySelection all_overlays{true, true, true, true};
 
+/// Where a scene's smooth surface is tessellated.
+enum class SceneSurface {
+  whole,  ///< once, into SceneGeometry::surface (and the tessellation overlay from it)
+  /// each time it is drawn, a block at a time (surface_blocks): neither the scene nor a picture
+  /// of it then holds more of the tessellation than a block, whatever the mesh and resolution
+  blocks,
+};
+
 /// Tessellates `surface` at `resolution` segments per patch side (unwelded) and builds the
-/// selected overlays, the input polygons and the extraordinary points.
+/// selected overlays, the input polygons and the extraordinary points. With SceneSurface::blocks
+/// the tessellation is only passed over for the bounds (the same as whole) and kept neither in
+/// `surface` nor in the tessellation overlay: draw it from surface_blocks; `input` is left empty
+/// too (input_faces, for a picture of the input polygons: 0.4 GB for a million quads).
 SceneGeometry build_scene(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
-                          const OverlaySelection& overlays = all_overlays);
+                          const OverlaySelection& overlays = all_overlays,
+                          SceneSurface tessellation = SceneSurface::whole);
+
+/// About this many vertices a block (some 15 MB with its upload): enough that the draw calls
+/// cost nothing beside the evaluation, few enough to leave the memory to the mesh's surface.
+inline constexpr int kSceneBlockVertices = 1 << 17;
+
+/// The unwelded tessellation of `surface` at `resolution`, produced block by block as it is
+/// drawn (Renderer::draw, render_image): blocks of `patches_per_block` patches (0: about
+/// kSceneBlockVertices vertices), with patch ids and levels, and texture coordinates from `uvs`
+/// when given. Keeps references to `mesh`, `surface` and `uvs`. `progress`, if set, is told the
+/// fraction of the patches drawn after each block, on the drawing thread.
+SurfaceBlocks surface_blocks(const HalfedgeMesh& mesh, const Surface& surface, int resolution,
+                             const UvSurface* uvs = nullptr, int patches_per_block = 0,
+                             std::function<void(double)> progress = {});
 
 /// The UV of every sample of `surface`: `uvs` at the sample's patch and (u, v).
 std::vector<Eigen::Vector2d> surface_texcoords(const TessellatedMesh& surface,
