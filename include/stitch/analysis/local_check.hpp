@@ -23,10 +23,13 @@
 
 namespace stitch {
 
+/// The local check's segments per patch side: 16, as the tests check whole surfaces; at 8 the
+/// triangles beside a tightly bent tube (the hole through a cube) differ by more than 90 degrees
+/// (README).
+inline constexpr int local_check_resolution = 16;
+
 struct LocalCheckOptions {
-  /// Segments per patch side. 16, as the tests check whole surfaces: at 8 the triangles beside a
-  /// tightly bent tube (the hole through a cube) differ by more than 90 degrees (README).
-  int resolution = 16;
+  int resolution = local_check_resolution;  ///< segments per patch side
   /// Fold angle and degenerate area (max_listed is ignored: every problem is mapped to its
   /// patches).
   SurfaceCheckOptions surface;

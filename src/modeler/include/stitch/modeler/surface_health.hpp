@@ -31,7 +31,7 @@ std::string describe_problems(const HalfedgeMesh& mesh, const SurfaceProblems& p
 
 /// The check's resolution: the tests' (LocalCheckOptions), finer than the display's default 8,
 /// at which the clean hole through a cube shows folds (README).
-inline constexpr int kHealthResolution = LocalCheckOptions{}.resolution;
+inline constexpr int kHealthResolution = local_check_resolution;
 
 /// Checks the patches of `changed` (e.g. IncrementalSurface::recomputed() and the corners of
 /// earlier problems, which an edit may have fixed) with their neighbours on the live surface: its
