@@ -211,10 +211,20 @@ constexpr std::array<std::array<double, 2>, 4> kQuadVertexCoord{
 // One Catmull-Clark step removes all of these (see CatmullClarkSurface), so the first one found
 // is only the reason to take it. Only the surface counts: holes are not given to OpenSubdiv.
 std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
+  enum : char { inside, on_boundary, valence_two };
+  std::vector<char> kind(static_cast<size_t>(mesh.vertex_capacity()), inside);
+  for (Vertex v : mesh.vertices()) {
+    const SurfaceRing ring = surface_ring(mesh, v);
+    kind[v.idx] = ring.boundary() ? on_boundary : ring.edges.size() == 2 ? valence_two : inside;
+  }
   for (Face f : mesh.surface_faces()) {
     if (mesh.degree(f) == 2) return fmt::format("face {} has 2 sides", f.idx + 1);
     std::vector<Vertex> seen;
+    int two = -1;
+    bool boundary = false;
     for (Halfedge h : mesh.face_loop(f)) {
+      boundary = boundary || kind[mesh.origin(h).idx] == on_boundary;
+      if (kind[mesh.origin(h).idx] == valence_two) two = mesh.origin(h).idx;
       if (mesh.face(HalfedgeMesh::twin(h)) == f)
         return fmt::format("face {} runs along edge {} twice", f.idx + 1,
                            HalfedgeMesh::edge(h).idx + 1);
@@ -222,6 +232,9 @@ std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
         return fmt::format("face {} visits vertex {} twice", f.idx + 1, mesh.origin(h).idx + 1);
       seen.push_back(mesh.origin(h));
     }
+    if (two >= 0 && boundary)
+      return fmt::format("face {} has a valence-2 interior vertex ({}) and a boundary vertex",
+                         f.idx + 1, two + 1);
   }
   for (Vertex v : mesh.vertices()) {
     std::vector<Vertex> seen;
@@ -330,6 +343,12 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   SurfaceFactory::Options factory_options;
   factory_options.SetApproxLevelSmooth(std::max(0, kApproxLevelSmooth - steps_taken));
   factory_options.SetApproxLevelSharp(std::max(0, kApproxLevelSharp - steps_taken));
+  // OpenSubdiv 3.5's Bfr shares a cached irregular patch between faces around a valence-2 vertex
+  // that it built from one face's own vertex indices (fixed in 3.6.2): the surfaces then change
+  // from run to run by 1% of the size on catmark_val2_interior. Such meshes are built uncached.
+  const auto vertices = mesh.vertices();
+  factory_options.EnableCaching(std::none_of(vertices.begin(), vertices.end(),
+                                             [&](Vertex v) { return mesh.valence(v) == 2; }));
   const SurfaceFactory factory(*refiner, factory_options);
   const int num_faces = static_cast<int>(topo.faces.size());
   Impl& impl = *impl_;
