@@ -344,8 +344,9 @@ CatmullClarkSurface::CatmullClarkSurface(const HalfedgeMesh& mesh, int steps_tak
   factory_options.SetApproxLevelSmooth(std::max(0, kApproxLevelSmooth - steps_taken));
   factory_options.SetApproxLevelSharp(std::max(0, kApproxLevelSharp - steps_taken));
   // OpenSubdiv 3.5's Bfr shares a cached irregular patch between faces around a valence-2 vertex
-  // that it built from one face's own vertex indices (fixed in 3.6.2): the surfaces then change
-  // from run to run by 1% of the size on catmark_val2_interior. Such meshes are built uncached.
+  // that it built from one face's own vertex indices (fixed upstream in 2025, OpenSubdiv pull
+  // request 1353): the surfaces then change from run to run by 1% of the size on
+  // catmark_val2_interior. Such meshes are built uncached.
   const auto vertices = mesh.vertices();
   factory_options.EnableCaching(std::none_of(vertices.begin(), vertices.end(),
                                              [&](Vertex v) { return mesh.valence(v) == 2; }));
