@@ -207,15 +207,25 @@ constexpr std::array<std::array<double, 2>, 4> kQuadVertexCoord{
 // cannot appear twice in a face", far/topologyRefinerFactory.h), that Bfr mishandles (2-sided
 // faces: no limit surface for the faces around them, and writes past its own buffers under
 // valgrind), or on which Bfr's surfaces come apart without an error (a face visiting a vertex
-// twice, several edges between two vertices: gaps of a fifth of a cube's size were measured).
-// One Catmull-Clark step removes all of these (see CatmullClarkSurface), so the first one found
-// is only the reason to take it. Only the surface counts: holes are not given to OpenSubdiv.
+// twice, several edges between two vertices: gaps of a fifth of a cube's size were measured), or
+// that OpenSubdiv 3.5's Bfr reads past its own crease list on (a face with a valence-2 interior
+// vertex and a boundary vertex: IrregularPatchBuilder::sharpenBoundaryControlEdges, fixed in
+// 3.6.0). One Catmull-Clark step removes all of these (see CatmullClarkSurface; after it no face
+// holds both a valence-2 interior vertex and a boundary vertex), so the first one found is only
+// the reason to take it. Only the surface counts: holes are not given to OpenSubdiv.
 std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
   enum : char { inside, on_boundary, valence_two };
   std::vector<char> kind(static_cast<size_t>(mesh.vertex_capacity()), inside);
   for (Vertex v : mesh.vertices()) {
     const SurfaceRing ring = surface_ring(mesh, v);
     kind[v.idx] = ring.boundary() ? on_boundary : ring.edges.size() == 2 ? valence_two : inside;
+    std::vector<Vertex> seen;
+    for (Halfedge h : ring.edges) {
+      if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end())
+        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
+                           mesh.target(h).idx + 1);
+      seen.push_back(mesh.target(h));
+    }
   }
   for (Face f : mesh.surface_faces()) {
     if (mesh.degree(f) == 2) return fmt::format("face {} has 2 sides", f.idx + 1);
@@ -235,15 +245,6 @@ std::string topology_needing_a_step(const HalfedgeMesh& mesh) {
     if (two >= 0 && boundary)
       return fmt::format("face {} has a valence-2 interior vertex ({}) and a boundary vertex",
                          f.idx + 1, two + 1);
-  }
-  for (Vertex v : mesh.vertices()) {
-    std::vector<Vertex> seen;
-    for (Halfedge h : surface_ring(mesh, v).edges) {
-      if (std::find(seen.begin(), seen.end(), mesh.target(h)) != seen.end())
-        return fmt::format("vertices {} and {} are joined by more than one edge", v.idx + 1,
-                           mesh.target(h).idx + 1);
-      seen.push_back(mesh.target(h));
-    }
   }
   return {};
 }
