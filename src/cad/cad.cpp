@@ -21,7 +21,9 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <IGESBasic_Name.hxx>
 #include <IGESControl_Controller.hxx>
@@ -44,6 +46,7 @@
 #include <StepShape_AdvancedFace.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
@@ -56,6 +59,7 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <TopoDS_Wire.hxx>
 #include <TransferBRep.hxx>
 #include <TransferBRep_ShapeMapper.hxx>
 #include <Transfer_FinderProcess.hxx>
@@ -71,6 +75,8 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <numeric>
+#include <optional>
 #include <vector>
 namespace stitch::cad {
 
@@ -232,6 +238,338 @@ struct NamedShape {
   std::vector<std::pair<TopoDS_Face, std::string>> names;
 };
 
+/// The faces joined along their shared edges: a shell, or a compound of shells and faces on
+/// their own; what became of each B-spline face; the shared edges on sharp mesh edges.
+struct Joined {
+  TopoDS_Shape shape;
+  std::vector<TopoDS_Shape> faces;
+  TopTools_MapOfShape sharp;
+  int free_edges = 0;
+  double max_gap = 0;
+};
+
+/// A point where faces meet, named by the element of the mesh it lies on.
+struct Joint {
+  enum Kind { vertex, edge_middle, face_centre } kind;
+  int idx;
+  auto operator<=>(const Joint&) const = default;
+};
+
+/// A stretch of the mesh along which face sides meet: a whole edge, the half of edge(h) at
+/// origin(h), or the spoke inside face(h) from the middle of edge(h) to the face's centre.
+struct Stretch {
+  enum Kind { edge, half, spoke } kind;
+  int idx;
+  auto operator<=>(const Stretch&) const = default;
+};
+
+/// A piece of a face's boundary, counterclockwise in (s, t): the fractions [a, b] of side `side`
+/// (which runs from corner `side` of kSquare to the next), from joint `from` to `to`.
+struct BoundaryPiece {
+  Stretch along;
+  int side;
+  double a, b;
+  Joint from, to;
+};
+
+/// The corners of a face's parameter square, counterclockwise from (0, 0).
+constexpr std::array<std::array<double, 2>, 4> kSquare{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+
+gp_Pnt2d on_side(int side, double fraction) {
+  const auto& [s0, t0] = kSquare[side];
+  const auto& [s1, t1] = kSquare[(side + 1) % 4];
+  return {s0 + fraction * (s1 - s0), t0 + fraction * (t1 - t0)};
+}
+
+/// The face's boundary as stretches of the mesh it is laid out after. A packed quad's side k
+/// runs along the edge of its corner k, cut at the middle where the face across is not packed
+/// (its corner faces each meet half of it); a corner face's sides are the halves of its
+/// corner's two edges at its vertex and the spokes from their middles to the face centre (the
+/// root patch's (u, v) = (0, 0), (1, 0), (1, 1), (0, 1): vertex, edge middle, centre, middle).
+std::vector<BoundaryPiece> boundary(const HalfedgeMesh& mesh, const BsplineFace& face,
+                                    const std::vector<bool>& packed) {
+  const auto middle = [](Halfedge h) {
+    return Joint{Joint::edge_middle, HalfedgeMesh::edge(h).idx};
+  };
+  const auto vertex = [&](Vertex v) { return Joint{Joint::vertex, v.idx}; };
+  if (face.vertex >= 0) {
+    const Halfedge c = face.corner, before = mesh.prev(c);
+    const Joint corner = vertex(mesh.origin(c)), centre{Joint::face_centre, face.face};
+    return {{{Stretch::half, c.idx}, 0, 0, 1, corner, middle(c)},
+            {{Stretch::spoke, c.idx}, 1, 0, 1, middle(c), centre},
+            {{Stretch::spoke, before.idx}, 2, 0, 1, centre, middle(before)},
+            {{Stretch::half, HalfedgeMesh::twin(before).idx}, 3, 0, 1, middle(before), corner}};
+  }
+  std::vector<BoundaryPiece> pieces;
+  const std::vector<Halfedge> loop = mesh.face_loop(Face(face.face));
+  for (int k = 0; k < 4; ++k) {
+    const Halfedge h = loop[k], across = HalfedgeMesh::twin(h);
+    const Joint from = vertex(mesh.origin(h)), to = vertex(mesh.target(h));
+    if (packed[across.idx] || mesh.is_hole(across)) {
+      pieces.push_back({{Stretch::edge, HalfedgeMesh::edge(h).idx}, k, 0, 1, from, to});
+    } else {
+      pieces.push_back({{Stretch::half, h.idx}, k, 0, 0.5, from, middle(h)});
+      pieces.push_back({{Stretch::half, across.idx}, k, 0.5, 1, middle(h), to});
+    }
+  }
+  return pieces;
+}
+
+/// The straight segment from `a` at parameter `first` to `b` at `last`: a line where that is its
+/// arc length (as for an isoline of the face it bounds), else a B-spline of degree 1.
+Handle(Geom2d_Curve) segment(const gp_Pnt2d& a, const gp_Pnt2d& b, double first, double last) {
+  const gp_Vec2d d(a, b);
+  const gp_Dir2d direction(d);
+  if (std::abs(d.Magnitude() - (last - first)) < 1e-12)
+    return new Geom2d_Line(a.Translated(-first * gp_Vec2d(direction)), direction);
+  TColgp_Array1OfPnt2d poles(1, 2);
+  poles.SetValue(1, a);
+  poles.SetValue(2, b);
+  TColStd_Array1OfReal knots(1, 2);
+  knots.SetValue(1, first);
+  knots.SetValue(2, last);
+  TColStd_Array1OfInteger mults(1, 2);
+  mults.Init(2);
+  return new Geom2d_BSplineCurve(poles, knots, mults, 1);
+}
+
+/// One edge of the shell: its 3D curve (an isoline of its first face) over [first, last], from
+/// joint `start`, its segment on each face, and the largest distance from the curve to the
+/// other face measured along it.
+struct SharedEdge {
+  Handle(Geom_Curve) curve;
+  double first = 0, last = 1;
+  Joint start{}, end{};
+  std::vector<Handle(Geom2d_Curve)> segments;
+  double gap = 0;
+};
+
+/// Where two faces share a piece of boundary, a sample every quarter of a knot span of the first
+/// face along it suffices: both are the same polynomials there, so what is measured is the
+/// knot removal and round-off.
+constexpr int kGapSamplesPerSpan = 4;
+
+struct Use {
+  int face, piece;
+};
+
+/// The face's isoline along side `side` (t = 0, s = 1, t = 1, s = 0), parametrized by s or t.
+Handle(Geom_Curve) isoline(const Handle(Geom_BSplineSurface) & surface, int side) {
+  const double at = side == 1 || side == 2 ? 1 : 0;
+  return side % 2 == 0 ? surface->VIso(at) : surface->UIso(at);
+}
+
+SharedEdge shared_edge(const std::vector<Use>& uses, const std::vector<BsplineFace>& faces,
+                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces,
+                       const std::vector<std::vector<BoundaryPiece>>& pieces) {
+  const BoundaryPiece& p = pieces[uses[0].face][uses[0].piece];
+  // On sides 2 and 3 the boundary runs against the isoline's parameter.
+  const bool backwards = p.side >= 2;
+  SharedEdge e;
+  e.curve = isoline(surfaces[uses[0].face], p.side);
+  e.first = backwards ? 1 - p.b : p.a;
+  e.last = backwards ? 1 - p.a : p.b;
+  e.start = backwards ? p.to : p.from;
+  e.end = backwards ? p.from : p.to;
+  for (const Use& use : uses) {
+    const BoundaryPiece& q = pieces[use.face][use.piece];
+    const bool forward = q.from == e.start;
+    e.segments.push_back(segment(on_side(q.side, forward ? q.a : q.b),
+                                 on_side(q.side, forward ? q.b : q.a), e.first, e.last));
+  }
+  // The other face's points on its segment, from its own isoline (a curve evaluates several
+  // times faster than the surface).
+  const std::vector<double>& knots =
+      p.side % 2 == 0 ? faces[uses[0].face].u_knots : faces[uses[0].face].v_knots;
+  for (size_t i = 1; i < uses.size(); ++i) {
+    const int side = pieces[uses[i].face][uses[i].piece].side;
+    const Handle(Geom_Curve) other = isoline(surfaces[uses[i].face], side);
+    for (size_t k = 0; k + 1 < knots.size(); ++k) {
+      const double from = std::max(knots[k], e.first), to = std::min(knots[k + 1], e.last);
+      for (int j = 0; j <= kGapSamplesPerSpan && from < to; ++j) {
+        const double t = from + (to - from) * j / kGapSamplesPerSpan;
+        const gp_Pnt2d uv = e.segments[i]->Value(t);
+        e.gap = std::max(e.gap,
+                         e.curve->Value(t).Distance(other->Value(side % 2 == 0 ? uv.X() : uv.Y())));
+      }
+    }
+  }
+  return e;
+}
+
+/// The faces joined along the sides the mesh says they share (`mesh`: the one they are laid out
+/// after), each edge's tolerance the gap measured along it, each vertex's the spread of the
+/// faces' corners there. nullopt where the mesh cannot tell: vertices at one position (repair
+/// leaves them where the input was not manifold, and only a geometric search joins the pieces
+/// there), or sides paired as a shell cannot hold them (a face meeting itself, a closed edge).
+std::optional<Joined> join_by_adjacency(const HalfedgeMesh& mesh,
+                                        const std::vector<BsplineFace>& faces,
+                                        const std::vector<Handle(Geom_BSplineSurface)>& surfaces) {
+  {
+    std::vector<std::array<double, 3>> positions;
+    for (Vertex v : mesh.vertices()) {
+      const Vec3& p = mesh.position(v);
+      positions.push_back({p.x(), p.y(), p.z()});
+    }
+    std::sort(positions.begin(), positions.end());
+    if (std::adjacent_find(positions.begin(), positions.end()) != positions.end())
+      return std::nullopt;
+  }
+  std::vector<bool> packed(mesh.halfedge_capacity(), false);
+  for (const BsplineFace& f : faces)
+    if (f.vertex < 0)
+      for (Halfedge h : mesh.face_loop(Face(f.face))) packed[h.idx] = true;
+  std::vector<std::vector<BoundaryPiece>> pieces(faces.size());
+  std::map<Stretch, std::vector<Use>> uses_of;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    pieces[i] = boundary(mesh, faces[i], packed);
+    for (size_t j = 0; j < pieces[i].size(); ++j)
+      uses_of[pieces[i][j].along].push_back({int(i), int(j)});
+  }
+  std::vector<std::vector<Use>> edge_uses;
+  for (auto& [stretch, uses] : uses_of) {
+    const BoundaryPiece& p = pieces[uses[0].face][uses[0].piece];
+    if (uses.size() > 2 || p.from == p.to) return std::nullopt;
+    if (uses.size() == 2) {
+      const BoundaryPiece& q = pieces[uses[1].face][uses[1].piece];
+      if (uses[0].face == uses[1].face || q.from != p.to || q.to != p.from) return std::nullopt;
+    }
+    edge_uses.push_back(std::move(uses));
+  }
+  std::vector<SharedEdge> edges(edge_uses.size());
+  tbb::parallel_for(size_t{0}, edges.size(), [&](size_t i) {
+    edges[i] = shared_edge(edge_uses[i], faces, surfaces, pieces);
+  });
+
+  // The vertices: at the first face's corner, their tolerance the distance to every other
+  // face's corner there and at least their edges'.
+  std::map<Joint, std::pair<gp_Pnt, double>> joints;
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (const BoundaryPiece& p : pieces[i]) {
+      const gp_Pnt2d uv = on_side(p.side, p.a);
+      const gp_Pnt point = surfaces[i]->Value(uv.X(), uv.Y());
+      const auto at = joints.try_emplace(p.from, point, Precision::Confusion()).first;
+      at->second.second = std::max(at->second.second, at->second.first.Distance(point));
+    }
+  Joined joined;
+  for (const SharedEdge& e : edges) {
+    joined.max_gap = std::max(joined.max_gap, e.gap);
+    for (const Joint& j : {e.start, e.end})
+      joints[j].second = std::max(joints[j].second, std::max(e.gap, Precision::Confusion()));
+  }
+  BRep_Builder builder;
+  std::map<Joint, TopoDS_Vertex> vertices;
+  for (const auto& [joint, point] : joints)
+    builder.MakeVertex(vertices[joint], point.first, point.second);
+  std::vector<TopoDS_Face> occt_faces(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    builder.MakeFace(occt_faces[i], surfaces[i], Precision::Confusion());
+    builder.NaturalRestriction(occt_faces[i], true);
+  }
+
+  // The edges, with their segments on the faces; each face's wire takes its pieces in order.
+  std::vector<std::vector<TopoDS_Edge>> wire_edges(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) wire_edges[i].resize(pieces[i].size());
+  std::vector<int> component(faces.size());
+  std::iota(component.begin(), component.end(), 0);
+  const std::function<int(int)> root = [&](int f) {
+    return component[f] == f ? f : component[f] = root(component[f]);
+  };
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const SharedEdge& e = edges[i];
+    const double tolerance = std::max(e.gap, Precision::Confusion());
+    TopoDS_Edge edge;
+    builder.MakeEdge(edge, e.curve, tolerance);
+    builder.Add(edge, vertices[e.start].Oriented(TopAbs_FORWARD));
+    builder.Add(edge, vertices[e.end].Oriented(TopAbs_REVERSED));
+    for (size_t u = 0; u < edge_uses[i].size(); ++u) {
+      const Use& use = edge_uses[i][u];
+      builder.UpdateEdge(edge, e.segments[u], occt_faces[use.face], tolerance);
+      const bool forward = pieces[use.face][use.piece].from == e.start;
+      wire_edges[use.face][use.piece] =
+          TopoDS::Edge(edge.Oriented(forward ? TopAbs_FORWARD : TopAbs_REVERSED));
+      if (faces[use.face].sharp_side[pieces[use.face][use.piece].side]) joined.sharp.Add(edge);
+    }
+    builder.Range(edge, e.first, e.last);
+    if (edge_uses[i].size() == 1)
+      ++joined.free_edges;
+    else
+      component[root(edge_uses[i][0].face)] = root(edge_uses[i][1].face);
+  }
+  for (size_t i = 0; i < faces.size(); ++i) {
+    TopoDS_Wire wire;
+    builder.MakeWire(wire);
+    for (const TopoDS_Edge& edge : wire_edges[i]) builder.Add(wire, edge);
+    wire.Closed(true);
+    builder.Add(occt_faces[i], wire);
+  }
+
+  // A shell per connected set of faces; a face that shares no edge stays on its own, as sewing
+  // leaves it.
+  std::map<int, std::vector<int>> sets;
+  for (size_t i = 0; i < faces.size(); ++i) sets[root(int(i))].push_back(int(i));
+  std::vector<TopoDS_Shape> parts;
+  for (const auto& [first, members] : sets) {
+    if (members.size() == 1) {
+      parts.push_back(occt_faces[members.front()]);
+      continue;
+    }
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    for (int f : members) builder.Add(shell, occt_faces[f]);
+    shell.Closed(BRep_Tool::IsClosed(shell));
+    parts.push_back(shell);
+  }
+  if (parts.size() == 1) {
+    joined.shape = parts.front();
+  } else {
+    TopoDS_Compound compound;
+    builder.MakeCompound(compound);
+    for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
+    joined.shape = compound;
+  }
+  joined.faces.assign(occt_faces.begin(), occt_faces.end());
+  return joined;
+}
+
+/// The faces joined by OpenCASCADE's sewing, which searches for the sides that meet within
+/// `tolerance`.
+Joined sew(const std::vector<BsplineFace>& faces,
+           const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double tolerance,
+           const HalfedgeMesh& named_after, const CadOptions& options) {
+  std::vector<TopoDS_Face> occt_faces(faces.size());
+  TopTools_MapOfShape sharp_edges;  // edges of occt_faces
+  for (size_t i = 0; i < faces.size(); ++i) {
+    BRepBuilderAPI_MakeFace make(surfaces[i], Precision::Confusion());
+    if (!make.IsDone())
+      throw Error(fmt::format("OpenCASCADE refused the B-spline face of {}",
+                              face_name(named_after, faces[i])));
+    occt_faces[i] = make.Face();
+    for (TopExp_Explorer e(occt_faces[i], TopAbs_EDGE); e.More(); e.Next()) {
+      const int side = side_of(TopoDS::Edge(e.Current()), occt_faces[i]);
+      if (side >= 0 && faces[i].sharp_side[side]) sharp_edges.Add(e.Current());
+    }
+  }
+  BRepBuilderAPI_Sewing sewing(tolerance, true, true, true, false);
+  for (const TopoDS_Face& face : occt_faces) sewing.Add(face);
+  {
+    Handle(ForwardProgress) indicator = new ForwardProgress(options.progress, 0.5, 0.8);
+    sewing.Perform(indicator->Start());
+  }
+  Joined joined;
+  joined.free_edges = sewing.NbFreeEdges();
+  joined.shape = sewing.SewedShape();
+  for (TopTools_MapOfShape::Iterator it(sharp_edges); it.More(); it.Next()) {
+    const TopoDS_Shape& original = it.Value();
+    const TopoDS_Shape now =
+        sewing.IsModifiedSubShape(original) ? sewing.ModifiedSubShape(original) : original;
+    for (TopExp_Explorer e(now, TopAbs_EDGE); e.More(); e.Next()) joined.sharp.Add(e.Current());
+  }
+  for (const TopoDS_Face& face : occt_faces)
+    joined.faces.push_back(sewing.IsModified(face) ? sewing.Modified(face) : TopoDS_Shape(face));
+  return joined;
+}
+
 NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
                        const CadOptions& options, CadReport& r) {
   const auto progress = [&](double from, double to, double done) {
@@ -247,8 +585,7 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   const HalfedgeMesh& named_after = options.control ? *options.control->mesh : mesh;
   r.faces = static_cast<int>(faces.size());
 
-  // The OCCT surfaces, their knots lowered (each face on its own, so in parallel), then the
-  // faces and the edges that run along sharp mesh edges.
+  // The OCCT surfaces, their knots lowered (each face on its own, so in parallel).
   const double knot_tolerance = kKnotRemovalTolerance * patches.model_size;
   std::vector<Handle(Geom_BSplineSurface)> surfaces(faces.size());
   std::vector<std::array<std::int64_t, 4>> knots(faces.size());
@@ -256,37 +593,20 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
     knots[i] = {};
     surfaces[i] = make_surface(faces[i], knot_tolerance, knots[i]);
   });
-  std::vector<TopoDS_Face> occt_faces(faces.size());
-  TopTools_MapOfShape sharp_edges;  // edges of occt_faces
   for (size_t i = 0; i < faces.size(); ++i) {
     for (int m = 0; m < 4; ++m) r.knots[m] += knots[i][m];
     r.poles += static_cast<std::int64_t>(surfaces[i]->NbUPoles()) * surfaces[i]->NbVPoles();
-    BRepBuilderAPI_MakeFace make(surfaces[i], Precision::Confusion());
-    if (!make.IsDone())
-      throw Error(fmt::format("OpenCASCADE refused the B-spline face of {}",
-                              face_name(named_after, faces[i])));
-    occt_faces[i] = make.Face();
-    for (TopExp_Explorer e(occt_faces[i], TopAbs_EDGE); e.More(); e.Next()) {
-      const int side = side_of(TopoDS::Edge(e.Current()), occt_faces[i]);
-      if (side >= 0 && faces[i].sharp_side[side]) sharp_edges.Add(e.Current());
-    }
-    if (i % 64 == 0) progress(0.3, 0.5, double(i) / faces.size());
   }
-  BRepBuilderAPI_Sewing sewing(r.sewing_tolerance, true, true, true, false);
-  for (const TopoDS_Face& face : occt_faces) sewing.Add(face);
-  {
-    Handle(ForwardProgress) indicator = new ForwardProgress(options.progress, 0.5, 0.8);
-    sewing.Perform(indicator->Start());
-  }
-  r.free_edges = sewing.NbFreeEdges();
-  const TopoDS_Shape sewn = sewing.SewedShape();
-  TopTools_MapOfShape sewn_sharp;
-  for (TopTools_MapOfShape::Iterator it(sharp_edges); it.More(); it.Next()) {
-    const TopoDS_Shape& original = it.Value();
-    const TopoDS_Shape now =
-        sewing.IsModifiedSubShape(original) ? sewing.ModifiedSubShape(original) : original;
-    for (TopExp_Explorer e(now, TopAbs_EDGE); e.More(); e.Next()) sewn_sharp.Add(e.Current());
-  }
+  progress(0.3, 0.5, 1.0);
+  // The mesh tells which sides meet; sewing searches for them where it cannot.
+  std::optional<Joined> joined;
+  if (!options.force_sewing) joined = join_by_adjacency(named_after, faces, surfaces);
+  r.sewn = !joined;
+  if (!joined) joined = sew(faces, surfaces, r.sewing_tolerance, named_after, options);
+  r.free_edges = joined->free_edges;
+  r.max_edge_gap = joined->max_gap;
+  const TopoDS_Shape& sewn = joined->shape;
+  const TopTools_MapOfShape& sewn_sharp = joined->sharp;
 
   // Regularity: OCCT marks the edges where the faces meet tangentially; the report measures
   // the angle along every shared edge that is not on a sharp mesh edge.
@@ -342,14 +662,11 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
     }
   }
   for (TopExp_Explorer it(sewn, TopAbs_FACE, TopAbs_SHELL); it.More(); it.Next())
-    parts.push_back(it.Current());  // faces sewing left on their own
+    parts.push_back(it.Current());  // faces left on their own
   NamedShape named;
-  for (size_t i = 0; i < faces.size(); ++i) {
-    const TopoDS_Shape now = sewing.IsModified(occt_faces[i]) ? sewing.Modified(occt_faces[i])
-                                                              : TopoDS_Shape(occt_faces[i]);
-    for (TopExp_Explorer f(now, TopAbs_FACE); f.More(); f.Next())
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (TopExp_Explorer f(joined->faces[i], TopAbs_FACE); f.More(); f.Next())
       named.names.emplace_back(TopoDS::Face(f.Current()), face_name(named_after, faces[i]));
-  }
   if (parts.size() == 1) {
     named.shape = parts.front();
   } else {

@@ -1,7 +1,8 @@
 // STEP and IGES read back with OpenCASCADE's readers: a valid closed solid with the input's Euler
 // characteristic, the face counts of the packings, every face against exact evaluation, face
 // names, volumes against the tessellation, measured knot multiplicities and edge regularity,
-// units declared; and every OpenSubdiv shape that smooths exports STEP, IGES and Bézier JSON.
+// units declared; the faces joined by the mesh's adjacency as sewing joins them; and every
+// OpenSubdiv shape that smooths exports STEP, IGES and Bézier JSON.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,6 +122,31 @@ void expect_faces_match_surface(const TopoDS_Shape& shape, const Exact& e, FaceP
   EXPECT_EQ(outward, faces);
 }
 
+/// The faces joined by the mesh's adjacency, against OpenCASCADE's sewing of the same faces:
+/// the same shells, solids, free, smooth and sharp edges, vertices and volume, and a valid shape.
+void expect_joined_as_sewn(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& set,
+                           cad::CadOptions options) {
+  cad::CadReport joined, sewn;
+  const TopoDS_Shape by_adjacency = cad::make_shape(mesh, surface, set, options, &joined);
+  options.force_sewing = true;
+  const TopoDS_Shape by_sewing = cad::make_shape(mesh, surface, set, options, &sewn);
+  EXPECT_FALSE(joined.sewn);
+  EXPECT_TRUE(sewn.sewn);
+  EXPECT_TRUE(BRepCheck_Analyzer(by_adjacency).IsValid());
+  EXPECT_LE(joined.max_edge_gap, joined.sewing_tolerance);
+  EXPECT_EQ(joined.faces, sewn.faces);
+  EXPECT_EQ(joined.shells, sewn.shells);
+  EXPECT_EQ(joined.solids, sewn.solids);
+  EXPECT_EQ(joined.free_edges, sewn.free_edges);
+  EXPECT_EQ(joined.smooth_edges, sewn.smooth_edges);
+  EXPECT_EQ(joined.sharp_edges, sewn.sharp_edges);
+  EXPECT_EQ(joined.g1_edges, sewn.g1_edges);
+  EXPECT_NEAR(joined.max_smooth_angle_deg, sewn.max_smooth_angle_deg, 1e-6);
+  EXPECT_NEAR(joined.volume, sewn.volume, 1e-12 * std::abs(sewn.volume));
+  for (const TopAbs_ShapeEnum kind : {TopAbs_FACE, TopAbs_EDGE, TopAbs_VERTEX})
+    EXPECT_EQ(count(by_adjacency, kind), count(by_sewing, kind)) << kind;
+}
+
 struct RoundTripCase {
   std::string name;
   FacePacking packing;
@@ -219,6 +245,9 @@ TEST(CadSemiSharp, RefinedSurfaceKeepsTheInputsFacesAndNames) {
   const Exact e{refined, Surface(refined, Method::mdc, built.kgons),
                 bezier_patches(refined, built.surface)};
   expect_faces_match_surface(shape, e, FacePacking::quads, &control);
+  cad::CadOptions options;
+  options.control = &control;
+  expect_joined_as_sewn(e.mesh, e.surface, e.set, options);
 }
 
 TEST(CadContinuity, KnotsAndEdgesAsTheSurfaceIsSmooth) {
@@ -291,6 +320,74 @@ TEST(CadWrite, FullDiskLeavesNothing) {
   });
   EXPECT_NE(message.find("disk full"), std::string::npos) << message;
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"full.step"});
+}
+
+struct JoinCase {
+  std::string path;
+  FacePacking packing;
+};
+
+class JoinedAsSewn : public ::testing::TestWithParam<JoinCase> {};
+
+TEST_P(JoinedAsSewn, Meshes) {
+  const JoinCase& c = GetParam();
+  const Exact e = exact_of(c.path);
+  cad::CadOptions options;
+  options.packing = c.packing;
+  expect_joined_as_sewn(e.mesh, e.surface, e.set, options);
+}
+
+// Closed and open, quads, triangles and other K-gons (whose corner faces meet a packed quad on
+// half its side), creases, two solids.
+INSTANTIATE_TEST_SUITE_P(
+    Meshes, JoinedAsSewn,
+    ::testing::Values(
+        JoinCase{test::example_path("cube.obj"), FacePacking::quads},
+        JoinCase{test::example_path("cube.obj"), FacePacking::corners},
+        JoinCase{test::example_path("cube_hole.obj"), FacePacking::quads},
+        JoinCase{test::example_path("cube_hole.obj"), FacePacking::corners},
+        JoinCase{test::example_path("open_box.obj"), FacePacking::quads},
+        JoinCase{test::example_path("open_box.obj"), FacePacking::corners},
+        JoinCase{test::opensubdiv_shape("catmark_nonquads.obj"), FacePacking::quads},
+        JoinCase{test::opensubdiv_shape("catmark_smoothtris0.obj"), FacePacking::quads},
+        JoinCase{test::opensubdiv_shape("catmark_edgecorner.obj"), FacePacking::quads},
+        JoinCase{test::opensubdiv_shape("catmark_cubes_infsharp.obj"), FacePacking::quads}),
+    [](const auto& info) {
+      const std::string name = std::filesystem::path(info.param.path).stem().string();
+      return name + (info.param.packing == FacePacking::quads ? "_packed" : "_corners");
+    });
+
+TEST(CadJoin, OneEdgePerSharedSideOneVertexPerJoint) {
+  // A closed quad mesh packed: the mesh's own faces, edges and vertices. Per corner: each mesh
+  // edge in two halves and a spoke per corner (4E edges), a vertex at every vertex, edge middle
+  // and face centre.
+  const Exact e = exact_of(test::example_path("cube.obj"));
+  const int v = e.mesh.num_vertices(), edges = e.mesh.num_edges(), f = e.mesh.num_faces();
+  for (const FacePacking packing : {FacePacking::quads, FacePacking::corners}) {
+    cad::CadOptions options;
+    options.packing = packing;
+    cad::CadReport r;
+    const TopoDS_Shape shape = cad::make_shape(e.mesh, e.surface, e.set, options, &r);
+    EXPECT_FALSE(r.sewn);
+    EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    EXPECT_EQ(r.solids, 1);
+    const bool packed = packing == FacePacking::quads;
+    EXPECT_EQ(count(shape, TopAbs_FACE), packed ? f : 2 * edges);
+    EXPECT_EQ(count(shape, TopAbs_EDGE), packed ? edges : 4 * edges);
+    EXPECT_EQ(count(shape, TopAbs_VERTEX), packed ? v : v + edges + f);
+  }
+}
+
+TEST(CadJoin, RepairedNonManifoldMeshesAreSewn) {
+  // Repair leaves vertices at one position where the input was not manifold; only a geometric
+  // search joins the pieces there.
+  const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape("catmark_nonman_verts.obj"));
+  const Surface surface(mesh, Method::mdc);
+  const PatchSet set = bezier_patches(mesh, surface);
+  cad::CadReport r;
+  const TopoDS_Shape shape = cad::make_shape(mesh, surface, set, {}, &r);
+  EXPECT_TRUE(r.sewn);
+  EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
 }
 
 /// Every OpenSubdiv shape in tests/data (the non-manifold ones repaired on reading) exports STEP,

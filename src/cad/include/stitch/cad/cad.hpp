@@ -1,7 +1,7 @@
 // The exact surface as CAD geometry through OpenCASCADE: B-spline faces (tess/bspline_faces.hpp)
 // with the lowest knot multiplicities the surface's continuity allows, named after their control
-// elements, sewn into shells, a solid where a shell is closed; written and read as STEP (AP214)
-// or IGES.
+// elements, joined into shells along the sides the mesh says they share, a solid where a shell
+// is closed; written and read as STEP (AP214) or IGES.
 #pragma once
 
 #include <array>
@@ -48,9 +48,12 @@ struct CadOptions {
   /// Faces whose normals differ by at most this along a shared edge that is not a sharp edge of
   /// the mesh meet tangentially: the edge is marked G1 (OpenCASCADE's regularity).
   double angle_tolerance_deg = 0.1;
-  /// Largest gap closed by sewing, in model units; 0 chooses it from the patch set: twice the
-  /// measured deviation of its inexact cells, at least 1e-7 of the model size.
+  /// Largest gap closed by sewing (where the faces are sewn, CadReport::sewn), in model units;
+  /// 0 chooses it from the patch set: twice the measured deviation of its inexact cells, at
+  /// least 1e-7 of the model size.
   double sewing_tolerance = 0;
+  /// Sew the faces even where the mesh tells which sides meet (to compare the two).
+  bool force_sewing = false;
   /// Called with the fraction (0..1) done, from one thread at a time.
   std::function<void(double)> progress;
   /// The mesh to pack and name the faces after when the surface's mesh refines it (not owned).
@@ -59,10 +62,16 @@ struct CadOptions {
 
 struct CadReport {
   int faces = 0;       ///< B-spline faces
-  int shells = 0;      ///< shells after sewing
+  int shells = 0;      ///< shells the faces were joined into
   int solids = 0;      ///< closed shells made into solids
   int free_edges = 0;  ///< edges on one face only (0 for a closed input)
+  /// Whether OpenCASCADE's sewing joined the faces (where the mesh cannot tell which sides meet:
+  /// vertices at one position, as repair leaves them) rather than the mesh's adjacency.
+  bool sewn = false;
   double sewing_tolerance = 0;
+  /// The largest distance between two faces measured along their shared edges when joined by
+  /// adjacency (the edges' tolerance; knot removal and round-off); 0 when sewn.
+  double max_edge_gap = 0;
   std::int64_t poles = 0;  ///< of all faces, after the knots were lowered
   /// Interior knots of all faces by the multiplicity they kept: [0] removed (the pieces on both
   /// sides are one polynomial), [1] C2, [2] C1, [3] C0 across the knot.
@@ -74,7 +83,7 @@ struct CadReport {
   double volume = 0;  ///< of the solids, in model units cubed (0 when no shell is closed)
 };
 
-/// The faces of the patch set as one shape, sewn, each closed shell a solid oriented outward
+/// The faces of the patch set as one shape, joined, each closed shell a solid oriented outward
 /// (a compound when there is more than one part). Throws stitch::Error for a face OCCT refuses.
 TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const PatchSet& patches,
                         const CadOptions& options = {}, CadReport* report = nullptr);
@@ -101,7 +110,7 @@ CadReport write_cad(const std::string& path, CadFormat format, const HalfedgeMes
 
 /// The faces of a shape triangulated by OCCT's BRepMesh (chordal deflection `deflection`, in the
 /// shape's units), with the nodes that faces share along their edges welded into one vertex:
-/// a closed sewn shell gives a closed mesh. For viewing re-read files.
+/// a closed shell gives a closed mesh. For viewing re-read files.
 PolygonSoup triangulate(const TopoDS_Shape& shape, double deflection);
 
 /// OCCT's readers and writers print statistics to stdout through its process-wide default
