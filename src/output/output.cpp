@@ -242,14 +242,14 @@ std::span<const OutputFormat> output_formats() {
        .kind = K::exact,
        .needs_cad = true,
        .memory = M::cad_model,
-       .help = "B-spline faces named after their control faces, sewn into shells and solids",
+       .help = "B-spline faces named after their control faces, joined into shells and solids",
        .write = write_step},
       {.name = "IGES 5.3",
        .extensions = {".igs", ".iges"},
        .kind = K::exact,
        .needs_cad = true,
        .memory = M::cad_model,
-       .help = "B-spline faces named after their control faces, sewn into shells and solids",
+       .help = "B-spline faces named after their control faces, joined into shells and solids",
        .write = write_iges},
   };
   return kFormats;
