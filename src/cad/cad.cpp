@@ -728,9 +728,9 @@ CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const
     e.poles += static_cast<std::int64_t>(face.u_knots.size() + 2) * (face.v_knots.size() + 2);
   }
   e.bytes = static_cast<std::int64_t>(e.poles * pole_bytes + e.faces * face_bytes);
-  // Measured with bench_export (catmark_smoothtris0, a 1k-triangle torus): OCCT's faces, sewing
-  // and writer take about 8 microseconds a pole on one core of the 2-core VM.
-  e.seconds = 8e-6 * static_cast<double>(e.poles);
+  // Measured with bench_export (catmark_smoothtris0, a 1k-triangle torus): OCCT's faces, shell
+  // and writer take about 6 microseconds a pole on one core of the 2-core VM.
+  e.seconds = 6e-6 * static_cast<double>(e.poles);
   return e;
 }
 
