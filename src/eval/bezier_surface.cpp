@@ -34,7 +34,7 @@ BezierSurface build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& 
 
 void build_bezier_surface(const HalfedgeMesh& mesh, const KgonOptions& options,
                           BezierSurface& into) {
-  into.kgons = build_kgons(mesh, options);
+  build_kgons(mesh, options, into.kgons);
   build_control_nets(mesh, into.kgons, into.nets);
   into.corners = mesh.patch_corners();
 }

@@ -14,6 +14,7 @@
 #include "kgon/sharp.hpp"
 #include "stitch/kgon/kgon_topology.hpp"
 #include "stitch/mesh/polygon.hpp"
+#include "support/fresh_storage.hpp"
 
 namespace stitch {
 
@@ -93,7 +94,7 @@ namespace {
 
 /// Least-squares plane normal through the centroid, oriented like the loop's winding. The
 /// winding decides the side because the smallest-eigenvalue eigenvector has no sign of its own.
-Vec3 plane_normal(const std::vector<Vec3>& pts, const Vec3& centroid, const Vec3& orientation) {
+Vec3 plane_normal(std::span<const Vec3> pts, const Vec3& centroid, const Vec3& orientation) {
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (const Vec3& p : pts) cov += (p - centroid) * (p - centroid).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
@@ -105,7 +106,7 @@ Vec3 plane_normal(const std::vector<Vec3>& pts, const Vec3& centroid, const Vec3
 /// Least-squares fit by an affinely regular polygon: the projection of the loop onto its first
 /// harmonic (k = +-1), which is what repeated midpoint polygons converge to up to scale. It is
 /// convex whatever the input's shape (a star polygon becomes convex).
-void regularize(std::vector<Vec3>& pts, const Vec3& c) {
+void regularize(std::span<Vec3> pts, const Vec3& c) {
   const int k = static_cast<int>(pts.size());
   if (k < 3) return;
   Vec3 a = Vec3::Zero(), b = Vec3::Zero();
@@ -235,8 +236,8 @@ bool prepare_edge(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& se
 }
 
 /// The positions of the corners of face f (prepared), in loop order.
-auto corner_positions(const HalfedgeMesh& m, const std::vector<Corner>& loop) {
-  return [&m, &loop](int i) -> const Vec3& { return m.position(m.origin(loop[i])); };
+auto corner_positions(const HalfedgeMesh& m, std::span<const Corner> loop) {
+  return [&m, loop](int i) -> const Vec3& { return m.position(m.origin(loop[i])); };
 }
 
 /// Face f's Newell normal.
@@ -340,7 +341,8 @@ void place_edge(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,
   Kgon& g = set.edge[e.idx];
   std::optional<Kgon> bridge;
   if (bridge_openings)
-    bridge = detail::place_bridge_kgon(m, m.face(h), *bridge_openings, g.corners, set.corner_point);
+    bridge = detail::place_bridge_kgon(m, m.face(h), *bridge_openings, g.corners.to_vector(),
+                                       set.corner_point);
   if (bridge)
     g = std::move(*bridge);
   else
@@ -370,27 +372,46 @@ bool KgonTopology::fits(const HalfedgeMesh& mesh, const KgonOptions& options) co
          static_cast<int>(skeleton.edge.size()) == mesh.edge_capacity();
 }
 
-KgonTopology prepare_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
-  KgonTopology t;
+namespace {
+
+/// Sets v to n copies of value. Storage that is large enough is kept (a surface rebuilt into the
+/// same set); new storage is advised into huge pages before anything touches it, as the other
+/// arrays a pass fills from end to end (src/support/fresh_storage.hpp).
+template <class T>
+void assign_array(std::vector<T>& v, size_t n, const T& value) {
+  if (v.capacity() < n) {
+    std::vector<T>().swap(v);
+    v.reserve(n);
+    detail::prefer_huge_pages(v.data(), n * sizeof(T));
+  }
+  v.assign(n, value);
+}
+
+/// prepare_kgons into t, whose skeleton's storage is reused where it is large enough.
+void prepare_into(const HalfedgeMesh& m, const KgonOptions& options, KgonTopology& t) {
   t.construction = options.construction;
   t.boundary = options.boundary;
   t.sharp_from = options.sharp_from;
   KgonSet& set = t.skeleton;
-  const int nh = m.halfedge_capacity();
-  set.corner_point.assign(nh, Vec3::Zero());
-  set.in_face.assign(nh, -1);
-  set.in_vertex.assign(nh, -1);
-  set.in_next_edge.assign(nh, -1);
-  set.in_prev_edge.assign(nh, -1);
-  set.vertex_k.assign(nh, 4);
+  const auto nh = static_cast<size_t>(m.halfedge_capacity());
+  assign_array(set.corner_point, nh, Vec3(Vec3::Zero()));
+  assign_array(set.in_face, nh, -1);
+  assign_array(set.in_vertex, nh, -1);
+  assign_array(set.in_next_edge, nh, -1);
+  assign_array(set.in_prev_edge, nh, -1);
+  assign_array(set.vertex_k, nh, 4);
   if (m.has_features()) {
-    set.sharp_curve.assign(nh, {Vec3::Zero(), Vec3::Zero()});
-    set.cone.assign(nh, 0);
-    set.sharp_edge.assign(m.edge_capacity(), 0);
+    assign_array(set.sharp_curve, nh, std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()});
+    assign_array(set.cone, nh, std::uint8_t{0});
+    assign_array(set.sharp_edge, static_cast<size_t>(m.edge_capacity()), std::uint8_t{0});
+  } else {
+    set.sharp_curve.clear();
+    set.cone.clear();
+    set.sharp_edge.clear();
   }
-  set.face.resize(m.face_capacity());
-  set.vertex.resize(m.vertex_capacity());
-  set.edge.resize(m.edge_capacity());
+  assign_array(set.face, static_cast<size_t>(m.face_capacity()), Kgon{});
+  assign_array(set.vertex, static_cast<size_t>(m.vertex_capacity()), Kgon{});
+  assign_array(set.edge, static_cast<size_t>(m.edge_capacity()), Kgon{});
   t.faces = m.faces().to_vector();
   t.vertices = m.vertices().to_vector();
   t.edges = m.edges().to_vector();
@@ -417,6 +438,13 @@ KgonTopology prepare_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
   for (Face f : t.faces) largest = std::max(largest, set.face[f.idx].corners.size());
   for (Vertex v : t.vertices) largest = std::max(largest, set.vertex[v.idx].corners.size());
   cover(t.doo_sabin, static_cast<int>(largest));
+}
+
+}  // namespace
+
+KgonTopology prepare_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
+  KgonTopology t;
+  prepare_into(m, options, t);
   return t;
 }
 
@@ -448,10 +476,17 @@ void place_kgons(const HalfedgeMesh& m, const KgonOptions& options, const KgonTo
 }
 
 KgonSet build_kgons(const HalfedgeMesh& m, const KgonOptions& options) {
-  KgonTopology t = prepare_kgons(m, options);
-  KgonSet set = std::move(t.skeleton);  // place_kgons reads the rest of t, not the skeleton
-  place_kgons(m, options, t, set);
+  KgonSet set;
+  build_kgons(m, options, set);
   return set;
+}
+
+void build_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& into) {
+  KgonTopology t;
+  t.skeleton = std::move(into);
+  prepare_into(m, options, t);
+  into = std::move(t.skeleton);  // place_kgons reads the rest of t, not the skeleton
+  place_kgons(m, options, t, into);
 }
 
 void update_kgons(const HalfedgeMesh& m, const KgonOptions& options, KgonSet& set,

@@ -12,7 +12,7 @@
 
 namespace stitch {
 
-void LineSet::add_loop(const std::vector<Vec3>& loop, const Colour& c) {
+void LineSet::add_loop(std::span<const Vec3> loop, const Colour& c) {
   for (size_t i = 0; i < loop.size(); ++i) add(loop[i], loop[(i + 1) % loop.size()], c);
 }
 
@@ -113,7 +113,7 @@ namespace {
 
 /// The closed loop through `loop` without its zero-length segments (points a hole side or a
 /// sector leaves at the centroid).
-void add_distinct_loop(LineSet& lines, const std::vector<Vec3>& loop, const Colour& c) {
+void add_distinct_loop(LineSet& lines, std::span<const Vec3> loop, const Colour& c) {
   for (size_t i = 0; i < loop.size(); ++i) {
     const Vec3& a = loop[i];
     const Vec3& b = loop[(i + 1) % loop.size()];

@@ -13,6 +13,7 @@
 
 #include "stitch/choices.hpp"
 #include "stitch/kgon/kgon_control.hpp"
+#include "stitch/kgon/small_vector.hpp"
 #include "stitch/mesh/halfedge_mesh.hpp"
 
 namespace stitch {
@@ -68,8 +69,10 @@ VertexKind vertex_kind(const HalfedgeMesh& mesh, Vertex v, const KgonOptions& op
 bool is_sharp(const HalfedgeMesh& mesh, Edge e, const KgonOptions& options);
 
 struct Kgon {
-  std::vector<Vec3> points;  ///< in the order of `corners`
-  std::vector<Corner> corners;
+  /// Up to this many points and corners are held in the K-gon itself (no heap block).
+  static constexpr int kInPlace = 4;
+  SmallVector<Vec3, kInPlace> points;  ///< in the order of `corners`
+  SmallVector<Corner, kInPlace> corners;
   Vec3 centroid = Vec3::Zero();
   /// Unit normal of the least-squares plane, oriented like the surface. A 4-gon is not
   /// flattened and no plane is fitted: its normal is its Newell normal, normalized (the same
@@ -124,6 +127,9 @@ std::vector<Vec3> doo_sabin_shrink(const std::vector<Vec3>& loop);
 
 /// Builds every K-gon of a valid mesh. Default options reproduce method.md section 2 exactly.
 KgonSet build_kgons(const HalfedgeMesh& mesh, const KgonOptions& options = {});
+/// The same into `into`, whatever it held, keeping its storage where it is large enough (a
+/// surface rebuilt for a moved mesh allocates nothing new for its K-gons).
+void build_kgons(const HalfedgeMesh& mesh, const KgonOptions& options, KgonSet& into);
 
 /// Elements of a mesh whose K-gons are meant: each list sorted, without repeats.
 struct KgonElements {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <span>
 #include <vector>
 
 #include "stitch/mesh/halfedge_mesh.hpp"
@@ -10,7 +11,7 @@
 namespace stitch {
 
 /// Mean of the points.
-inline Vec3 centroid(const std::vector<Vec3>& pts) {
+inline Vec3 centroid(std::span<const Vec3> pts) {
   Vec3 c = Vec3::Zero();
   for (const Vec3& p : pts) c += p;
   return c / static_cast<double>(pts.size());
@@ -18,7 +19,7 @@ inline Vec3 centroid(const std::vector<Vec3>& pts) {
 
 /// Newell's normal: twice the area vector, oriented by the loop's winding, meaningful for
 /// non-planar loops too. Not normalized (zero for a degenerate loop).
-inline Vec3 newell_normal(const std::vector<Vec3>& pts) {
+inline Vec3 newell_normal(std::span<const Vec3> pts) {
   Vec3 n = Vec3::Zero();
   const size_t k = pts.size();
   for (size_t i = 0; i < k; ++i) n += pts[i].cross(pts[(i + 1) % k]);

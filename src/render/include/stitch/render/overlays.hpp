@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "stitch/eval/surface.hpp"
@@ -38,7 +39,7 @@ struct LineSet {
     return static_cast<size_t>(i) < widths.size() ? widths[static_cast<size_t>(i)] : 1.0f;
   }
   /// Adds the closed polygon through `loop`.
-  void add_loop(const std::vector<Vec3>& loop, const Colour& c);
+  void add_loop(std::span<const Vec3> loop, const Colour& c);
   [[nodiscard]] int num_segments() const { return static_cast<int>(colours.size()); }
 };
 
