@@ -144,7 +144,7 @@ void run_info(const InfoArgs& a) {
       a.method, set->tolerance, set->angle_tolerance_deg, set->patches.size(), set->num_exact(),
       set->patches.size() - set->num_exact(), set->depth);
   fmt::print(
-      "  largest deviation from exact evaluation  {:.3g} ({:.3g} of the model size {:.6g}), "
+      "  largest deviation from the surface  {:.3g} ({:.3g} of the model size {:.6g}), "
       "normal {:.3g} degrees\n",
       set->max_position_deviation,
       set->model_size > 0 ? set->max_position_deviation / set->model_size : 0.0, set->model_size,
@@ -173,7 +173,8 @@ void add_info_command(CLI::App& app) {
                   "surface, relative to the model size")
       ->capture_default_str();
   cmd->add_option("--angle-tolerance", args->patch_set.angle_tolerance_deg,
-                  "with --patches: largest normal deviation of those cells, degrees")
+                  "with --patches: largest angle between faces along a shared edge, degrees "
+                  "(those cells' normals within half of it of the surface's)")
       ->capture_default_str();
   add_kgon_options(cmd, args->kgon, &args->in);
   cmd->callback([args] { run_info(*args); });

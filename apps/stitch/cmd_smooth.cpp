@@ -263,7 +263,8 @@ void add_smooth_command(CLI::App& app) {
                   "from the control nets' flatness (try 1e-3)",
                   PatchSetOptions{}.tolerance));
   cmd->add_option("--angle-tolerance", args->spec.patches.angle_tolerance_deg,
-                  fmt::format("exact outputs: largest normal deviation of those cells, degrees "
+                  fmt::format("exact outputs: largest angle between faces along a shared edge, "
+                              "degrees: those cells' normals within half of it of the surface's "
                               "(> 0, default {:g})",
                               PatchSetOptions{}.angle_tolerance_deg));
   cmd->add_option("--faces", args->packing, "STEP and IGES: " + choice_help(face_packing_table()))

@@ -88,11 +88,12 @@ PatchSet patch_set(const HalfedgeMesh& mesh, const Surface& surface, const Outpu
       "{} Bezier patches ({} exact, {} innermost cells at extraordinary points), depth {}",
       set.patches.size(), set.num_exact(), set.patches.size() - set.num_exact(), set.depth));
   spec.note(fmt::format(
-      "largest deviation from exact evaluation: {:.3g} ({:.3g} of the model size {:.6g}; asked "
-      "{:.3g}), normal {:.3g} degrees (asked {:.3g})",
+      "largest deviation from the surface: {:.3g} ({:.3g} of the model size {:.6g}; asked "
+      "{:.3g}), normal {:.3g} degrees (asked {:.3g}: half the {:.3g} between faces)",
       set.max_position_deviation,
       set.model_size > 0 ? set.max_position_deviation / set.model_size : 0.0, set.model_size,
-      set.tolerance, set.max_normal_deviation_deg, set.angle_tolerance_deg));
+      set.tolerance, set.max_normal_deviation_deg, set.angle_tolerance_deg / 2,
+      set.angle_tolerance_deg));
   if (!set.points_without_normal.empty()) {
     constexpr size_t kNamed = 8;
     std::string where;

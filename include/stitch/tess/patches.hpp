@@ -47,7 +47,8 @@ struct PatchSetOptions {
   /// Largest distance of an inexact cell from the surface, relative to the model size (the
   /// diagonal of the bounding box of the control points). > 0.
   double tolerance = 1e-6;
-  /// Largest angle between an inexact cell's normal and the surface's, in degrees. > 0.
+  /// Largest angle between the normals of two faces meeting along an edge, in degrees (> 0):
+  /// an inexact cell's normal is within half of it of the surface's at the nearest point.
   double angle_tolerance_deg = 0.1;
   /// Depth at which a tolerance that cannot be reached is refused.
   int max_depth = 30;
@@ -59,8 +60,9 @@ struct PatchSet {
   int depth = 0;          ///< the most splits any extraordinary point needed (0: none needed)
   double model_size = 0;  ///< bounding box diagonal of the control points
   double tolerance = 0, angle_tolerance_deg = 0;  ///< as asked
-  /// Largest deviation of an inexact cell from Surface::evaluate, measured on a grid of samples
-  /// in every innermost cell: distance in model units and normal angle in degrees.
+  /// Largest deviation of an inexact cell from the surface, measured on a grid of samples in
+  /// every innermost cell: the distance to the surface in model units (nearest_on_surface) and
+  /// the angle to the surface's normal there in degrees.
   double max_position_deviation = 0, max_normal_deviation_deg = 0;
   /// Where the normal tolerance was not applied, one entry per point, sorted by kind and index.
   std::vector<PointWithoutNormal> points_without_normal;
@@ -90,5 +92,11 @@ SurfacePoint evaluate_cell(const BezierPatch& patch, double u, double v);
 
 /// (u, v) of the root patch for (s, t) of the cell.
 std::array<double, 2> cell_to_root(const BezierPatch& patch, double s, double t);
+
+/// The surface's point nearest to `point`, sought from (u, v) of corner c's patch
+/// (nearest_point on Surface::evaluate): the distance to it is the distance a patch set's
+/// tolerance bounds, up to the search's accuracy (it never underestimates).
+SurfacePoint nearest_on_surface(const Surface& surface, Corner c, const Vec3& point, double u,
+                                double v);
 
 }  // namespace stitch
