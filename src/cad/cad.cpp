@@ -220,13 +220,19 @@ std::optional<gp_Dir> normal_on(const TopoDS_Edge& edge, const TopoDS_Face& face
 }
 
 /// The largest angle between the normals of the two faces along a shared edge, in degrees,
-/// sampled inside the edge (its ends may be points without a normal).
+/// sampled inside the edge (its ends may be points without a normal): evenly, and towards each
+/// end at 2^-k of its length, where the innermost cells of a hierarchy meet.
 double largest_angle_deg(const TopoDS_Edge& edge, const TopoDS_Face& a, const TopoDS_Face& b) {
-  constexpr int kSamples = 9;
+  constexpr int kEven = 9, kTowardsEnds = 24;
+  std::vector<double> at;
+  for (int k = 0; k < kEven; ++k) at.push_back((k + 0.5) / kEven);
+  for (int k = 4; k < kTowardsEnds; ++k) {
+    at.push_back(std::ldexp(1.0, -k));
+    at.push_back(1 - std::ldexp(1.0, -k));
+  }
   double worst = 0;
-  for (int k = 0; k < kSamples; ++k) {
-    const double at = (k + 0.5) / kSamples;
-    const auto na = normal_on(edge, a, at), nb = normal_on(edge, b, at);
+  for (const double x : at) {
+    const auto na = normal_on(edge, a, x), nb = normal_on(edge, b, x);
     if (na && nb) worst = std::max(worst, na->Angle(*nb) * 180.0 / std::numbers::pi);
   }
   return worst;
@@ -608,9 +614,12 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   const TopoDS_Shape& sewn = joined->shape;
   const TopTools_MapOfShape& sewn_sharp = joined->sharp;
 
-  // Regularity: OCCT marks the edges where the faces meet tangentially; the report measures
-  // the angle along every shared edge that is not on a sharp mesh edge.
-  BRepLib::EncodeRegularity(sewn, options.angle_tolerance_deg * std::numbers::pi / 180.0);
+  // Regularity: an edge where the faces' normals meet within the angle tolerance, measured
+  // along it and towards its ends, is G1. (OCCT's EncodeRegularity asks for parallel
+  // cross-boundary derivatives, which faces meeting tangentially near an extraordinary point
+  // need not have.)
+  const double g1_angle_deg = options.angle_tolerance_deg;
+  BRep_Builder builder;
   TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
   TopExp::MapShapesAndAncestors(sewn, TopAbs_EDGE, TopAbs_FACE, edge_faces);
   for (int i = 1; i <= edge_faces.Extent(); ++i) {
@@ -624,12 +633,15 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
     const TopoDS_Face& a = TopoDS::Face(around.First());
     const TopoDS_Face& b = TopoDS::Face(around.Last());
     ++r.smooth_edges;
-    r.max_smooth_angle_deg = std::max(r.max_smooth_angle_deg, largest_angle_deg(edge, a, b));
-    if (BRep_Tool::Continuity(edge, a, b) >= GeomAbs_G1) ++r.g1_edges;
+    const double angle = largest_angle_deg(edge, a, b);
+    r.max_smooth_angle_deg = std::max(r.max_smooth_angle_deg, angle);
+    if (angle <= g1_angle_deg) {
+      builder.Continuity(edge, a, b, GeomAbs_G1);
+      ++r.g1_edges;
+    }
   }
 
   // Every closed shell becomes a solid, oriented so that its faces point out of it.
-  BRep_Builder builder;
   TopoDS_Compound compound;
   builder.MakeCompound(compound);
   std::vector<TopoDS_Shell> shells;
@@ -725,7 +737,19 @@ CadEstimate estimate_cad(const HalfedgeMesh& mesh, const Surface& surface, const
   CadEstimate e;
   for (const BsplineFace& face : bspline_face_layout(mesh, surface, patches, packing, control)) {
     ++e.faces;
-    e.poles += static_cast<std::int64_t>(face.u_knots.size() + 2) * (face.v_knots.size() + 2);
+    // Simple knots inside a root patch's hierarchy (C2), double ones where root patches meet
+    // (C1): the quadrants' sides inside the face.
+    const auto poles_along = [&](const std::vector<double>& knots, int axis) {
+      std::int64_t n = static_cast<std::int64_t>(knots.size()) + 2;
+      for (const double k : knots)
+        if (k > 0 && k < 1 &&
+            std::any_of(face.quadrants.begin(), face.quadrants.end(), [&](const FaceQuadrant& q) {
+              return q.origin[axis] == k || q.origin[axis] + q.size == k;
+            }))
+          ++n;
+      return n;
+    };
+    e.poles += poles_along(face.u_knots, 0) * poles_along(face.v_knots, 1);
   }
   e.bytes = static_cast<std::int64_t>(e.poles * pole_bytes + e.faces * face_bytes);
   // Measured with bench_export (catmark_smoothtris0, a 1k-triangle torus): OCCT's faces, shell

@@ -104,8 +104,9 @@ void expect_faces_match_surface(const TopoDS_Shape& shape, const Exact& e, FaceP
       for (double t : {0.002, 0.13, 0.5, 0.62, 0.9}) {
         const gp_Pnt q = adaptor.Value(s, t);
         const RootPoint p = root_point(written[best], s, t);
-        const SurfacePoint exact = e.surface.evaluate(p.corner, p.u, p.v);
-        worst = std::max(worst, (exact.position - Vec3(q.X(), q.Y(), q.Z())).norm());
+        const Vec3 point(q.X(), q.Y(), q.Z());
+        const SurfacePoint nearest = nearest_on_surface(e.surface, p.corner, point, p.u, p.v);
+        worst = std::max(worst, (nearest.position - point).norm());
       }
     // The face's normal (with its orientation in the solid) agrees with the surface's, which
     // points out of a closed input oriented outward.
@@ -248,6 +249,35 @@ TEST(CadSemiSharp, RefinedSurfaceKeepsTheInputsFacesAndNames) {
   cad::CadOptions options;
   options.control = &control;
   expect_joined_as_sewn(e.mesh, e.surface, e.set, options);
+
+  // The estimate told before writing counts the refined patches' double knots where they meet.
+  cad::CadReport r;
+  cad::make_shape(e.mesh, e.surface, e.set, options, &r);
+  EXPECT_EQ(cad::estimate_cad(e.mesh, e.surface, e.set, FacePacking::quads, cad::CadFormat::step,
+                              &control)
+                .poles,
+            r.poles);
+}
+
+TEST(CadEstimate, PolesAsWrittenWhereKnotsAreAsSmoothAsTheirPlace) {
+  // Simple knots inside a root's hierarchy, double ones between root patches: the estimate is
+  // the count written wherever knot removal finds the surface that smooth, as on these shapes.
+  for (const std::string& path :
+       {test::example_path("cube.obj"), test::example_path("cube_hole.obj"),
+        test::opensubdiv_shape("catmark_smoothtris0.obj")}) {
+    SCOPED_TRACE(path);
+    const Exact e = exact_of(path);
+    for (const FacePacking packing : {FacePacking::quads, FacePacking::corners}) {
+      cad::CadOptions options;
+      options.packing = packing;
+      cad::CadReport r;
+      cad::make_shape(e.mesh, e.surface, e.set, options, &r);
+      const cad::CadEstimate estimate =
+          cad::estimate_cad(e.mesh, e.surface, e.set, packing, cad::CadFormat::step);
+      EXPECT_EQ(estimate.faces, r.faces);
+      EXPECT_EQ(estimate.poles, r.poles);
+    }
+  }
 }
 
 TEST(CadContinuity, KnotsAndEdgesAsTheSurfaceIsSmooth) {
@@ -263,8 +293,11 @@ TEST(CadContinuity, KnotsAndEdgesAsTheSurfaceIsSmooth) {
   EXPECT_EQ(r.smooth_edges, 12);
   EXPECT_EQ(r.g1_edges, 12);
   EXPECT_EQ(r.sharp_edges, 0);
-  EXPECT_LE(r.max_smooth_angle_deg, 1e-6);
-  EXPECT_EQ(r.poles, std::int64_t(6) * 30 * 30);
+  EXPECT_LE(r.max_smooth_angle_deg, e.set.angle_tolerance_deg);
+  // Along each direction of a face, each half refined towards its vertex to the depth: 4 end
+  // poles, one per simple knot and two at 1/2.
+  const std::int64_t side = 2 * e.set.depth + 6;
+  EXPECT_EQ(r.poles, 6 * side * side);
 }
 
 TEST(CadContinuity, InfinitelySharpCreasesAreTheSharpEdges) {
