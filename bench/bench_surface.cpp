@@ -329,12 +329,10 @@ void BM_vs_bfr(benchmark::State& state) {
   BfrTessellation bfr_kept;
   double checksum = 0.0;
   // Untimed first runs: for output 2 they fill the arrays the timed runs reuse; for all outputs
-  // they grow the process's heap for the K-gons and other small allocations, which the first call
-  // of a process faults in page by page (about 15 000 faults at 100k faces, as many seconds as
-  // the rest on this VM), so that one-iteration runs do not time the process's start. Output 2
-  // runs twice on both sides: glibc's malloc raises its mmap and trim thresholds only when the
-  // first large blocks are freed, so the first rerun still gives memory back and faults it in
-  // again (21 k faults in the quad torus's first rebuild, none from the next on).
+  // they grow the process's heap for its small allocations and fault in its first memory, so
+  // that one-iteration runs do not time the process's start. Output 2 runs twice on both sides:
+  // glibc's malloc raises its mmap and trim thresholds only when the first large blocks are
+  // freed, so the first rerun still gives memory back and faults it in again.
   run_pipeline(mesh, output, kept);
   if (output == 2) {
     run_pipeline(mesh, output, kept);
