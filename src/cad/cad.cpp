@@ -205,19 +205,31 @@ int side_of(const TopoDS_Edge& edge, const TopoDS_Face& face) {
   return -1;
 }
 
-/// The outward normal of a face at a point of an edge's parameter curve on it.
-std::optional<gp_Dir> normal_on(const TopoDS_Edge& edge, const TopoDS_Face& face, double at) {
-  double first = 0, last = 0;
-  const Handle(Geom2d_Curve) curve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-  if (curve.IsNull()) return std::nullopt;
-  const gp_Pnt2d uv = curve->Value(first + at * (last - first));
-  BRepAdaptor_Surface adaptor(face, false);
-  BRepLProp_SLProps props(adaptor, uv.X(), uv.Y(), 1, Precision::Confusion());
-  if (!props.IsNormalDefined()) return std::nullopt;
-  gp_Dir n = props.Normal();
-  if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
-  return n;
-}
+/// A face along one of its edges: the outward normal at a point of the edge's parameter curve
+/// on it (the curve and the surface's adaptor made once for all the points).
+class NormalsAlong {
+ public:
+  NormalsAlong(const TopoDS_Edge& edge, const TopoDS_Face& face)
+      : curve_(BRep_Tool::CurveOnSurface(edge, face, first_, last_)),
+        adaptor_(face, false),
+        reversed_(face.Orientation() == TopAbs_REVERSED) {}
+
+  [[nodiscard]] std::optional<gp_Dir> at(double x) const {
+    if (curve_.IsNull()) return std::nullopt;
+    const gp_Pnt2d uv = curve_->Value(first_ + x * (last_ - first_));
+    BRepLProp_SLProps props(adaptor_, uv.X(), uv.Y(), 1, Precision::Confusion());
+    if (!props.IsNormalDefined()) return std::nullopt;
+    gp_Dir n = props.Normal();
+    if (reversed_) n.Reverse();
+    return n;
+  }
+
+ private:
+  double first_ = 0, last_ = 0;
+  Handle(Geom2d_Curve) curve_;
+  BRepAdaptor_Surface adaptor_;
+  bool reversed_;
+};
 
 /// The largest angle between the normals of the two faces along a shared edge, in degrees,
 /// sampled inside the edge (its ends may be points without a normal): evenly, and towards each
@@ -230,9 +242,10 @@ double largest_angle_deg(const TopoDS_Edge& edge, const TopoDS_Face& a, const To
     at.push_back(std::ldexp(1.0, -k));
     at.push_back(1 - std::ldexp(1.0, -k));
   }
+  const NormalsAlong along_a(edge, a), along_b(edge, b);
   double worst = 0;
   for (const double x : at) {
-    const auto na = normal_on(edge, a, x), nb = normal_on(edge, b, x);
+    const auto na = along_a.at(x), nb = along_b.at(x);
     if (na && nb) worst = std::max(worst, na->Angle(*nb) * 180.0 / std::numbers::pi);
   }
   return worst;
