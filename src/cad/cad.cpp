@@ -235,16 +235,19 @@ class NormalsAlong {
 /// sampled inside the edge (its ends may be points without a normal): evenly, and towards each
 /// end at 2^-k of its length, where the innermost cells of a hierarchy meet.
 double largest_angle_deg(const TopoDS_Edge& edge, const TopoDS_Face& a, const TopoDS_Face& b) {
-  constexpr int kEven = 9, kTowardsEnds = 24;
-  std::vector<double> at;
-  for (int k = 0; k < kEven; ++k) at.push_back((k + 0.5) / kEven);
-  for (int k = 4; k < kTowardsEnds; ++k) {
-    at.push_back(std::ldexp(1.0, -k));
-    at.push_back(1 - std::ldexp(1.0, -k));
-  }
+  static const std::vector<double> kAt = [] {
+    constexpr int kEven = 9, kTowardsEnds = 24;
+    std::vector<double> at;
+    for (int k = 0; k < kEven; ++k) at.push_back((k + 0.5) / kEven);
+    for (int k = 4; k < kTowardsEnds; ++k) {
+      at.push_back(std::ldexp(1.0, -k));
+      at.push_back(1 - std::ldexp(1.0, -k));
+    }
+    return at;
+  }();
   const NormalsAlong along_a(edge, a), along_b(edge, b);
   double worst = 0;
-  for (const double x : at) {
+  for (const double x : kAt) {
     const auto na = along_a.at(x), nb = along_b.at(x);
     if (na && nb) worst = std::max(worst, na->Angle(*nb) * 180.0 / std::numbers::pi);
   }
@@ -256,6 +259,16 @@ struct NamedShape {
   TopoDS_Shape shape;
   std::vector<std::pair<TopoDS_Face, std::string>> names;
 };
+
+/// The one part, or a compound of the parts.
+TopoDS_Shape one_shape(const std::vector<TopoDS_Shape>& parts) {
+  if (parts.size() == 1) return parts.front();
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
+  return compound;
+}
 
 /// The faces joined along their shared edges: a shell, or a compound of shells and faces on
 /// their own; what became of each B-spline face; the shared edges on sharp mesh edges.
@@ -539,14 +552,7 @@ std::optional<Joined> join_by_adjacency(const HalfedgeMesh& mesh,
     shell.Closed(BRep_Tool::IsClosed(shell));
     parts.push_back(shell);
   }
-  if (parts.size() == 1) {
-    joined.shape = parts.front();
-  } else {
-    TopoDS_Compound compound;
-    builder.MakeCompound(compound);
-    for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
-    joined.shape = compound;
-  }
+  joined.shape = one_shape(parts);
   joined.faces.assign(occt_faces.begin(), occt_faces.end());
   return joined;
 }
@@ -655,8 +661,6 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   }
 
   // Every closed shell becomes a solid, oriented so that its faces point out of it.
-  TopoDS_Compound compound;
-  builder.MakeCompound(compound);
   std::vector<TopoDS_Shell> shells;
   for (TopExp_Explorer it(sewn, TopAbs_SHELL); it.More(); it.Next())
     shells.push_back(TopoDS::Shell(it.Current()));
@@ -692,12 +696,7 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   for (size_t i = 0; i < faces.size(); ++i)
     for (TopExp_Explorer f(joined->faces[i], TopAbs_FACE); f.More(); f.Next())
       named.names.emplace_back(TopoDS::Face(f.Current()), face_name(named_after, faces[i]));
-  if (parts.size() == 1) {
-    named.shape = parts.front();
-  } else {
-    for (const TopoDS_Shape& part : parts) builder.Add(compound, part);
-    named.shape = compound;
-  }
+  named.shape = one_shape(parts);
   progress(0.8, 0.8, 1.0);
   return named;
 }

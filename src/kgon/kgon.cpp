@@ -374,19 +374,6 @@ bool KgonTopology::fits(const HalfedgeMesh& mesh, const KgonOptions& options) co
 
 namespace {
 
-/// Sets v to n copies of value. Storage that is large enough is kept (a surface rebuilt into the
-/// same set); new storage is advised into huge pages before anything touches it, as the other
-/// arrays a pass fills from end to end (src/support/fresh_storage.hpp).
-template <class T>
-void assign_array(std::vector<T>& v, size_t n, const T& value) {
-  if (v.capacity() < n) {
-    std::vector<T>().swap(v);
-    v.reserve(n);
-    detail::prefer_huge_pages(v.data(), n * sizeof(T));
-  }
-  v.assign(n, value);
-}
-
 /// prepare_kgons into t, whose skeleton's storage is reused where it is large enough.
 void prepare_into(const HalfedgeMesh& m, const KgonOptions& options, KgonTopology& t) {
   t.construction = options.construction;
@@ -394,24 +381,26 @@ void prepare_into(const HalfedgeMesh& m, const KgonOptions& options, KgonTopolog
   t.sharp_from = options.sharp_from;
   KgonSet& set = t.skeleton;
   const auto nh = static_cast<size_t>(m.halfedge_capacity());
-  assign_array(set.corner_point, nh, Vec3(Vec3::Zero()));
-  assign_array(set.in_face, nh, -1);
-  assign_array(set.in_vertex, nh, -1);
-  assign_array(set.in_next_edge, nh, -1);
-  assign_array(set.in_prev_edge, nh, -1);
-  assign_array(set.vertex_k, nh, 4);
+  detail::assign_for_overwrite(set.corner_point, nh, Vec3(Vec3::Zero()));
+  detail::assign_for_overwrite(set.in_face, nh, -1);
+  detail::assign_for_overwrite(set.in_vertex, nh, -1);
+  detail::assign_for_overwrite(set.in_next_edge, nh, -1);
+  detail::assign_for_overwrite(set.in_prev_edge, nh, -1);
+  detail::assign_for_overwrite(set.vertex_k, nh, 4);
   if (m.has_features()) {
-    assign_array(set.sharp_curve, nh, std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()});
-    assign_array(set.cone, nh, std::uint8_t{0});
-    assign_array(set.sharp_edge, static_cast<size_t>(m.edge_capacity()), std::uint8_t{0});
+    detail::assign_for_overwrite(set.sharp_curve, nh,
+                                 std::array<Vec3, 2>{Vec3::Zero(), Vec3::Zero()});
+    detail::assign_for_overwrite(set.cone, nh, std::uint8_t{0});
+    detail::assign_for_overwrite(set.sharp_edge, static_cast<size_t>(m.edge_capacity()),
+                                 std::uint8_t{0});
   } else {
     set.sharp_curve.clear();
     set.cone.clear();
     set.sharp_edge.clear();
   }
-  assign_array(set.face, static_cast<size_t>(m.face_capacity()), Kgon{});
-  assign_array(set.vertex, static_cast<size_t>(m.vertex_capacity()), Kgon{});
-  assign_array(set.edge, static_cast<size_t>(m.edge_capacity()), Kgon{});
+  detail::assign_for_overwrite(set.face, static_cast<size_t>(m.face_capacity()), Kgon{});
+  detail::assign_for_overwrite(set.vertex, static_cast<size_t>(m.vertex_capacity()), Kgon{});
+  detail::assign_for_overwrite(set.edge, static_cast<size_t>(m.edge_capacity()), Kgon{});
   t.faces = m.faces().to_vector();
   t.vertices = m.vertices().to_vector();
   t.edges = m.edges().to_vector();

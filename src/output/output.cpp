@@ -92,7 +92,7 @@ PatchSet patch_set(const HalfedgeMesh& mesh, const Surface& surface, const Outpu
       "{:.3g}), normal {:.3g} degrees (asked {:.3g}: half the {:.3g} between faces)",
       set.max_position_deviation,
       set.model_size > 0 ? set.max_position_deviation / set.model_size : 0.0, set.model_size,
-      set.tolerance, set.max_normal_deviation_deg, set.angle_tolerance_deg / 2,
+      set.tolerance, set.max_normal_deviation_deg, set.cell_angle_tolerance_deg(),
       set.angle_tolerance_deg));
   if (!set.points_without_normal.empty()) {
     constexpr size_t kNamed = 8;

@@ -17,18 +17,31 @@ namespace stitch::detail {
 /// advice: the memory behaves the same either way.
 bool prefer_huge_pages(const void* begin, std::size_t bytes) noexcept;
 
-/// Sizes v to n elements for a pass that overwrites all of them. Storage that is large enough is
-/// kept (no allocation, no fresh pages to fault in: tessellating again into the same arrays).
+/// Room for n elements in v for a pass that overwrites all of them. Storage that is large enough
+/// is kept (no allocation, no fresh pages to fault in: tessellating again into the same arrays).
 /// Storage that is too small is dropped first, so that growing copies nothing that is about to
 /// be overwritten, and the new storage is advised into huge pages before anything touches it.
 template <class T>
-void size_for_overwrite(std::vector<T>& v, std::size_t n) {
+void reserve_for_overwrite(std::vector<T>& v, std::size_t n) {
   if (v.capacity() < n) {
     std::vector<T>().swap(v);
     v.reserve(n);
     prefer_huge_pages(v.data(), n * sizeof(T));
   }
+}
+
+/// v sized to n elements, in storage as reserve_for_overwrite gives it.
+template <class T>
+void size_for_overwrite(std::vector<T>& v, std::size_t n) {
+  reserve_for_overwrite(v, n);
   v.resize(n);
+}
+
+/// v set to n copies of value, in storage as reserve_for_overwrite gives it.
+template <class T>
+void assign_for_overwrite(std::vector<T>& v, std::size_t n, const T& value) {
+  reserve_for_overwrite(v, n);
+  v.assign(n, value);
 }
 
 }  // namespace stitch::detail

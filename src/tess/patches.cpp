@@ -346,10 +346,9 @@ PatchSet bezier_patches(const HalfedgeMesh& mesh, const Surface& surface,
   if (!frontier.empty()) {
     const std::vector<std::uint8_t> no_normal = corners_without_normal(
         mesh, surface, options.angle_tolerance_deg, set.points_without_normal);
-    // Each cell's normals within half the angle tolerance of the surface's, so that two faces
-    // meet along their shared edges within the tolerance; both within the samples' share.
+    // Both tolerances within the samples' share.
     CellTolerances tolerances{kSampledShare * options.tolerance * set.model_size,
-                              kSampledShare * options.angle_tolerance_deg / 2,
+                              kSampledShare * set.cell_angle_tolerance_deg(),
                               options.angle_tolerance_deg};
     // Progress by points settled: each extraordinary corner of a root is one chain of cells.
     size_t chains = 0, settled = 0;

@@ -68,6 +68,9 @@ struct PatchSet {
   std::vector<PointWithoutNormal> points_without_normal;
 
   [[nodiscard]] int num_exact() const;
+  /// The bound on an inexact cell's normal: half the angle tolerance, so that two faces meet
+  /// within it along the edges they share.
+  [[nodiscard]] double cell_angle_tolerance_deg() const { return angle_tolerance_deg / 2; }
 };
 
 /// The patches of the surface: for mdc, every extraordinary root split towards each of its
