@@ -7,13 +7,16 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <numbers>
 #include <stdexcept>
 #include <tuple>
 
+#include "eval/descent.hpp"
 #include "stitch/error.hpp"
 #include "stitch/eval/bezier_surface.hpp"
+#include "stitch/eval/de_casteljau.hpp"
 #include "stitch/topology/operation.hpp"
 
 namespace stitch {
@@ -140,14 +143,30 @@ std::vector<CellDeviation> measure(const Surface& surface, const std::vector<Cel
       return (x == 1 ? (1 << cell.level) - 1 : static_cast<int>(std::ldexp(x, cell.level))) ==
              index;
     };
+    // The splits below the cell, made once for all its samples: most of them descend through
+    // the same nets towards its extraordinary corners (evaluate_relative's splits, so its bits).
+    // A deque keeps the children where descend reads them while more are added.
+    std::deque<std::pair<std::uint64_t, std::array<ControlNet, 4>>> splits;
+    std::array<std::array<ControlNet, 4>, 2> deep;  // below the paths' 30 levels: not kept
+    int latest = 0;
+    const auto split_at = [&](const ControlNet& net,
+                              std::uint64_t path) -> const std::array<ControlNet, 4>& {
+      if (path == 0) {
+        latest ^= 1;
+        return deep[latest] = split(net, SplitRule::modified);
+      }
+      for (const auto& [at, children] : splits)
+        if (at == path) return children;
+      return splits.emplace_back(path, split(net, SplitRule::modified)).second;
+    };
     // The surface at the root's (u, v), its derivatives in (u, v).
     const auto exact_at = [&](double u, double v) {
       const bool root_corner = (u == 0 || u == 1) && (v == 0 || v == 1);
       if (root_corner || !in_cell(u, cell.cell_u) || !in_cell(v, cell.cell_v))
         return surface.evaluate(corner, u, v);
-      SurfacePoint p = evaluate_relative(cell.net, origin, std::ldexp(u, cell.level) - cell.cell_u,
-                                         std::ldexp(v, cell.level) - cell.cell_v,
-                                         kMaxEvaluationLevel - cell.level);
+      SurfacePoint p = detail::descend(cell.net, origin, std::ldexp(u, cell.level) - cell.cell_u,
+                                       std::ldexp(v, cell.level) - cell.cell_v,
+                                       kMaxEvaluationLevel - cell.level, split_at);
       p.du /= scale;
       p.dv /= scale;
       return p;

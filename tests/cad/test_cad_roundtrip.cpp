@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 // stitch's headers before OCCT's (OCCT defines a macro Handle, see cad.hpp)
 // clang-format off
@@ -19,6 +21,7 @@
 #include "stitch/mesh/validate.hpp"
 #include "stitch/tess/bezier_json.hpp"
 #include "stitch/tess/tessellate.hpp"
+#include "step_print.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
 // clang-format on
@@ -29,11 +32,13 @@
 #include <BRepLProp_SLProps.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <STEPControl_Writer.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <XSControl_WorkSession.hxx>
 
 namespace stitch {
 namespace {
@@ -353,6 +358,29 @@ TEST(CadWrite, FullDiskLeavesNothing) {
   });
   EXPECT_NE(message.find("disk full"), std::string::npos) << message;
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"full.step"});
+}
+
+// The STEP file printed in ranges on all cores is OpenCASCADE's own, byte for byte: one range
+// (the cube) and about 20 (catmark_smoothtris0, 80k entities).
+TEST(CadWrite, StepPrintedInRangesIsOpenCascadesFile) {
+  TempFolder folder;
+  for (const std::string& path :
+       {test::example_path("cube.obj"), test::opensubdiv_shape("catmark_smoothtris0.obj")}) {
+    SCOPED_TRACE(path);
+    const Exact e = exact_of(path);
+    STEPControl_Writer writer;
+    ASSERT_EQ(writer.Transfer(cad::make_shape(e.mesh, e.surface, e.set), STEPControl_AsIs),
+              IFSelect_RetDone);
+    ASSERT_EQ(writer.Write(folder.file("occt.step").c_str()), IFSelect_RetDone);
+    std::ostringstream printed;
+    ASSERT_TRUE(cad::print_step(
+        writer.Model(), Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol()), printed));
+    std::ifstream in(folder.file("occt.step"), std::ios::binary);
+    const std::string occt{std::istreambuf_iterator<char>(in), {}};
+    EXPECT_GT(writer.Model()->NbEntities(),
+              path.find("smoothtris") != std::string::npos ? 60000 : 0);
+    EXPECT_EQ(printed.str(), occt);
+  }
 }
 
 struct JoinCase {
