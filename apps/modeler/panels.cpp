@@ -125,8 +125,12 @@ void operators_section(App& app, Widgets& ui) {
   ImGui::SetNextItemWidth(ems(12.0f));
   ImGui::BeginDisabled(!edge);
   float sharpness = edge ? static_cast<float>(m.sharpness(e)) : 0.0f;
-  if (ui.slider("##edge sharpness", &sharpness, 0.0f, static_cast<float>(infinitely_sharp)) && edge)
-    run_line(app, fmt::format("sharpness {:g}", sharpness));
+  if (ui.slider("##edge sharpness", &sharpness, 0.0f, static_cast<float>(infinitely_sharp)) &&
+      edge) {
+    // One undo step per drag: the drag's first change makes it, the others extend it.
+    const bool drag = ImGui::IsItemActive() && !ImGui::IsItemActivated();
+    run_line(app, fmt::format("sharpness {:g}{}", sharpness, drag ? " drag" : ""));
+  }
   ImGui::EndDisabled();
 
   row_label("Vertex:");

@@ -37,6 +37,19 @@ auto& controls_of(Options& o, KgonKind kind) {
   return kind == KgonKind::face ? o.face : kind == KgonKind::vertex ? o.vertex : o.edge;
 }
 
+/// Whether `next`, recorded right after `last`, touched exactly the elements `last` touched and
+/// neither added nor deleted any: then `last`'s start and `next`'s end are one edit.
+bool in_place_on_the_same_elements(const MeshDelta& last, const MeshDelta& next) {
+  const auto same_counts = [](const MeshDelta::End& a, const MeshDelta::End& b) {
+    return a.vertex_capacity == b.vertex_capacity && a.edge_capacity == b.edge_capacity &&
+           a.face_capacity == b.face_capacity && a.deleted_vertices == b.deleted_vertices &&
+           a.deleted_edges == b.deleted_edges && a.deleted_faces == b.deleted_faces;
+  };
+  return last.vertices == next.vertices && last.edges == next.edges && last.faces == next.faces &&
+         same_counts(last.before, last.after) && same_counts(next.before, next.after) &&
+         same_counts(last.after, next.before);
+}
+
 }  // namespace
 
 void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renumbered) {
@@ -57,7 +70,7 @@ void prune_kgon_controls(const HalfedgeMesh& mesh, KgonOptions& kgons, bool renu
 Document::Document(HalfedgeMesh mesh, KgonOptions kgons)
     : state_{std::move(mesh), std::move(kgons)} {}
 
-Change Document::apply_operation(std::string_view line, OperationReport* report) {
+Change Document::apply_operation(std::string_view line, OperationReport* report, bool merge) {
   const std::optional<Operation> op = parse_operation(state_.mesh, line);
   if (!op) {
     if (report) *report = {};
@@ -65,14 +78,15 @@ Change Document::apply_operation(std::string_view line, OperationReport* report)
   }
   std::string label(line);
   label.erase(0, label.find_first_not_of(" \t"));
-  return apply_operation(*op, std::move(label), report);
+  return apply_operation(*op, std::move(label), report, merge);
 }
 
-Change Document::apply_operation(const Operation& op, OperationReport* report) {
-  return apply_operation(op, format_operation(state_.mesh, op), report);
+Change Document::apply_operation(const Operation& op, OperationReport* report, bool merge) {
+  return apply_operation(op, format_operation(state_.mesh, op), report, merge);
 }
 
-Change Document::apply_operation(const Operation& op, std::string label, OperationReport* report) {
+Change Document::apply_operation(const Operation& op, std::string label, OperationReport* report,
+                                 bool merge) {
   if (operation_info(op).renumbers) {  // a new mesh, numbered afresh: keep both whole
     DocumentState before = state_;
     const OperationReport r = stitch::apply_operation(state_.mesh, op, Census::counts_only);
@@ -96,6 +110,17 @@ Change Document::apply_operation(const Operation& op, std::string label, Operati
   KgonOptions kgons_before = state_.kgons;
   prune_kgon_controls(state_.mesh, state_.kgons, false);
   Change c = topology_change(delta);
+  TopologyEdit* last = nullptr;
+  if (merge && !done_.empty() && undone_.empty())
+    last = std::get_if<TopologyEdit>(&done_.back().edit);
+  if (last && in_place_on_the_same_elements(last->mesh, delta)) {
+    // The last step's start, this edit's end.
+    last->mesh.after = std::move(delta.after);
+    last->kgons_after = state_.kgons;
+    done_.back().label = std::move(label);
+    done_.back().revision_after = revision_ = next_revision_++;
+    return c;
+  }
   record(Command{std::move(label),
                  TopologyEdit{std::move(delta), std::move(kgons_before), state_.kgons}});
   return c;

@@ -101,9 +101,9 @@ constexpr double kMostZoomSteps = 100;
 /// An operation line: applied as one undo step, its report (and what the edit's tubes and the
 /// health check found) printed.
 ScriptResult run_operation(Session& s, std::string_view raw, const ScriptLine& line,
-                           const ScriptHooks& hooks) {
+                           const ScriptHooks& hooks, bool merge = false) {
   OperationReport report;
-  const Change c = s.document.apply_operation(raw, &report);
+  const Change c = s.document.apply_operation(raw, &report, merge);
   s.apply_edit(c);
   std::string_view text = line.text;
   text = text.substr(0, text.find_last_not_of(" \t\r") + 1);
@@ -177,9 +177,13 @@ Pick pick_of(const HalfedgeMesh& mesh, const std::vector<std::string>& w) {
 
 /// The selected edge's crease or vertex's corner sharpness, as the operation line `crease` or
 /// `corner` sets it (checked, one undo step, kept in the mesh and its project). A tag edit
-/// renumbers nothing: the selection stays, so that a field can set it again and again.
+/// renumbers nothing: the selection stays, so that a field can set it again and again; `drag`
+/// extends the last step when it set the same element's sharpness (a slider's drag).
 ScriptResult run_sharpness(Session& s, const ScriptLine& line, const ScriptHooks& hooks) {
-  expect(line.words, 1, 1, "sharpness S");
+  expect(line.words, 1, 2, "sharpness S [drag]");
+  if (line.words.size() == 3 && line.words[2] != "drag")
+    throw UsageError(
+        fmt::format("usage: sharpness S [drag], not '{}'", limits::quoted(line.words[2])));
   const std::optional<Pick> kept = s.selection;
   if (!kept || (kept->kind != PickKind::edge && kept->kind != PickKind::vertex))
     throw UsageError("sharpness: select an edge (its crease) or a vertex (its corner) first");
@@ -189,7 +193,8 @@ ScriptResult run_sharpness(Session& s, const ScriptLine& line, const ScriptHooks
           ? Operation(ops::SetCrease{HalfedgeMesh::edge(Halfedge(kept->index)), value})
           : Operation(ops::SetCorner{Vertex(kept->index), value});
   const std::string op_line = format_operation(s.document.mesh(), op);
-  ScriptResult result = run_operation(s, op_line, read_script_line(op_line), hooks);
+  ScriptResult result =
+      run_operation(s, op_line, read_script_line(op_line), hooks, line.words.size() == 3);
   s.selection = kept;
   return result;
 }
@@ -526,9 +531,10 @@ std::span<const ScriptCommand> script_command_table() {
        run_move_vertex},
       {"select", "select vertex V | edge V W[@F] | face F | corner V@F[#k] | none",
        "the selection, numbered as in operation lines", run_select},
-      {"sharpness", "sharpness S",
+      {"sharpness", "sharpness S [drag]",
        fmt::format("the selected edge's crease or vertex's corner sharpness: 0 smooth, {:g} or "
-                   "more infinitely sharp, between semi-sharp (the operation crease or corner)",
+                   "more infinitely sharp, between semi-sharp (the operation crease or corner); "
+                   "drag: part of the last undo step if that set this element's sharpness",
                    infinitely_sharp),
        run_sharpness},
       {"kgon",

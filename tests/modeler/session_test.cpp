@@ -358,5 +358,32 @@ TEST(ModelerSession, SharpnessSetsTheSelectedEdgesCreaseLiveAndIsSaved) {
   EXPECT_EQ(tagged(read_mesh(dir.file("p.obj"))), 1);
 }
 
+// A slider's drag is one undo step: `sharpness S drag` extends the last step when that set the
+// same element's sharpness, and makes a step of its own otherwise.
+TEST(ModelerSession, SharpnessDragIsOneUndoStep) {
+  Session s(make_cube());
+  ASSERT_FALSE(run_script(s, {"select edge 1 2", "sharpness 0.5"}, {}));
+  const Edge e = HalfedgeMesh::edge(Halfedge(s.selection->index));
+  const size_t steps = s.document.undo_labels().size();
+  ASSERT_FALSE(run_script(s, {"sharpness 1 drag", "sharpness 2.5 drag"}, {}));
+  EXPECT_EQ(s.document.undo_labels().size(), steps);
+  EXPECT_EQ(s.document.mesh().sharpness(e), 2.5);
+  expect_live_surface_is_built_surface(s);
+  EXPECT_TRUE(run_script(s, {"sharpness 2 dragged"}, {}));
+  // Another element's drag is a step of its own, and so is a drag after an undo.
+  ASSERT_FALSE(run_script(s, {"select vertex 1", "sharpness 3 drag"}, {}));
+  EXPECT_EQ(s.document.undo_labels().size(), steps + 1);
+  ASSERT_FALSE(run_script(s, {"undo", "select edge 1 2", "sharpness 4 drag"}, {}));
+  EXPECT_EQ(s.document.undo_labels().size(), steps + 1);
+  // One undo takes the drag back to where it started, one redo to where it ended.
+  ASSERT_FALSE(run_script(s, {"undo"}, {}));
+  EXPECT_EQ(s.document.mesh().sharpness(e), 2.5);
+  ASSERT_FALSE(run_script(s, {"undo"}, {}));
+  EXPECT_EQ(s.document.mesh().sharpness(e), 0.0);
+  ASSERT_FALSE(run_script(s, {"redo"}, {}));
+  EXPECT_EQ(s.document.mesh().sharpness(e), 2.5);
+  expect_live_surface_is_built_surface(s);
+}
+
 }  // namespace
 }  // namespace stitch::modeler

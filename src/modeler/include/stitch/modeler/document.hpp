@@ -51,10 +51,14 @@ class Document {
   /// Applies one `stitch edit --ops` line (apply_operation, which counts V, E, F and the Euler
   /// characteristic for the report but not genus and components, whose count would need a pass
   /// over the whole mesh). Throws stitch::Error with the document unchanged when the line is
-  /// refused. A blank line changes nothing and records nothing.
-  Change apply_operation(std::string_view line, OperationReport* report = nullptr);
+  /// refused. A blank line changes nothing and records nothing. With `merge`, an edit that
+  /// touches exactly the elements the last step touched, in place (a crease's or corner's
+  /// sharpness again), extends that step instead of making one (one undo step per slider drag).
+  Change apply_operation(std::string_view line, OperationReport* report = nullptr,
+                         bool merge = false);
   /// The same for a typed operation; its history label is format_operation's line.
-  Change apply_operation(const Operation& op, OperationReport* report = nullptr);
+  Change apply_operation(const Operation& op, OperationReport* report = nullptr,
+                         bool merge = false);
   /// Replaces the whole document (new primitive, opened file) as one undoable step.
   Change replace(DocumentState state, std::string label);
   /// Adds `other` (a valid mesh) as one more component, moved by `offset`, with its
@@ -97,7 +101,8 @@ class Document {
   void mark_modified() { saved_revision_ = -1; }
 
  private:
-  Change apply_operation(const Operation& op, std::string label, OperationReport* report);
+  Change apply_operation(const Operation& op, std::string label, OperationReport* report,
+                         bool merge);
   struct MoveVertices {
     std::vector<Vertex> vertices;
     std::vector<Vec3> before, after;
