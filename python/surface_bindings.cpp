@@ -278,14 +278,16 @@ py::dict export_surface(const SurfaceHandle& s, const std::string& path, const E
 /// mesh's UVs, as the writers evaluate them (the OBJ writer's `vt` lines, in the same order).
 py::array_t<double> texcoords(const SurfaceHandle& s, int resolution,
                               const std::optional<std::string>& uv, py::handle other) {
-  // Refined for semi-sharp tags, the mesh's own coordinates were refined with it; other ones
-  // would have to be refined again.
-  if (s.built->refined && !other.is_none())
-    throw py::value_error(
-        "texcoords: uvs= cannot be given for a surface refined for semi-sharp tags (its "
-        "patches are refined_mesh's corners); sharp_from= rounds the tags instead");
-  const std::shared_ptr<const CornerUvs> given =
+  std::shared_ptr<const CornerUvs> given =
       other.is_none() ? s.patch_uvs() : corner_uvs(*s.mesh, other);
+  if (s.built->refined && !other.is_none()) {
+    // Refined for semi-sharp tags, the patches are the refined mesh's corners: another map is
+    // refined as the mesh's own was (the same refinement again, which numbers the corners alike).
+    py::gil_scoped_release release;
+    given = std::make_shared<const CornerUvs>(
+        refine_semi_sharp(*s.mesh, s.built->refinement.levels, s.built->kgons.boundary, given.get())
+            .uvs);
+  }
   if (!given)
     throw py::value_error(
         "texcoords: the mesh has no texture coordinates (has_uvs); give them with uvs=");
@@ -509,7 +511,8 @@ void bind_surface(py::module_& m) {
       "The texture coordinates of the mesh's UVs (has_uvs) at every sample of "
       "tessellate(resolution, welded=False), an (n, 2) float64 array in the order of its "
       "vertices, as the writers evaluate them. uv: {} (default: the first). uvs: another UV "
-      "map of the same mesh instead, per corner as stitch.Mesh(uvs=...) takes it.",
+      "map of the same mesh instead, per corner as stitch.Mesh(uvs=...) takes it (refined as the "
+      "mesh's own where the surface is refined for semi-sharp tags).",
       choice_help(uv_mode_table()));
   py::class_<SurfaceHandle>(m, "Surface", "The smooth surface of a mesh: one patch per corner.")
       .def(py::init([](const MeshHandle& mesh, const std::string& method, double kgon_scale,

@@ -318,6 +318,31 @@ def torus_uvs_and_materials():
 
 
 @test
+def uv_maps_of_a_refined_surface():
+    """A semi-sharp crease refines the surface (the creased cube's 0.5: sharpness 2.5, three
+    levels); every UV map is refined with it, the second as the first."""
+    obj = creased_cube()
+    obj.name = "cube-uvs"
+    me = obj.data
+    corners = read(me.vertices, "co", len(me.vertices), width=3)[
+        read(me.loops, "vertex_index", len(me.loops), np.int32)
+    ]
+    for name, scale in (("Planar", 1), ("Doubled", 2)):
+        me.uv_layers.new(name=name).data.foreach_set("uv", scale * corners[:, :2].ravel())
+    me.uv_layers.active_index = 0
+    n = 2
+    target = smooth_with_operator(obj, method="mdc", resolution=n)
+    tme = target.data
+    assert len(tme.polygons) == 24 * 4**3 * n * n, len(tme.polygons)
+    assert [layer.name for layer in tme.uv_layers] == ["Planar", "Doubled"]
+    uv = read(tme.uv_layers["Planar"].data, "uv", len(tme.loops), width=2)
+    doubled = read(tme.uv_layers["Doubled"].data, "uv", len(tme.loops), width=2)
+    assert np.abs(uv).max() > 0.5
+    assert np.abs(doubled - 2 * uv).max() < 1e-5  # the smooth UV surface commutes with scaling
+    print(f"  refined cube: {len(tme.polygons)} quads, both UV maps refined with it")
+
+
+@test
 def exact_export():
     obj = bpy.data.objects["cube"]
     obj.stitch.method = "mdc"

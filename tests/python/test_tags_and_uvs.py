@@ -114,6 +114,22 @@ def test_texcoords_are_the_written_ones_per_sample(examples, tmp_path):
     assert np.array_equal(surface.texcoords(n, uvs=other), built)
 
 
+def test_another_uv_map_of_a_refined_surface_is_refined_with_it(examples):
+    """Refined for a semi-sharp crease, the patches are the refined mesh's corners: another UV
+    map is refined as the mesh's own, so it gives what a mesh built with that map gives."""
+    uvs = file_uvs(examples / "cube_uv.obj")
+    tags = {"creases": [[0, 1]], "crease_sharpness": [1.5]}
+    with pytest.warns(UserWarning, match="semi-sharp"):
+        mesh = stitch.Mesh(CUBE_VERTICES, CUBE_FACES, uvs=uvs, **tags)
+        other = stitch.Mesh(CUBE_VERTICES, CUBE_FACES, uvs=2 * uvs + 1, **tags)
+    surface = stitch.Surface(mesh)
+    assert len(surface.patches) == 24 * 16  # refined two levels
+    n = 3
+    assert np.array_equal(surface.texcoords(n, uvs=uvs), surface.texcoords(n))
+    assert np.array_equal(surface.texcoords(n, uvs=2 * uvs + 1), stitch.Surface(other).texcoords(n))
+    assert not np.array_equal(surface.texcoords(n, uvs=2 * uvs + 1), surface.texcoords(n))
+
+
 def test_texcoords_refusals():
     surface = stitch.Surface(stitch.primitive("cube"))
     with pytest.raises(ValueError, match="no texture coordinates"):
