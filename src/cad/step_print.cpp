@@ -13,7 +13,8 @@
 namespace stitch::cad {
 
 bool print_step(const Handle(StepData_StepModel) & model,
-                const Handle(StepData_Protocol) & protocol, std::ostream& out) {
+                const Handle(StepData_Protocol) & protocol, std::ostream& out,
+                const std::function<void(double)>& progress) {
   // StepData_StepWriter::SendModel's sections, the entities' part in ranges.
   out << "ISO-10303-21;\n";  // SendModel leaves it out of a header alone
   StepData_StepWriter header(model);
@@ -67,6 +68,7 @@ bool print_step(const Handle(StepData_StepModel) & model,
           tbb::make_filter<std::shared_ptr<Range>, void>(
               tbb::filter_mode::serial_in_order, [&](std::shared_ptr<Range> range) {
                 printed = printed && range->writer->Print(out);
+                if (progress) progress(double(range->end - 1) / entities);
               }));
   if (!printed) return false;
   StepData_StepWriter end(model);
