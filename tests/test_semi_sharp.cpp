@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@
 #include "stitch/eval/uv_surface.hpp"
 #include "stitch/mesh/build.hpp"
 #include "stitch/mesh/io.hpp"
+#include "stitch/topology/primitives.hpp"
 #include "stitch/topology/remesh.hpp"
 #include "temp_folder.hpp"
 #include "test_support.hpp"
@@ -390,6 +393,167 @@ TEST(SemiSharp, DISABLED_CreaseResponseAgainstTheUnrefinedUntaggedSurface) {
     EXPECT_GT(r.mdc, last_mdc) << "sharpness " << s;
     last_mdc = r.mdc;
   }
+}
+
+/// The mesh `tagged` refined once only in `region` (faces of `tagged`): the region's faces are
+/// `uniform`'s quads (its one level), every other face keeps its loop, with the edge point of
+/// each side it shares with the region as one more corner (a T-vertex), and its vertices keep
+/// their places unless a region face has them. `refined_corner` maps a corner of uniform.mesh
+/// inside the region to the local mesh's, `coarse_corner` a corner of `tagged` outside it.
+struct LocalRefinement {
+  HalfedgeMesh mesh;
+  std::map<int, Corner> refined_corner, coarse_corner;
+  int t_vertices = 0;   ///< edge points on the sides of coarse faces
+  int grown_faces = 0;  ///< coarse faces with T-vertices
+};
+LocalRefinement refine_locally(const HalfedgeMesh& tagged, const SemiSharpMesh& uniform,
+                               const std::set<int>& region) {
+  const HalfedgeMesh& fine = uniform.mesh;
+  const auto& quads = uniform.quad_corners.front();
+  PolygonSoup soup;
+  soup.positions = fine.positions();  // the input's vertices keep their numbers there
+  std::set<int> moved;
+  for (const int f : region)
+    for (Halfedge h : tagged.face_loop(Face(f))) moved.insert(tagged.origin(h).idx);
+  for (Vertex v : tagged.vertices())
+    if (!moved.count(v.idx)) soup.positions[v.idx] = tagged.position(v);
+  LocalRefinement local;
+  // Per soup corner: the uniform corner (>= 0), the coarse one (-2 - index), or none (-1).
+  std::vector<int> source;
+  for (Face f : tagged.faces()) {
+    std::vector<int> loop;
+    if (region.count(f.idx)) {
+      for (Halfedge h : tagged.face_loop(f)) {
+        loop.clear();
+        for (Corner c : quads[h.idx]) {
+          loop.push_back(fine.origin(c).idx);
+          source.push_back(c.idx);
+        }
+        soup.faces.push_back(loop);
+      }
+      continue;
+    }
+    for (Halfedge h : tagged.face_loop(f)) {
+      loop.push_back(tagged.origin(h).idx);
+      source.push_back(-2 - h.idx);
+      const Halfedge t = HalfedgeMesh::twin(h);
+      if (region.count(tagged.face(t).idx)) {  // the edge point, as the region's quad has it
+        loop.push_back(fine.origin(quads[t.idx][1]).idx);
+        source.push_back(-1);
+        ++local.t_vertices;
+      }
+    }
+    local.grown_faces += loop.size() > tagged.face_loop(f).size() ? 1 : 0;
+    soup.faces.push_back(loop);
+  }
+  BuildOptions options;
+  options.repair = false;
+  local.mesh = build_mesh(soup, options);
+  // build_mesh keeps the faces' order and each loop's start.
+  size_t k = 0;
+  for (Face f : local.mesh.faces())
+    for (Halfedge h : local.mesh.face_loop(f)) {
+      if (source[k] >= 0) local.refined_corner[source[k]] = h;
+      if (source[k] <= -2) local.coarse_corner[-2 - source[k]] = h;
+      ++k;
+    }
+  return local;
+}
+
+// Why the refinement is uniform (docs/method.md). Refined only around the tags, with T-vertices
+// where a refined face meets a coarse one (the K-gon construction takes them as more sides), the
+// surface stays C1 and G1, is the uniformly refined one inside the region and the coarse one
+// two rings outside it; but the band at the region's edge lies 0.042 off the uniform surface
+// (0.046 off the coarse one), 4 times as far as the tags move cc's surface (0.0107 on a torus
+// of size 7.1), and every T-vertex is one more extraordinary point. Measured on a 16 x 12 torus
+// with a chain of 4 edges at sharpness 1, the region two rings of faces around the chain.
+TEST(SemiSharp, LocalRefinementMovesItsEdgeMoreThanTheTagsMoveTheSurface) {
+  HalfedgeMesh coarse = make_primitive("torus", {16, 12});
+  HalfedgeMesh tagged = coarse;
+  std::set<int> chain_vertices;
+  Halfedge h = tagged.halfedge(Vertex(0));
+  for (int i = 0; i < 4; ++i) {
+    tagged.set_sharpness(HalfedgeMesh::edge(h), 1.0);
+    chain_vertices.insert(tagged.origin(h).idx);
+    chain_vertices.insert(tagged.target(h).idx);
+    h = tagged.next(HalfedgeMesh::twin(tagged.next(h)));  // straight on through valence 4
+  }
+  // The faces at the chain's vertices, then two rings more; `deep`: those whose every vertex
+  // only region faces share; `far`: faces two vertex rings away from the region.
+  const auto faces_at = [&](const std::set<int>& vertices) {
+    std::set<int> faces;
+    for (Face f : tagged.faces())
+      for (Halfedge k : tagged.face_loop(f))
+        if (vertices.count(tagged.origin(k).idx)) faces.insert(f.idx);
+    return faces;
+  };
+  const auto vertices_of = [&](const std::set<int>& faces) {
+    std::set<int> vertices;
+    for (const int f : faces)
+      for (Halfedge k : tagged.face_loop(Face(f))) vertices.insert(tagged.origin(k).idx);
+    return vertices;
+  };
+  std::set<int> region = faces_at(chain_vertices);
+  for (int ring = 0; ring < 2; ++ring) region = faces_at(vertices_of(region));
+  std::set<int> outside, near = faces_at(vertices_of(faces_at(vertices_of(region))));
+  for (Face f : tagged.faces())
+    if (!region.count(f.idx)) outside.insert(f.idx);
+  const std::set<int> edge_band = faces_at(vertices_of(outside));
+
+  const auto boundary = BoundaryInterpolation::edge_and_corner;
+  const SemiSharpMesh uniform = refine_semi_sharp(tagged, 1, boundary);
+  const LocalRefinement local = refine_locally(tagged, uniform, region);
+  const Surface on_coarse(coarse, Method::mdc), on_uniform(uniform.mesh, Method::mdc),
+      on_local(local.mesh, Method::mdc);
+  const ContinuityReport r = analyze_continuity(local.mesh, on_local);
+  EXPECT_LT(r.away_from_ev.max_deg, 1e-6);
+  EXPECT_LT(r.touching_ev.max_deg, 1e-6);
+  EXPECT_LT(r.ev_normal_spread_deg, 1e-6);
+  // The torus is regular: its extraordinary points are the T-vertices and the grown faces.
+  EXPECT_EQ(r.extraordinary_points, local.t_vertices + local.grown_faces);
+
+  const CatmullClarkSurface cc_tagged(tagged, boundary), cc_plain(coarse, boundary);
+  double cc_response = 0, inside = 0, at_edge = 0, far_out = 0, edge_from_coarse = 0;
+  for (Corner c : tagged.patch_corners())
+    for (double u : {0.1, 0.3, 0.5, 0.7, 0.9})
+      for (double v : {0.1, 0.3, 0.5, 0.7, 0.9}) {
+        cc_response = std::max(
+            cc_response,
+            (cc_tagged.evaluate(c, u, v).position - cc_plain.evaluate(c, u, v).position).norm());
+        const int f = tagged.face(c).idx;
+        if (region.count(f)) {
+          const SemiSharpMesh::Point p = uniform.point(c, u, v);
+          const double d =
+              (on_local.evaluate(local.refined_corner.at(p.corner.idx), p.u, p.v).position -
+               on_uniform.evaluate(p.corner, p.u, p.v).position)
+                  .norm();
+          double& worst = edge_band.count(f) ? at_edge : inside;
+          worst = std::max(worst, d);
+          if (edge_band.count(f))
+            edge_from_coarse = std::max(
+                edge_from_coarse,
+                (on_local.evaluate(local.refined_corner.at(p.corner.idx), p.u, p.v).position -
+                 on_coarse.evaluate(c, u, v).position)
+                    .norm());
+        } else if (!near.count(f)) {
+          far_out =
+              std::max(far_out, (on_local.evaluate(local.coarse_corner.at(c.idx), u, v).position -
+                                 on_coarse.evaluate(c, u, v).position)
+                                    .norm());
+        }
+      }
+  std::printf(
+      "local refinement: %zu of %d faces, %d T-vertices, %zu of %zu patches; against the uniform "
+      "surface inside %.1e, at the region's edge %.4f (%.4f from the coarse one); against the "
+      "coarse one two rings out %.1e; "
+      "cc response %.4f (size %.2f)\n",
+      region.size(), tagged.num_faces(), local.t_vertices, local.mesh.patch_corners().size(),
+      uniform.mesh.patch_corners().size(), inside, at_edge, edge_from_coarse, far_out, cc_response,
+      mesh_size(coarse));
+  // Round-off inside and far out; beyond the tags' own effect at the edge.
+  EXPECT_LT(inside, 1e-12 * mesh_size(coarse));
+  EXPECT_LT(far_out, 1e-12 * mesh_size(coarse));
+  EXPECT_GT(at_edge, 3 * cc_response);
 }
 
 // After the refinement the surface is the method's on a mesh without semi-sharp tags: C1 across
