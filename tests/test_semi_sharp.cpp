@@ -662,6 +662,16 @@ TEST(SemiSharp, CommandLineSaysTheLevelsAndPatches) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find(said), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("384 bicubic patches"), std::string::npos) << r.out;
+  // analyze builds asc's and mdc's surfaces (cc refines nothing itself): a note for each.
+  r = testing::stitch_cli(folder, "analyze '" + in + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const std::string method : {"asc", "mdc"}) {
+    const std::string note = said + " (method " + method + ")";
+    const size_t at = r.err.find(note);
+    EXPECT_NE(at, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(note, at + 1), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(r.err.find("(method cc)"), std::string::npos) << r.err;
   // --sharp-from rounds, as before: no refinement, one patch per corner of the input.
   r = testing::stitch_cli(folder, "smooth '" + in + "' -o r.ply --sharp-from 4 --resolution 1");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -168,9 +168,10 @@ BuiltSurface build_cli_surface(const KgonCliOptions& k, const HalfedgeMesh& mesh
   spec.uvs = uvs;
   BuiltSurface built = build_surface(mesh, spec);
   report_unfolded_tubes(built.tubes, built.mesh(mesh), where, quiet);
+  // The method named: analyze and compare build several surfaces.
   if (!quiet && built.refinement.levels > 0)
-    fmt::print(stderr, "stitch: note: {}: {}; --sharp-from rounds them instead\n", where,
-               built.refinement.summary());
+    fmt::print(stderr, "stitch: note: {}: {} (method {}); --sharp-from rounds them instead\n",
+               where, built.refinement.summary(), to_string(method));
   return built;
 }
 
