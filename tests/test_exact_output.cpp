@@ -379,10 +379,18 @@ TEST(CliExact, BadOutputRequestsExitTwoAndLeaveNothing) {
   }
   r = stitch_cli(folder, "smooth '" + in + "' -o p.json --angle-tolerance 0");
   EXPECT_EQ(r.status, 2);
-  // A folder that does not exist.
-  r = stitch_cli(folder, "smooth '" + in + "' -o missing/p.json");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  // A folder that does not exist, or a folder as the output: refused before any work (no
+  // patch set was measured).
+  for (const char* out : {"missing/p.json", "missing/p.step", "sub.step"}) {
+    if (std::string(out) == "sub.step") std::filesystem::create_directory(folder.file(out));
+    r = stitch_cli(folder, "smooth '" + in + "' -o " + out);
+    EXPECT_EQ(r.status, 2) << out;
+    EXPECT_NE(r.err.find(std::string(out) == "sub.step" ? "it is a folder" : "does not exist"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("largest deviation"), std::string::npos) << r.err;
+  }
+  std::filesystem::remove(folder.file("sub.step"));
   // A full disk: the output name leads to /dev/full, which takes no byte (ENOSPC).
   std::filesystem::create_symlink("/dev/full", folder.file("full.json"));
   std::filesystem::create_symlink("/dev/full", folder.file("full.glb"));

@@ -372,8 +372,7 @@ std::filesystem::path create_temporary(const std::filesystem::path& folder,
 
 }  // namespace
 
-void write_file_atomically_at(const std::string& path,
-                              const std::function<void(const std::string&)>& write) {
+void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
@@ -383,6 +382,15 @@ void write_file_atomically_at(const std::string& path,
         fmt::format("cannot write {}: folder '{}' does not exist", path, folder.string()));
   if (fs::is_directory(target, ec))
     throw OutputError(fmt::format("cannot write {}: it is a folder", path));
+}
+
+void write_file_atomically_at(const std::string& path,
+                              const std::function<void(const std::string&)>& write) {
+  namespace fs = std::filesystem;
+  check_output_path(path);
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
   // A device or pipe (/dev/stdout, /dev/full) must not be renamed over: the bytes are made in a
   // temporary file elsewhere and then sent to it, and a failed send is still an error.
   const auto status = fs::status(target, ec);

@@ -362,6 +362,7 @@ void check_output(const std::string& path, const OutputSpec& spec,
         path));
 #endif
   }
+  check_output_path(path);
 }
 
 OutputReport write_surface(const std::string& path, const HalfedgeMesh& mesh,

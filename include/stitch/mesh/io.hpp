@@ -45,6 +45,10 @@ void write_mesh(const std::string& path, const HalfedgeMesh& mesh);
 /// as it was, and the error is rethrown (as stitch::Error for I/O failures).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
+/// Throws OutputError where a file cannot be written at `path` at all: its folder does not
+/// exist, or it is a folder. The atomic writers check it first; front ends check it before a
+/// long computation, so that it fails at once.
+void check_output_path(const std::string& path);
 /// The same for writers that can only write to a path (OpenCASCADE's): `write` gets the
 /// temporary file's path. A target that exists and is not a regular file (a device such as
 /// /dev/stdout or /dev/full, a pipe) is not replaced: the bytes are written to it, and a write

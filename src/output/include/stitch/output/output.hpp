@@ -121,9 +121,10 @@ void set_tolerance(OutputSpec& spec, const OutputFormat& format, double toleranc
 /// for a file that would not carry it.
 bool writes_uvs(const OutputFormat& format, const OutputSpec& spec);
 
-/// Refuses, before any work, a request that would fail later: an unknown extension, an option
-/// the format does not take (unwelded, adaptive), a unit STEP and IGES do not know, an exact
-/// format in a build without OpenCASCADE. Throws UsageError or OutputError.
+/// Refuses, before any work, a request that would fail later: an unknown extension, a folder
+/// that does not exist or a path that is a folder, an option the format does not take
+/// (unwelded, adaptive), a unit STEP and IGES do not know, an exact format in a build without
+/// OpenCASCADE. Throws UsageError or OutputError.
 void check_output(const std::string& path, const OutputSpec& spec,
                   std::span<const OutputFormat> formats = output_formats());
 
