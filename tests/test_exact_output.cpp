@@ -381,13 +381,13 @@ TEST(CliExact, BadOutputRequestsExitTwoAndLeaveNothing) {
   EXPECT_EQ(r.status, 2);
   // A folder that does not exist, or a folder as the output: refused before any work (no
   // patch set was measured).
-  for (const char* out : {"missing/p.json", "missing/p.step", "sub.step"}) {
-    if (std::string(out) == "sub.step") std::filesystem::create_directory(folder.file(out));
+  std::filesystem::create_directory(folder.file("sub.step"));
+  for (const auto& [out, said] :
+       {std::pair{"missing/p.json", "does not exist"},
+        std::pair{"missing/p.step", "does not exist"}, std::pair{"sub.step", "it is a folder"}}) {
     r = stitch_cli(folder, "smooth '" + in + "' -o " + out);
     EXPECT_EQ(r.status, 2) << out;
-    EXPECT_NE(r.err.find(std::string(out) == "sub.step" ? "it is a folder" : "does not exist"),
-              std::string::npos)
-        << r.err;
+    EXPECT_NE(r.err.find(said), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("largest deviation"), std::string::npos) << r.err;
   }
   std::filesystem::remove(folder.file("sub.step"));

@@ -643,28 +643,30 @@ NamedShape build_shape(const HalfedgeMesh& mesh, const Surface& surface, const P
   BRep_Builder builder;
   TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
   TopExp::MapShapesAndAncestors(sewn, TopAbs_EDGE, TopAbs_FACE, edge_faces);
-  std::vector<int> smooth;  // indices into edge_faces
+  struct SmoothEdge {
+    TopoDS_Edge edge;
+    TopoDS_Face a, b;
+    double angle_deg = 0;
+  };
+  std::vector<SmoothEdge> smooth;
   for (int i = 1; i <= edge_faces.Extent(); ++i) {
-    if (edge_faces.FindFromIndex(i).Extent() != 2) continue;
+    const TopTools_ListOfShape& around = edge_faces.FindFromIndex(i);
+    if (around.Extent() != 2) continue;
     if (sewn_sharp.Contains(edge_faces.FindKey(i)))
       ++r.sharp_edges;
     else
-      smooth.push_back(i);
+      smooth.push_back({TopoDS::Edge(edge_faces.FindKey(i)), TopoDS::Face(around.First()),
+                        TopoDS::Face(around.Last())});
   }
   // The angles on all cores; the continuity is written into the shape on one.
-  std::vector<double> angles(smooth.size());
   tbb::parallel_for(size_t{0}, smooth.size(), [&](size_t k) {
-    const TopTools_ListOfShape& around = edge_faces.FindFromIndex(smooth[k]);
-    angles[k] = largest_angle_deg(TopoDS::Edge(edge_faces.FindKey(smooth[k])),
-                                  TopoDS::Face(around.First()), TopoDS::Face(around.Last()));
+    smooth[k].angle_deg = largest_angle_deg(smooth[k].edge, smooth[k].a, smooth[k].b);
   });
   r.smooth_edges = static_cast<int>(smooth.size());
-  for (size_t k = 0; k < smooth.size(); ++k) {
-    r.max_smooth_angle_deg = std::max(r.max_smooth_angle_deg, angles[k]);
-    if (angles[k] <= g1_angle_deg) {
-      const TopTools_ListOfShape& around = edge_faces.FindFromIndex(smooth[k]);
-      builder.Continuity(TopoDS::Edge(edge_faces.FindKey(smooth[k])), TopoDS::Face(around.First()),
-                         TopoDS::Face(around.Last()), GeomAbs_G1);
+  for (const SmoothEdge& e : smooth) {
+    r.max_smooth_angle_deg = std::max(r.max_smooth_angle_deg, e.angle_deg);
+    if (e.angle_deg <= g1_angle_deg) {
+      builder.Continuity(e.edge, e.a, e.b, GeomAbs_G1);
       ++r.g1_edges;
     }
   }
