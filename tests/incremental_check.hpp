@@ -14,11 +14,10 @@
 
 namespace stitch::test {
 
-/// The surface's live blocks equal tessellate(..., welded = false) of a fresh Surface, sample for
-/// sample and quad for quad, and its nets equal the fresh ones.
-inline void expect_same_as_rebuild(const IncrementalSurface& live, const HalfedgeMesh& mesh,
-                                   const KgonOptions& options) {
-  const Surface fresh(mesh, live.method(), options);
+/// The surface's live blocks equal tessellate(..., welded = false) of `fresh` (on `mesh`), sample
+/// for sample and quad for quad, and its nets equal the fresh ones.
+inline void expect_same_as_surface(const IncrementalSurface& live, const HalfedgeMesh& mesh,
+                                   const Surface& fresh) {
   TessellationOptions t;
   t.resolution = live.resolution();
   t.welded = false;
@@ -50,6 +49,12 @@ inline void expect_same_as_rebuild(const IncrementalSurface& live, const Halfedg
   }
   EXPECT_EQ(mismatches, 0);
   for (Corner c : corners) EXPECT_TRUE(live.nets()[c.idx] == fresh.bezier().nets[c.idx]);
+}
+
+/// The same against a fresh Surface(mesh, live.method(), options).
+inline void expect_same_as_rebuild(const IncrementalSurface& live, const HalfedgeMesh& mesh,
+                                   const KgonOptions& options) {
+  expect_same_as_surface(live, mesh, Surface(mesh, live.method(), options));
 }
 
 /// Applies `change` (already made to `mesh` and `options`) and checks that the recomputed set is

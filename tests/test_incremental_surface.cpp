@@ -13,6 +13,7 @@
 
 #include "incremental_check.hpp"
 #include "random_operation.hpp"
+#include "stitch/analysis/build_surface.hpp"
 #include "stitch/mesh/io.hpp"
 #include "stitch/mesh/mesh_journal.hpp"
 #include "stitch/tess/incremental_surface.hpp"
@@ -334,12 +335,14 @@ TEST(IncrementalSurface, SemiSharpTagsAreHonouredByRefinementOnEveryUpdate) {
   JournaledMesh m{make_torus(20, 12), {}};
   for (int e : {3, 40, 41, 100, 200}) m.mesh.set_sharpness(Edge(e), 2.0);
   const int corners = static_cast<int>(m.mesh.patch_corners().size());
+  // The same surface as build_surface's (the command line's, Python's), bit for bit.
   const auto expect_refined_rebuild = [&m](const IncrementalSurface& live) {
-    const SemiSharpRefinement r = semi_sharp_refinement(m.mesh, live.method(), SemiSharp::refine);
-    ASSERT_EQ(live.refinement().levels, r.levels);
-    ASSERT_GT(r.levels, 0);
-    const SemiSharpMesh fine = refine_semi_sharp(m.mesh, r.levels, KgonOptions{}.boundary);
-    expect_same_as_rebuild(live, fine.mesh, semi_sharp_kgons({}, live.method(), SemiSharp::refine));
+    SurfaceSpec spec;
+    spec.method = live.method();
+    const BuiltSurface fresh = build_surface(m.mesh, spec);
+    ASSERT_EQ(live.refinement().levels, fresh.refinement.levels);
+    ASSERT_GT(fresh.refinement.levels, 0);
+    test::expect_same_as_surface(live, fresh.mesh(m.mesh), fresh.surface);
   };
   for (Method method : {Method::mdc, Method::asc}) {
     SCOPED_TRACE(to_string(method));

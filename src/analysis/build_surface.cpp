@@ -38,6 +38,14 @@ BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
   on_m.kgons = semi_sharp_kgons(spec.kgons, spec.method, spec.semi_sharp);
   SurfaceKgons k = surface_kgons(m, on_m);
   Surface surface(m, spec.method, k.kgons);
+  if (refined && spec.method != Method::cc) {
+    // The input's K-gons as its untagged surface has them, tubes unfolded too.
+    const KgonOptions input_kgons = surface_kgons(mesh, on_m).kgons;
+    surface.edit_nets([&](std::vector<ControlNet>& nets) {
+      semi_sharp_nets(mesh, input_kgons, *refined, surface.bezier().kgons, k.kgons, spec.method,
+                      nets);
+    });
+  }
   return {std::move(surface), std::move(k.kgons), std::move(k.tubes), refinement,
           std::move(refined)};
 }

@@ -1,11 +1,14 @@
 #include "stitch/eval/semi_sharp.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "topology/catmark_refinement.hpp"
 
@@ -116,6 +119,59 @@ void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
     refined.uvs.index = std::move(index);
   }
   refined.mesh = std::move(mesh);
+}
+
+/// The mesh without its semi-sharp tags (those refined for): what the surface is away from them.
+HalfedgeMesh without_semi_sharp_tags(HalfedgeMesh mesh) {
+  for (Edge e : mesh.edges())
+    if (refined_for(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
+  for (Vertex v : mesh.vertices())
+    if (refined_for(mesh.sharpness(v))) mesh.set_sharpness(v, 0.0);
+  return mesh;
+}
+
+/// Child `k` of a split net in the frame of quad corner k (SemiSharpMesh::point): the child
+/// holding the net's corner k (in the order 00, 30, 33, 03), turned so that this corner is its
+/// P[0][0] and its u runs towards corner k + 1.
+ControlNet quarter(const std::array<ControlNet, 4>& children, int k) {
+  static constexpr int kChild[4] = {0, 2, 3, 1};
+  const ControlNet& c = children[kChild[k]];
+  ControlNet r = c;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const int at[4][2] = {{a, b}, {3 - b, a}, {3 - a, 3 - b}, {b, 3 - a}};
+      r.at(a, b) = c.at(at[k][0], at[k][1]);
+    }
+  static constexpr std::uint8_t kBit[4] = {corner00, corner30, corner33, corner03};
+  r.extraordinary = 0;
+  for (int i = 0; i < 4; ++i) {
+    r.corner_k[i] = c.corner_k[(i + k) % 4];
+    if (c.extraordinary & kBit[(i + k) % 4]) r.extraordinary |= kBit[i];
+  }
+  return r;
+}
+
+/// The points of the nets' blocks at their P[0][0] (P00, P10, P01, P11), onto their
+/// least-squares plane: the corners around an extraordinary vertex meet with G1 when these lie
+/// in one plane (the modified split keeps them there), as the vertex K-gon's points do.
+void flatten_corner_blocks(std::vector<ControlNet>& nets, const std::vector<Corner>& fan) {
+  static constexpr int kBlock[4] = {0, 1, 4, 5};  // P00, P01, P10, P11
+  Vec3 centre = Vec3::Zero();
+  for (Corner c : fan)
+    for (int i : kBlock) centre += nets[c.idx].p[i];
+  centre /= static_cast<double>(4 * fan.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (Corner c : fan)
+    for (int i : kBlock) {
+      const Vec3 d = nets[c.idx].p[i] - centre;
+      cov += d * d.transpose();
+    }
+  const Vec3 n = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
+  for (Corner c : fan)
+    for (int i : kBlock) {
+      Vec3& p = nets[c.idx].p[i];
+      p -= (p - centre).dot(n) * n;
+    }
 }
 
 }  // namespace
@@ -271,6 +327,61 @@ std::vector<Corner> SemiSharpMesh::input_corners() const {
     of = std::move(below);
   }
   return of;
+}
+
+void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
+                     const SemiSharpMesh& refined, const KgonSet& refined_kgons,
+                     const KgonOptions& options, Method method, std::vector<ControlNet>& nets) {
+  const HalfedgeMesh& m = refined.mesh;
+  const HalfedgeMesh plain = without_semi_sharp_tags(input);
+  const int levels = static_cast<int>(refined.quad_corners.size());
+  const BezierSurface coarse = build_bezier_surface(plain, input_options);
+  const SemiSharpMesh plain_refined = refine_semi_sharp(plain, levels, options.boundary);
+  // Refinement's connectivity does not depend on the tags: the same corners, numbered alike.
+  if (plain_refined.mesh.halfedge_capacity() != m.halfedge_capacity() ||
+      nets.size() != static_cast<size_t>(m.halfedge_capacity()))
+    throw std::logic_error("semi_sharp_nets: the nets are not those of the refined mesh");
+  const KgonSet plain_kgons = build_kgons(plain_refined.mesh, options);
+  // mdc splits extraordinary nets with the modified rule as it evaluates them; asc evaluates
+  // every net as its polynomial, which the classic rule splits exactly.
+  const SplitRule rule = method == Method::mdc ? SplitRule::modified : SplitRule::classic;
+  std::vector<std::uint8_t> moved(nets.size(), 0);
+  const auto descend = [&](const auto& self, const ControlNet& net, Corner c, int level) -> void {
+    if (level == levels) {
+      const ControlNet untagged = build_control_net(plain_refined.mesh, plain_kgons, c);
+      ControlNet& out = nets[c.idx];
+      for (size_t i = 0; i < out.p.size(); ++i) {
+        const Vec3 tags = out.p[i] - untagged.p[i];
+        if (tags != Vec3::Zero()) moved[c.idx] = 1;
+        out.p[i] = net.p[i] + tags;
+      }
+      return;
+    }
+    const std::array<ControlNet, 4> children = split(net, rule);
+    const std::array<Corner, 4>& quad = refined.quad_corners[level][c.idx];
+    for (int k = 0; k < 4; ++k) self(self, quarter(children, k), quad[k], level + 1);
+  };
+  const std::vector<Corner> corners = input.patch_corners();
+  tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
+    descend(descend, coarse.nets[corners[i].idx], corners[i], 0);
+  });
+  if (method != Method::mdc) return;
+  // G1 at the extraordinary vertices whose nets the tags moved. Each net's corner block belongs
+  // to its vertex's fan alone, so the fans are flattened in parallel.
+  tbb::parallel_for(0, m.vertex_capacity(), [&](int i) {
+    const Vertex v(i);
+    if (m.is_deleted(v)) return;
+    std::vector<Corner> fan;
+    bool sharp = false, changed = false;
+    for (Halfedge h : m.vertex_fan(v)) {
+      const Edge e = HalfedgeMesh::edge(h);
+      sharp = sharp || refined_kgons.sharp(e) || m.is_boundary(e);
+      if (m.is_hole(h) || !(nets[h.idx].extraordinary & corner00)) continue;
+      fan.push_back(h);
+      changed = changed || moved[h.idx] != 0;
+    }
+    if (!sharp && changed && fan.size() > 4) flatten_corner_blocks(nets, fan);
+  });
 }
 
 }  // namespace stitch

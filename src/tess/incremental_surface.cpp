@@ -93,11 +93,12 @@ void IncrementalSurface::layout(int slots, const std::vector<int>& changed_slots
 }
 
 std::vector<Corner> IncrementalSurface::changed_nets(const HalfedgeMesh& mesh,
-                                                     const std::vector<Corner>& candidates) {
+                                                     const std::vector<Corner>& candidates,
+                                                     const std::vector<ControlNet>* fresh) {
   std::vector<std::uint8_t> changed(candidates.size(), 0);
   tbb::parallel_for(size_t{0}, candidates.size(), [&](size_t q) {
     const Corner c = candidates[q];
-    ControlNet net = build_control_net(mesh, kgons_, c);
+    ControlNet net = fresh ? (*fresh)[c.idx] : build_control_net(mesh, kgons_, c);
     if (net != nets_[c.idx]) {
       nets_[c.idx] = net;  // each candidate's own slot: no two threads write the same one
       changed[q] = 1;
@@ -163,7 +164,7 @@ void IncrementalSurface::fresh_tessellation(int room_slots) {
 
 SurfaceUpdateStats IncrementalSurface::rebuild_on(const HalfedgeMesh& mesh,
                                                   const KgonOptions& options, Method method,
-                                                  int resolution) {
+                                                  int resolution, const HalfedgeMesh* input) {
   const Stopwatch watch;
   PatchGrid grid(resolution);  // may refuse the resolution: nothing has changed yet
   const auto cc = cc_surface(mesh, options, method);
@@ -172,6 +173,8 @@ SurfaceUpdateStats IncrementalSurface::rebuild_on(const HalfedgeMesh& mesh,
   kgon_topology_.reset();
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
+  if (input != nullptr && refined_ && method != Method::cc)
+    semi_sharp_nets(*input, options, *refined_, kgons_, options, method, nets_);
   const int slots = mesh.halfedge_capacity();
   reserve_room(mesh);
   live_.assign(static_cast<size_t>(slots), 0);
@@ -341,7 +344,9 @@ SurfaceUpdateStats IncrementalSurface::update_on(const HalfedgeMesh& mesh,
 }
 
 SurfaceUpdateStats IncrementalSurface::update_positions_on(const HalfedgeMesh& mesh,
-                                                           const KgonOptions& options) {
+                                                           const KgonOptions& options,
+                                                           const HalfedgeMesh* input,
+                                                           const SemiSharpMesh* refined) {
   const auto slots = static_cast<int>(live_.size());
   if (mesh.halfedge_capacity() != slots ||
       mesh.face_capacity() != static_cast<int>(kgons_.face.size()) ||
@@ -364,7 +369,12 @@ SurfaceUpdateStats IncrementalSurface::update_positions_on(const HalfedgeMesh& m
   }
   place_kgons(mesh, options, *kgon_topology_, kgons_);
   const std::vector<Corner> candidates = corners();
-  std::vector<Corner> changed = changed_nets(mesh, candidates);
+  std::vector<ControlNet> fresh;
+  if (input != nullptr && refined != nullptr && !cc) {
+    fresh = build_control_nets(mesh, kgons_);
+    semi_sharp_nets(*input, options, *refined, kgons_, options, method_, fresh);
+  }
+  std::vector<Corner> changed = changed_nets(mesh, candidates, fresh.empty() ? nullptr : &fresh);
   if (cc) changed = candidates;  // the limit surface ignores the nets
   evaluate(changed, cc.get());
   return update_stats(candidates.size(), changed.size(), cc != nullptr, watch);
@@ -374,8 +384,9 @@ SurfaceUpdateStats IncrementalSurface::set_method(const HalfedgeMesh& mesh,
                                                   const KgonOptions& options, Method method) {
   // A method that takes the tags otherwise (cc honours them itself) needs other K-gons, or
   // another mesh.
+  // On a refined mesh the nets depend on the method too (semi_sharp_nets).
   if (semi_sharp_refinement(mesh, method, semi_sharp_).levels != refinement_.levels ||
-      on(options, method).sharp_from != on(options, method_).sharp_from)
+      on(options, method).sharp_from != on(options, method_).sharp_from || refined_)
     return rebuild(mesh, options, method, resolution(), semi_sharp_);
   const Stopwatch watch;
   const auto cc = cc_surface(this->mesh(mesh), on(options, method), method);
@@ -436,7 +447,8 @@ SurfaceUpdateStats IncrementalSurface::rebuild(const HalfedgeMesh& mesh, const K
   refined_ = std::move(refined);
   input_halfedges_ = mesh.halfedge_capacity();
   input_vertices_ = mesh.vertex_capacity();
-  SurfaceUpdateStats stats = rebuild_on(this->mesh(mesh), on(options, method), method, resolution);
+  SurfaceUpdateStats stats =
+      rebuild_on(this->mesh(mesh), on(options, method), method, resolution, &mesh);
   stats.milliseconds = watch.ms();
   return stats;
 }
@@ -469,7 +481,8 @@ SurfaceUpdateStats IncrementalSurface::update_positions(const HalfedgeMesh& mesh
   // The same connectivity refined again gives the same numbers: only the points differ, and
   // the nets compared tell which patches to evaluate again.
   SemiSharpMesh refined = refine_again(mesh, options);
-  SurfaceUpdateStats stats = update_positions_on(refined.mesh, on(options, method_));
+  SurfaceUpdateStats stats =
+      update_positions_on(refined.mesh, on(options, method_), &mesh, &refined);
   refined_ = std::move(refined);
   stats.milliseconds = watch.ms();
   return stats;

@@ -248,20 +248,24 @@ TEST(CadSemiSharp, RefinedSurfaceKeepsTheInputsFacesAndNames) {
             (std::vector<std::string>{"face 1", "face 2", "face 3", "face 4", "face 5", "face 6"}));
   const ControlMesh control = control_mesh(input, *built.refined);
   const HalfedgeMesh& refined = built.refined->mesh;
-  const Exact e{refined, Surface(refined, Method::mdc, built.kgons),
-                bezier_patches(refined, built.surface)};
+  const Exact e{refined, built.surface, bezier_patches(refined, built.surface)};
   expect_faces_match_surface(shape, e, FacePacking::quads, &control);
   cad::CadOptions options;
   options.control = &control;
   expect_joined_as_sewn(e.mesh, e.surface, e.set, options);
 
-  // The estimate told before writing counts the refined patches' double knots where they meet.
+  // The estimate told before writing counts the refined patches' double knots where they meet
+  // and C2 knots inside the input's patches. Knot removal finds fewer poles: where the tags do
+  // not reach, the refined patches of an input patch are pieces of its one polynomial, so their
+  // knots go entirely (measured: 5352 poles written, 5768 estimated). The estimate is an upper
+  // bound there, and within a tenth.
   cad::CadReport r;
   cad::make_shape(e.mesh, e.surface, e.set, options, &r);
-  EXPECT_EQ(cad::estimate_cad(e.mesh, e.surface, e.set, FacePacking::quads, cad::CadFormat::step,
-                              &control)
-                .poles,
-            r.poles);
+  const std::int64_t estimated = cad::estimate_cad(e.mesh, e.surface, e.set, FacePacking::quads,
+                                                   cad::CadFormat::step, &control)
+                                     .poles;
+  EXPECT_GE(estimated, r.poles);
+  EXPECT_LE(estimated, r.poles + r.poles / 10);
 }
 
 TEST(CadEstimate, PolesAsWrittenWhereKnotsAreAsSmoothAsTheirPlace) {

@@ -1,14 +1,16 @@
 // Semi-sharp tags as OpenSubdiv means them, for the K-gon methods: the mesh refined with Sdc's
-// Catmull-Clark rules until every tag is smooth or infinitely sharp, and where each point of the
-// input's corner patches went. One recipe for every surface that honours them: build_surface
-// (the command line, Python's stitch.Surface) and IncrementalSurface (the modeler, Python's
-// stitch.IncrementalSurface, the Blender add-on).
+// Catmull-Clark rules until every tag is smooth or infinitely sharp, where each point of the
+// input's corner patches went, and the nets that add what the tags do to the untagged surface.
+// One recipe for every surface that honours them: build_surface (the command line, Python's
+// stitch.Surface) and IncrementalSurface (the modeler, Python's stitch.IncrementalSurface, the
+// Blender add-on).
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "stitch/eval/bezier_surface.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
 
@@ -20,7 +22,8 @@ enum class SemiSharp {
   /// As OpenSubdiv means them: the mesh is refined uniformly with Sdc's Catmull-Clark rules
   /// (creases, corners and boundaries as Far refines them, sharpness going down by one per
   /// level) for ceil(largest semi-sharp tag) levels, after which every tag is smooth or
-  /// infinitely sharp, and the surface is built on the refined mesh (docs/method.md).
+  /// infinitely sharp; the surface's patches are those of the refined mesh, and it is the
+  /// untagged surface plus what the tags do there (semi_sharp_nets, docs/method.md).
   refine,
   /// Today's rounding, no refinement: tags from KgonOptions::sharp_from on are infinitely sharp,
   /// the others smooth.
@@ -102,5 +105,20 @@ struct SemiSharpMesh {
 /// the mesh (a vertex where boundary loops meet).
 SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
                                 BoundaryInterpolation boundary, const CornerUvs* uvs = nullptr);
+
+/// The control nets of the surface honouring the tags. On each patch of the refined mesh: the
+/// input's surface without its semi-sharp tags, its net split down to the patch, plus what the
+/// tags do to the refined mesh's surface (the nets of refined.mesh minus those of the mesh
+/// refined without the tags). Refining alone moves the K-gon methods' surface (their patches are
+/// not Catmull-Clark's), so only the tags' part is taken from the refined mesh: away from the
+/// tags the surface is the untagged one, and a tag going down to 0 brings it back continuously
+/// (docs/method.md). With mdc, where the tags moved the nets around an extraordinary vertex,
+/// their corner blocks there are flattened onto one plane again, as the K-gons are, so that the
+/// surface stays G1. The input's K-gons are built with `input_options`, the refined meshes'
+/// with `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the
+/// surface's.
+void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
+                     const SemiSharpMesh& refined, const KgonSet& refined_kgons,
+                     const KgonOptions& options, Method method, std::vector<ControlNet>& nets);
 
 }  // namespace stitch

@@ -37,6 +37,14 @@ class Surface {
   /// changes; any later exception leaves a surface with no patches.
   void rebuild(const HalfedgeMesh& mesh, const KgonOptions& kgon_options = {});
 
+  /// Hands the control nets (one per half-edge, as bezier().nets) to `edit(nets)`, which may
+  /// move their points: those of a surface honouring semi-sharp tags are not its mesh's K-gons'
+  /// alone (semi_sharp_nets). cc evaluates the limit surface, which no net changes.
+  template <class Edit>
+  void edit_nets(Edit&& edit) {
+    edit(bezier_.nets);
+  }
+
   [[nodiscard]] Method method() const { return method_; }
   [[nodiscard]] const std::vector<Corner>& corners() const { return bezier_.corners; }
   /// The Bézier patches (also built for cc, for overlays).

@@ -130,8 +130,10 @@ class IncrementalSurface {
   /// Evaluates the listed corners' patches into their blocks; `cc` is the Catmull-Clark surface
   /// when that is the method.
   void evaluate(const std::vector<Corner>& patches, const Surface* cc);
-  /// Rebuilds the nets of `candidates` and returns those whose net changed.
-  std::vector<Corner> changed_nets(const HalfedgeMesh& mesh, const std::vector<Corner>& candidates);
+  /// Rebuilds the nets of `candidates` (or takes them from `fresh`, by half-edge) and returns
+  /// those whose net changed.
+  std::vector<Corner> changed_nets(const HalfedgeMesh& mesh, const std::vector<Corner>& candidates,
+                                   const std::vector<ControlNet>* fresh = nullptr);
   /// Allocates room for slot_capacity_for(...) of every element kind (after the K-gons and nets
   /// of a rebuild, before the layout).
   void reserve_room(const HalfedgeMesh& mesh);
@@ -142,12 +144,15 @@ class IncrementalSurface {
   SurfaceUpdateStats update_topology(const HalfedgeMesh& mesh, const KgonOptions& options,
                                      const SurfaceChange& change);
   // The surface's own steps on the mesh the patches are built on (mesh(input)), with its
-  // options (on()); the public functions above refine first where the tags ask for it.
+  // options (on()); the public functions above refine first where the tags ask for it, and
+  // pass the input (and the refined mesh where refined_ is not it yet) for semi_sharp_nets.
   SurfaceUpdateStats rebuild_on(const HalfedgeMesh& mesh, const KgonOptions& options, Method method,
-                                int resolution);
+                                int resolution, const HalfedgeMesh* input = nullptr);
   SurfaceUpdateStats update_on(const HalfedgeMesh& mesh, const KgonOptions& options,
                                const SurfaceChange& change);
-  SurfaceUpdateStats update_positions_on(const HalfedgeMesh& mesh, const KgonOptions& options);
+  SurfaceUpdateStats update_positions_on(const HalfedgeMesh& mesh, const KgonOptions& options,
+                                         const HalfedgeMesh* input = nullptr,
+                                         const SemiSharpMesh* refined = nullptr);
   /// The K-gon options on mesh(input): sharp_from as build_surface sets it, face and edge
   /// controls dropped on a refined mesh.
   [[nodiscard]] KgonOptions on(const KgonOptions& options, Method method) const;

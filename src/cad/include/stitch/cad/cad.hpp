@@ -89,8 +89,10 @@ TopoDS_Shape make_shape(const HalfedgeMesh& mesh, const Surface& surface, const 
                         const CadOptions& options = {}, CadReport* report = nullptr);
 
 /// What a file of the patch set will hold, told before the work: faces, poles (assuming C2
-/// inside the faces, as the modified rule gives), bytes, and the seconds writing it takes on a
-/// 2-core machine (docs/performance.md, "Exporting the exact surface").
+/// inside the faces, as the modified rule gives; knot removal can find fewer, where neighbouring
+/// patches are pieces of one polynomial, as away from the tags of a surface refined for them),
+/// bytes, and the seconds writing it takes on a 2-core machine (docs/performance.md, "Exporting
+/// the exact surface").
 struct CadEstimate {
   int faces = 0;
   std::int64_t poles = 0;
