@@ -137,8 +137,8 @@ TEST(SemiSharp, SharpnessZeroIsTheUntaggedSurface) {
 // blend the smooth and the sharp rule by the sharpness, so what the tags do is linear in it, and
 // the surface is the untagged one plus s times what sharpness 1 does. Measured on the creased
 // cube (valence-3 vertices: no corner block to flatten, so the nets are exactly linear in the
-// points), to 1e-12 of the size (round-off of the splits and sums; the response is 0.15 of it),
-// with sharpness values a float holds exactly (Sdc takes sharpness as a float).
+// points), to 1e-12 of the size (round-off of the splits and sums; the response at 1 is 0.09 of
+// it), with sharpness values a float holds exactly (Sdc takes sharpness as a float).
 TEST(SemiSharp, TheSurfaceFollowsASharpnessBelowOneLinearly) {
   const HalfedgeMesh plain = test::cube_mesh();
   const double tol = 1e-12 * mesh_size(plain);
@@ -148,7 +148,7 @@ TEST(SemiSharp, TheSurfaceFollowsASharpnessBelowOneLinearly) {
     const BuiltSurface one = build_surface(creased_cube(1.0), {m, {}, true});
     for (double s : {std::ldexp(1.0, -20), 0.25}) {
       const BuiltSurface built = build_surface(creased_cube(s), {m, {}, true});
-      ASSERT_EQ(built.refinement.levels, 1);
+      ASSERT_EQ(built.refinement.levels, min_semi_sharp_levels);
       double largest = 0;
       for (Corner c : plain.patch_corners())
         for (double u : kSamples)
@@ -158,7 +158,7 @@ TEST(SemiSharp, TheSurfaceFollowsASharpnessBelowOneLinearly) {
             ASSERT_LT((response - s * (at(one, c, u, v) - base)).norm(), tol) << s;
             largest = std::max(largest, response.norm());
           }
-      EXPECT_GT(largest, 0.1 * s * mesh_size(plain)) << s;  // the tags do move it
+      EXPECT_GT(largest, 0.05 * s * mesh_size(plain)) << s;  // the tags do move it (0.09 s)
     }
   }
 }
@@ -225,14 +225,15 @@ TEST(SemiSharp, SharpnessTenOrMoreIsInfinitelySharp) {
   }
 }
 
-// The refinement is the one asked for: ceil(s) levels, every semi-sharp tag gone after them,
-// infinitely sharp ones kept; rounding (SemiSharp::round) and cc refine nothing.
+// The refinement is the one asked for: ceil(s) levels, at least min_semi_sharp_levels, every
+// semi-sharp tag gone after them, infinitely sharp ones kept; rounding (SemiSharp::round) and cc
+// refine nothing.
 TEST(SemiSharp, RefinesCeilOfTheLargestTagLevels) {
   for (double s : {0.5, 1.0, 2.3, 3.0}) {
     HalfedgeMesh mesh = creased_cube(s);
     mesh.set_sharpness(Vertex(0), infinitely_sharp);
     const BuiltSurface built = build_surface(mesh, {Method::mdc, {}, true});
-    const int levels = static_cast<int>(std::ceil(s));
+    const int levels = std::max(min_semi_sharp_levels, static_cast<int>(std::ceil(s)));
     ASSERT_TRUE(built.refined) << s;
     EXPECT_EQ(built.refinement.levels, levels);
     EXPECT_EQ(built.refinement.levels_wanted, levels);
@@ -259,7 +260,7 @@ TEST(SemiSharp, RefinesCeilOfTheLargestTagLevels) {
               infinite.surface.evaluate(c, 0.3, 0.6).position);
   high.set_sharpness(Vertex(0), 1.0);
   const BuiltSurface both = build_surface(high, {Method::mdc, {}, true});
-  EXPECT_EQ(both.refinement.levels, 1);
+  EXPECT_EQ(both.refinement.levels, min_semi_sharp_levels);
   EXPECT_NE(both.refinement.summary().find("4 tags of sharpness 6 or more taken as infinitely "
                                            "sharp"),
             std::string::npos)
@@ -417,8 +418,8 @@ TEST(SemiSharp, PointMapFollowsTheRefinement) {
 // sharpness values of issue #38: the largest difference of the two displacements over the
 // largest cc displacement, at most 25% (the issue's goal), and growing with the sharpness.
 // mdc(no tags) is the untagged surface as it is, without refinement. Measured (printed;
-// docs/method.md quotes them): 23.5%, 23.5%, 9.4%, 4.2%, 1.9% for 0.5, 1, 2, 3, 5. Refining
-// alone would move the untagged surface by 0.126 to 0.144, as much as the tags move cc's: the
+// docs/method.md quotes them): 3.1%, 3.1%, 9.4%, 4.2%, 1.9% for 0.5, 1, 2, 3, 5. Refining
+// alone would move the untagged surface by 0.141 to 0.144, as much as the tags move cc's: the
 // surface takes only the tags' part from the refined mesh (semi_sharp_nets).
 TEST(SemiSharp, CreaseResponseOfTheCreasedCubeFollowsOpenSubdiv) {
   double last_mdc = 0, last_cc = 0;
@@ -605,7 +606,7 @@ TEST(SemiSharp, LocalRefinementMovesItsEdgeMoreThanTheTagsMoveTheSurface) {
 TEST(SemiSharp, RefinedSurfaceIsC1AndG1) {
   // The icosahedron with two edges at its vertex 0 at sharpness 1: valence-5 vertices whose
   // nets the tags move, where the corner blocks are flattened again (without it the tangent
-  // planes there spread by 2e-3 degrees, measured).
+  // planes there spread by 1.8e-3 degrees, measured).
   HalfedgeMesh icosahedron = make_icosahedron();
   for (Halfedge h : std::vector<Halfedge>{icosahedron.vertex_fan(Vertex(0))[0],
                                           icosahedron.vertex_fan(Vertex(0))[2]})
@@ -744,16 +745,13 @@ TEST_P(SemiSharpShapes, CreaseResponseFollowsOpenSubdiv) {
   build.allow_two_gons = true;
   const HalfedgeMesh mesh = read_mesh(test::opensubdiv_shape(GetParam() + ".obj"), build);
   const Response r = crease_response(mesh);
-  // The goal (25%, as on the creased cube) is missed on two shapes, measured:
-  // catmark_cube_corner0 50.0% (one corner of sharpness 0.7), catmark_gregory_test3 26.6% (0.9). On
-  // catmark_edgeonly and loop_triangle_edgeonly the tags do not move cc's surface at all
-  // (semi-sharp corners on straight boundaries), so there is no ratio. catmark_helmet (7) and
-  // catmark_hole_test2 (7.5) are not refined: tags from semi_sharp_refined_below on are taken as
-  // infinitely sharp, which measures 32.5% and 32.3% (refining them 5 and 6 levels, at 4^5 and 4^6
-  // patches per corner, measured 5.8% and 1.7%).
+  // The goal: 25%, as on the creased cube; measured at most 14.1% (catmark_cube_corner1) except
+  // on catmark_helmet (7) and catmark_hole_test2 (7.5): tags from semi_sharp_refined_below on
+  // are taken as infinitely sharp, where the K-gon construction's own crease meets cc's crease
+  // within 32.5% and 32.3%. On catmark_edgeonly and loop_triangle_edgeonly the tags do not move
+  // cc's surface at all (semi-sharp corners on straight boundaries), so there is no ratio.
   const std::string& name = GetParam();
-  const bool missed = name == "catmark_cube_corner0" || name == "catmark_gregory_test3" ||
-                      name == "catmark_helmet" || name == "catmark_hole_test2";
+  const bool missed = name == "catmark_helmet" || name == "catmark_hole_test2";
   if (r.cc > 1e-9 * mesh_size(mesh) && !missed) {
     EXPECT_LE(r.error, 0.25);
   }

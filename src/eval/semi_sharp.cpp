@@ -32,6 +32,12 @@ void count_tags(const HalfedgeMesh& mesh, SemiSharpRefinement& r) {
   for (Vertex v : mesh.vertices()) count(mesh.sharpness(v));
 }
 
+/// ceil(s) as OpenSubdiv counts it: Sdc takes sharpness as a float and lowers it by one per
+/// level.
+int levels_to_smooth(double s) {
+  return static_cast<int>(std::ceil(static_cast<float>(s)));
+}
+
 /// One level of linear face-varying refinement (SemiSharpMesh::uvs). Corners that share
 /// coordinates keep sharing them: a vertex corner keeps its index, an edge corner's is found by
 /// the edge and its ends' indices, a face corner's by the face.
@@ -121,7 +127,8 @@ void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
   refined.mesh = std::move(mesh);
 }
 
-/// The mesh without its semi-sharp tags (those refined for): what the surface is away from them.
+/// The mesh without the semi-sharp tags refined for: what the surface is away from them (tags
+/// from semi_sharp_refined_below on stay, infinitely sharp for every surface involved).
 HalfedgeMesh without_semi_sharp_tags(HalfedgeMesh mesh) {
   for (Edge e : mesh.edges())
     if (refined_for(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
@@ -179,9 +186,9 @@ void flatten_corner_blocks(std::vector<ControlNet>& nets, const std::vector<Corn
 std::string SemiSharpRefinement::summary() const {
   if (levels == 0) return "";
   std::string cut, sharp;
-  if (levels < levels_wanted)
-    cut =
-        fmt::format(" (of the {} they need: the rest rounded to infinitely sharp)", levels_wanted);
+  if (levels < levels_to_smooth(largest_tag))
+    cut = fmt::format(" (of the {} they need: the rest rounded to infinitely sharp)",
+                      levels_to_smooth(largest_tag));
   if (sharpened > 0)
     sharp = fmt::format("; {} tag{} of sharpness {:g} or more taken as infinitely sharp", sharpened,
                         sharpened == 1 ? "" : "s", semi_sharp_refined_below);
@@ -197,9 +204,7 @@ SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, Method metho
   if (method == Method::cc || semi_sharp != SemiSharp::refine) return r;
   count_tags(mesh, r);
   if (r.largest_tag <= 0) return r;
-  // Sdc takes sharpness as a float and lowers it by one per level: the tag as OpenSubdiv holds
-  // it decides how many levels leave it smooth.
-  r.levels_wanted = static_cast<int>(std::ceil(static_cast<float>(r.largest_tag)));
+  r.levels_wanted = std::max(min_semi_sharp_levels, levels_to_smooth(r.largest_tag));
   // Level 1 has one quad per corner (hole corners too); each further level four per quad.
   const long long corners = mesh.num_halfedges();
   const long long surface_corners = static_cast<long long>(mesh.patch_corners().size());

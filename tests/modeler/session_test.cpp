@@ -334,8 +334,8 @@ TEST(ModelerSession, SharpnessSetsTheSelectedEdgesCreaseLiveAndIsSaved) {
   EXPECT_EQ(s.surface.num_patches(), 24 * 16);
   expect_live_surface_is_built_surface(s);
   ASSERT_TRUE(s.selection);
-  ASSERT_FALSE(run_script(s, {"sharpness 0.5"}, {}));
-  EXPECT_EQ(s.surface.refinement().levels, 1);
+  ASSERT_FALSE(run_script(s, {"sharpness 3.5"}, {}));
+  EXPECT_EQ(s.surface.refinement().levels, 4);
   expect_live_surface_is_built_surface(s);
   // Infinitely sharp, and smooth: one patch per corner again.
   ASSERT_FALSE(run_script(s, {"sharpness 10"}, {}));
@@ -348,13 +348,13 @@ TEST(ModelerSession, SharpnessSetsTheSelectedEdgesCreaseLiveAndIsSaved) {
       run_script(s, {"undo", "save " + dir.file("p.stitch"), "save " + dir.file("p.obj")}, {}));
   const auto tagged = [](const HalfedgeMesh& m) {
     int n = 0;
-    for (Edge x : m.edges()) n += m.sharpness(x) == 0.5 ? 1 : 0;
+    for (Edge x : m.edges()) n += m.sharpness(x) == 3.5 ? 1 : 0;
     return n;
   };
   Session t;
   ASSERT_FALSE(run_script(t, {"open " + dir.file("p.stitch")}, {}));
   EXPECT_EQ(tagged(t.document.mesh()), 1);
-  EXPECT_EQ(t.surface.num_patches(), 24 * 4);
+  EXPECT_EQ(t.surface.num_patches(), 24 * 256);
   EXPECT_EQ(tagged(read_mesh(dir.file("p.obj"))), 1);
 }
 

@@ -21,8 +21,9 @@ namespace stitch {
 enum class SemiSharp {
   /// As OpenSubdiv means them: the mesh is refined uniformly with Sdc's Catmull-Clark rules
   /// (creases, corners and boundaries as Far refines them, sharpness going down by one per
-  /// level) for ceil(largest semi-sharp tag) levels, after which every tag is smooth or
-  /// infinitely sharp; the surface's patches are those of the refined mesh, and it is the
+  /// level) for ceil(largest semi-sharp tag) levels, at least min_semi_sharp_levels, after
+  /// which every tag is smooth or infinitely sharp; the surface's patches are those of the refined
+  /// mesh, and it is the
   /// untagged surface plus what the tags do there (semi_sharp_nets, docs/method.md).
   refine,
   /// Today's rounding, no refinement: tags from KgonOptions::sharp_from on are infinitely sharp,
@@ -31,6 +32,11 @@ enum class SemiSharp {
 };
 
 inline constexpr int max_semi_sharp_levels = 6;
+/// Semi-sharp tags are honoured on a mesh refined at least twice. After one level the tags'
+/// part of the K-gon surface is still far from Catmull-Clark's (50% of the response off on
+/// OpenSubdiv's catmark_cube_corner0, a corner of 0.7 at a valence-3 vertex); after two, at most
+/// 14.1% on OpenSubdiv's shapes (docs/method.md).
+inline constexpr int min_semi_sharp_levels = 2;
 /// Refinement stops before the refined mesh has more faces than this, hole quads included (each
 /// face is four patches of about 1 kB, and uniform refinement multiplies them by four per
 /// level): tags left semi-sharp after the last level are made infinitely sharp (the band they
@@ -41,8 +47,8 @@ inline constexpr long long max_semi_sharp_faces = 250'000;
 /// that gives. levels == 0: nothing to refine (no semi-sharp tag, method cc, or rounding asked).
 struct SemiSharpRefinement {
   int levels = 0;
-  /// ceil(largest semi-sharp tag): more than `levels` when a limit above cut the refinement
-  /// short and the tags left were made infinitely sharp.
+  /// max(min_semi_sharp_levels, ceil(largest_tag)): more than `levels` when a limit above cut
+  /// the refinement short (tags left semi-sharp after it are made infinitely sharp).
   int levels_wanted = 0;
   double largest_tag = 0;  ///< the largest tag refined for (0: none)
   /// Tags from semi_sharp_refined_below up to infinitely sharp, taken as infinitely sharp.
