@@ -132,12 +132,10 @@ void add_kgon_options(CLI::App* cmd, KgonCliOptions& k, InputOptions* in) {
                  "round semi-sharp crease and corner tags (0 < sharpness < 10) for {} and {}: "
                  "those of at least this sharpness infinitely sharp, smaller ones smooth. "
                  "Without it they are honoured as "
-                 "OpenSubdiv means them, by refining the mesh ceil(sharpness) levels, at least 2, "
-                 "before the patches, those from {:g} on taken as infinitely sharp "
-                 "(docs/method.md); {} "
-                 "honours them itself",
-                 to_string(Method::mdc), to_string(Method::asc), semi_sharp_refined_below,
-                 to_string(Method::cc)))
+                 "OpenSubdiv means them, by refining the mesh ceil(sharpness) levels, from {} to "
+                 "{}, before the patches (docs/method.md); {} honours them itself",
+                 to_string(Method::mdc), to_string(Method::asc), min_semi_sharp_levels,
+                 max_semi_sharp_levels, to_string(Method::cc)))
           ->check(finite_range(0, 10));
 }
 

@@ -10,26 +10,22 @@
 #include <map>
 #include <stdexcept>
 
+#include "stitch/topology/vertex_sectors.hpp"
 #include "topology/catmark_refinement.hpp"
 
 namespace stitch {
 
 namespace {
 
-bool refined_for(double s) {
-  return s > 0 && s < semi_sharp_refined_below;
-}
-
-/// The largest tag to refine for, and how many are taken as infinitely sharp instead. Boundary
-/// edges are infinitely sharp whatever they carry.
-void count_tags(const HalfedgeMesh& mesh, SemiSharpRefinement& r) {
-  auto count = [&r](double s) {
-    if (refined_for(s)) r.largest_tag = std::max(r.largest_tag, s);
-    if (is_semi_sharp(s) && !refined_for(s)) ++r.sharpened;
-  };
+/// The largest semi-sharp tag. Boundary edges are infinitely sharp whatever they carry.
+double largest_semi_sharp_tag(const HalfedgeMesh& mesh) {
+  double largest = 0;
   for (Edge e : mesh.edges())
-    if (!mesh.is_boundary(e)) count(mesh.sharpness(e));
-  for (Vertex v : mesh.vertices()) count(mesh.sharpness(v));
+    if (!mesh.is_boundary(e) && is_semi_sharp(mesh.sharpness(e)))
+      largest = std::max(largest, mesh.sharpness(e));
+  for (Vertex v : mesh.vertices())
+    if (is_semi_sharp(mesh.sharpness(v))) largest = std::max(largest, mesh.sharpness(v));
+  return largest;
 }
 
 /// ceil(s) as OpenSubdiv counts it: Sdc takes sharpness as a float and lowers it by one per
@@ -127,13 +123,12 @@ void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
   refined.mesh = std::move(mesh);
 }
 
-/// The mesh without the semi-sharp tags refined for: what the surface is away from them (tags
-/// from semi_sharp_refined_below on stay, infinitely sharp for every surface involved).
+/// The mesh without its semi-sharp tags: what the surface is away from them.
 HalfedgeMesh without_semi_sharp_tags(HalfedgeMesh mesh) {
   for (Edge e : mesh.edges())
-    if (refined_for(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
+    if (is_semi_sharp(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
   for (Vertex v : mesh.vertices())
-    if (refined_for(mesh.sharpness(v))) mesh.set_sharpness(v, 0.0);
+    if (is_semi_sharp(mesh.sharpness(v))) mesh.set_sharpness(v, 0.0);
   return mesh;
 }
 
@@ -158,51 +153,27 @@ ControlNet quarter(const std::array<ControlNet, 4>& children, int k) {
   return r;
 }
 
-/// The points of the nets' blocks at their P[0][0] (P00, P10, P01, P11), onto their
-/// least-squares plane: the corners around an extraordinary vertex meet with G1 when these lie
-/// in one plane (the modified split keeps them there), as the vertex K-gon's points do.
-void flatten_corner_blocks(std::vector<ControlNet>& nets, const std::vector<Corner>& fan) {
-  static constexpr int kBlock[4] = {0, 1, 4, 5};  // P00, P01, P10, P11
-  Vec3 centre = Vec3::Zero();
-  for (Corner c : fan)
-    for (int i : kBlock) centre += nets[c.idx].p[i];
-  centre /= static_cast<double>(4 * fan.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (Corner c : fan)
-    for (int i : kBlock) {
-      const Vec3 d = nets[c.idx].p[i] - centre;
-      cov += d * d.transpose();
-    }
-  const Vec3 n = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
-  for (Corner c : fan)
-    for (int i : kBlock) {
-      Vec3& p = nets[c.idx].p[i];
-      p -= (p - centre).dot(n) * n;
-    }
-}
+/// The points of a net's block at its P[0][0]: P00, P01, P10, P11.
+constexpr std::array<int, 4> kCornerBlock{0, 1, 4, 5};
 
 }  // namespace
 
 std::string SemiSharpRefinement::summary() const {
   if (levels == 0) return "";
-  std::string cut, sharp;
+  std::string cut;
   if (levels < levels_to_smooth(largest_tag))
-    cut = fmt::format(" (of the {} they need: the rest rounded to infinitely sharp)",
-                      levels_to_smooth(largest_tag));
-  if (sharpened > 0)
-    sharp = fmt::format("; {} tag{} of sharpness {:g} or more taken as infinitely sharp", sharpened,
-                        sharpened == 1 ? "" : "s", semi_sharp_refined_below);
+    cut = fmt::format(" (of the {} they need: smooth after them)", levels_to_smooth(largest_tag));
   return fmt::format(
       "semi-sharp tags up to {:g} honoured by {} level{} of uniform refinement{}: {} faces, {} "
-      "patches{}",
-      largest_tag, levels, levels == 1 ? "" : "s", cut, faces, patches, sharp);
+      "patches",
+      largest_tag, levels, levels == 1 ? "" : "s", cut, faces, patches);
 }
 
 SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, Method method,
                                           SemiSharp semi_sharp) {
   SemiSharpRefinement r;
   if (method == Method::cc || semi_sharp != SemiSharp::refine) return r;
-  count_tags(mesh, r);
+  r.largest_tag = largest_semi_sharp_tag(mesh);
   if (r.largest_tag <= 0) return r;
   r.levels_wanted = std::max(min_semi_sharp_levels, levels_to_smooth(r.largest_tag));
   // Level 1 has one quad per corner (hole corners too); each further level four per quad.
@@ -220,11 +191,9 @@ SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, Method metho
 }
 
 KgonOptions semi_sharp_kgons(KgonOptions kgons, Method method, SemiSharp semi_sharp) {
-  // Honoured tags are gone from the refined mesh; those left are the ones taken as infinitely
-  // sharp (from semi_sharp_refined_below on), on the refined mesh or, with nothing to refine,
-  // on the input.
-  if (semi_sharp == SemiSharp::refine && method != Method::cc)
-    kgons.sharp_from = semi_sharp_refined_below;
+  // Honoured tags are gone from the refined mesh: only infinitely sharp ones are left there, and
+  // with nothing refined (the limits) the semi-sharp ones are smooth on the input.
+  if (semi_sharp == SemiSharp::refine && method != Method::cc) kgons.sharp_from = infinitely_sharp;
   return kgons;
 }
 
@@ -232,18 +201,6 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
                                 BoundaryInterpolation boundary, const CornerUvs* uvs) {
   SemiSharpMesh out{mesh, {}, uvs ? *uvs : CornerUvs{}};
   HalfedgeMesh& fine = out.mesh;
-  // The semi-sharp tags `left` selects, made infinitely sharp (boundary edges are already).
-  const auto sharpen = [&fine](auto left) {
-    for (Edge e : fine.edges())
-      if (!fine.is_boundary(e) && is_semi_sharp(fine.sharpness(e)) && left(fine.sharpness(e)))
-        fine.set_sharpness(e, infinitely_sharp);
-    for (Vertex v : fine.vertices())
-      if (is_semi_sharp(fine.sharpness(v)) && left(fine.sharpness(v)))
-        fine.set_sharpness(v, infinitely_sharp);
-  };
-  // Sharp enough to be taken as infinitely sharp (semi_sharp_refined_below): so from the start,
-  // or the levels would bring them down.
-  sharpen([](double s) { return !refined_for(s); });
   for (int l = 0; l < levels; ++l) {
     CatmullClarkRefinement step = catmark_refinement_with_features(fine, boundary);
     if (!out.uvs.empty()) out.uvs = refine_uvs(fine, step, out.uvs);
@@ -258,9 +215,15 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
     fine = std::move(step.mesh);
     out.quad_corners.push_back(std::move(quads));
   }
-  // What the levels did not bring down to smooth stays sharp from here on (SemiSharpRefinement:
-  // the limits cut the refinement short).
-  sharpen([](double) { return true; });
+  // What the levels did not bring down (the limits cut the refinement short, or Chaikin's rule
+  // lowered a tag by less than one a level) is smooth from here on, as OpenSubdiv's limit surface
+  // is across a semi-sharp crease: the band it would still round is under 2^-levels of an input
+  // face, and a crease the input's untagged surface lacks would not add up with it
+  // (semi_sharp_nets).
+  for (Edge e : fine.edges())
+    if (!fine.is_boundary(e) && is_semi_sharp(fine.sharpness(e))) fine.set_sharpness(e, 0.0);
+  for (Vertex v : fine.vertices())
+    if (is_semi_sharp(fine.sharpness(v))) fine.set_sharpness(v, 0.0);
   if (levels > 0) one_hole_per_boundary_loop(out);
   return out;
 }
@@ -351,10 +314,13 @@ void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options
   // every net as its polynomial, which the classic rule splits exactly.
   const SplitRule rule = method == Method::mdc ? SplitRule::modified : SplitRule::classic;
   std::vector<std::uint8_t> moved(nets.size(), 0);
+  std::vector<std::array<Vec3, 4>> tagged_block(nets.size());
   const auto descend = [&](const auto& self, const ControlNet& net, Corner c, int level) -> void {
     if (level == levels) {
       const ControlNet untagged = build_control_net(plain_refined.mesh, plain_kgons, c);
       ControlNet& out = nets[c.idx];
+      for (size_t k = 0; k < kCornerBlock.size(); ++k)
+        tagged_block[c.idx][k] = out.p[kCornerBlock[k]];
       for (size_t i = 0; i < out.p.size(); ++i) {
         const Vec3 tags = out.p[i] - untagged.p[i];
         if (tags != Vec3::Zero()) moved[c.idx] = 1;
@@ -370,22 +336,30 @@ void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options
   tbb::parallel_for(size_t{0}, corners.size(), [&](size_t i) {
     descend(descend, coarse.nets[corners[i].idx], corners[i], 0);
   });
-  if (method != Method::mdc) return;
-  // G1 at the extraordinary vertices whose nets the tags moved. Each net's corner block belongs
-  // to its vertex's fan alone, so the fans are flattened in parallel.
+  // At an extraordinary vertex the patches of the input's surface and of the refined mesh's
+  // have other parameterizations, so where the tags move the nets there, the sum of their
+  // corner blocks is neither flat (the K-gons are flattened, which no sum keeps) nor sure to
+  // keep its patches' orientation (measured folding on catmark_helmet, whose creases of 7 meet
+  // its boundary's extraordinary vertices, at four levels). There the blocks are the tagged
+  // refined mesh's, moved by what the untagged surface adds at the vertex: flat, as a K-gon's
+  // corner, C1 with the rest of the nets (the blocks of a whole sector move together, and a
+  // sharp curve's point with both its sectors' blocks), and in place of the sum only within
+  // 2^-levels of the vertex. Each net's block belongs to its vertex alone: vertices in parallel.
   tbb::parallel_for(0, m.vertex_capacity(), [&](int i) {
     const Vertex v(i);
     if (m.is_deleted(v)) return;
-    std::vector<Corner> fan;
-    bool sharp = false, changed = false;
-    for (Halfedge h : m.vertex_fan(v)) {
-      const Edge e = HalfedgeMesh::edge(h);
-      sharp = sharp || refined_kgons.sharp(e) || m.is_boundary(e);
-      if (m.is_hole(h) || !(nets[h.idx].extraordinary & corner00)) continue;
-      fan.push_back(h);
-      changed = changed || moved[h.idx] != 0;
+    for (const std::vector<Corner>& sector : vertex_sectors(m, v, refined_kgons.sharp_edge)) {
+      const bool extraordinary = std::all_of(sector.begin(), sector.end(), [&](Corner c) {
+        return (nets[c.idx].extraordinary & corner00) != 0;
+      });
+      const bool changed =
+          std::any_of(sector.begin(), sector.end(), [&](Corner c) { return moved[c.idx] != 0; });
+      if (!extraordinary || !changed) continue;
+      const Vec3 added = nets[sector.front().idx].p[0] - tagged_block[sector.front().idx][0];
+      for (Corner c : sector)
+        for (size_t k = 0; k < kCornerBlock.size(); ++k)
+          nets[c.idx].p[kCornerBlock[k]] = tagged_block[c.idx][k] + added;
     }
-    if (!sharp && changed && fan.size() > 4) flatten_corner_blocks(nets, fan);
   });
 }
 

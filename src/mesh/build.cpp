@@ -284,19 +284,19 @@ void warn_semi_sharp(const HalfedgeMesh& mesh, const PolygonSoup& soup,
   if (!edges.empty())
     warnings.push_back(fmt::format(
         "{} {} finite sharpness (semi-sharp): the K-gon methods honour them by refining the "
-        "mesh ceil(sharpness) levels, at least 2, before the patches (those of {:g} or more: "
-        "infinitely sharp), or with --sharp-from S make those of sharpness >= S infinitely "
-        "sharp and the others smooth (vertices numbered {}): {}",
-        edges.size(), edges.size() == 1 ? "edge has" : "edges have", semi_sharp_refined_below,
-        numbered, soup_places::listed(edges)));
+        "mesh ceil(sharpness) levels, from {} to {}, before the patches, or with --sharp-from S "
+        "make those of sharpness >= S infinitely sharp and the others smooth (vertices "
+        "numbered {}): {}",
+        edges.size(), edges.size() == 1 ? "edge has" : "edges have", min_semi_sharp_levels,
+        max_semi_sharp_levels, numbered, soup_places::listed(edges)));
   if (!vertices.empty())
     warnings.push_back(fmt::format(
         "{} {} finite corner sharpness (semi-sharp): the K-gon methods honour them by refining "
-        "the mesh ceil(sharpness) levels, at least 2, before the patches (those of {:g} or "
-        "more: corners), or with --sharp-from S make those of sharpness >= S corners and ignore "
-        "the others (numbered {}): {}",
+        "the mesh ceil(sharpness) levels, from {} to {}, before the patches, or with "
+        "--sharp-from S make those of sharpness >= S corners and ignore the others (numbered "
+        "{}): {}",
         vertices.size(), vertices.size() == 1 ? "vertex has" : "vertices have",
-        semi_sharp_refined_below, numbered, soup_places::listed(vertices)));
+        min_semi_sharp_levels, max_semi_sharp_levels, numbered, soup_places::listed(vertices)));
 }
 
 /// Puts the soup's crease and corner tags on the mesh's edges and vertices. A crease names two

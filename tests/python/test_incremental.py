@@ -104,10 +104,10 @@ def test_semi_sharp_tags_are_honoured_as_stitch_surface_honours_them():
 
 
 def test_a_tessellation_too_large_to_number_is_refused_for_the_refined_mesh():
-    """Sharpness 5.5 refines the cube 6 times: 98 304 patches, whose samples at resolution 1024
-    (about 1e11) no int numbers, though the cube's own 24 patches' would fit."""
+    """Sharpness 5.5 refines the cube 4 times (the most levels): 6144 patches, whose samples at
+    resolution 1024 (about 6e9) no int numbers, though the cube's own 24 patches' would fit."""
     cube = stitch.primitive("cube")
     with pytest.warns(UserWarning, match="semi-sharp"):
         mesh = stitch.Mesh(cube.vertices, cube.faces, creases=[[0, 1]], crease_sharpness=[5.5])
-    with pytest.raises(ValueError, match="98304 patches of the refined mesh"):
+    with pytest.raises(ValueError, match="6144 patches of the refined mesh"):
         stitch.IncrementalSurface(mesh, "mdc", 1024)

@@ -25,7 +25,7 @@ struct SurfaceSpec {
   /// is searched for cc, whose surface does not come from the K-gons.
   bool unfold_tubes = true;
   /// Semi-sharp tags honoured by refinement (the default; kgons.sharp_from is then
-  /// semi_sharp_refined_below) or rounded at kgons.sharp_from.
+  /// infinitely_sharp) or rounded at kgons.sharp_from.
   SemiSharp semi_sharp = SemiSharp::refine;
   /// The mesh's texture coordinates, if any (not owned): refined with the mesh
   /// (SemiSharpMesh::uvs), so that they go with the refined surface.

@@ -31,16 +31,10 @@ enum class SemiSharp {
   round,
 };
 
-inline constexpr int max_semi_sharp_levels = 6;
-/// Semi-sharp tags are honoured on a mesh refined at least twice. After one level the tags'
-/// part of the K-gon surface is still far from Catmull-Clark's (50% of the response off on
-/// OpenSubdiv's catmark_cube_corner0, a corner of 0.7 at a valence-3 vertex); after two, at most
-/// 14.1% on OpenSubdiv's shapes (docs/method.md).
-inline constexpr int min_semi_sharp_levels = 2;
 /// Refinement stops before the refined mesh has more faces than this, hole quads included (each
 /// face is four patches of about 1 kB, and uniform refinement multiplies them by four per
-/// level): tags left semi-sharp after the last level are made infinitely sharp (the band they
-/// would still round is under 2^-levels of an input face).
+/// level): tags left semi-sharp after the last level are made smooth (the band they would
+/// still round is under 2^-levels of an input face).
 inline constexpr long long max_semi_sharp_faces = 250'000;
 
 /// What honouring the semi-sharp tags takes: the levels of uniform refinement and the faces
@@ -48,13 +42,11 @@ inline constexpr long long max_semi_sharp_faces = 250'000;
 struct SemiSharpRefinement {
   int levels = 0;
   /// max(min_semi_sharp_levels, ceil(largest_tag)): more than `levels` when a limit above cut
-  /// the refinement short (tags left semi-sharp after it are made infinitely sharp).
+  /// the refinement short (tags left semi-sharp after it are made smooth).
   int levels_wanted = 0;
-  double largest_tag = 0;  ///< the largest tag refined for (0: none)
-  /// Tags from semi_sharp_refined_below up to infinitely sharp, taken as infinitely sharp.
-  int sharpened = 0;
-  long long faces = 0;    ///< faces of the refined mesh outside holes
-  long long patches = 0;  ///< its corners outside holes: the surface's patches
+  double largest_tag = 0;  ///< the largest semi-sharp tag (0: none)
+  long long faces = 0;     ///< faces of the refined mesh outside holes
+  long long patches = 0;   ///< its corners outside holes: the surface's patches
   /// "semi-sharp tags up to 1.5 honoured by 2 levels of uniform refinement: 96 faces, 384
   /// patches" (empty when levels == 0), for the front ends' notes.
   [[nodiscard]] std::string summary() const;
@@ -65,8 +57,8 @@ SemiSharpRefinement semi_sharp_refinement(const HalfedgeMesh& mesh, Method metho
                                           SemiSharp semi_sharp);
 
 /// The K-gon options of the mesh the surface is built on: with tags honoured by refinement (and
-/// a K-gon method), the tags left are those from semi_sharp_refined_below on, which are
-/// infinitely sharp (sharp_from).
+/// a K-gon method), only infinitely sharp tags are creases (sharp_from): the refined mesh has
+/// no others, and with nothing refined (the limits) the semi-sharp tags are smooth.
 KgonOptions semi_sharp_kgons(KgonOptions kgons, Method method, SemiSharp semi_sharp);
 
 /// A mesh refined for its semi-sharp tags, and where each point of the input's corner patches
@@ -105,10 +97,9 @@ struct SemiSharpMesh {
 
 /// The mesh refined `levels` times with OpenSubdiv's Catmull-Clark rules and the mesh's
 /// features (topology/catmark_refinement.hpp, each step checked against Far's uniform level),
-/// tags from semi_sharp_refined_below on made infinitely sharp first, semi-sharp tags left after
-/// the last level made infinitely sharp, one hole face per boundary loop. Vertices of `mesh` keep
-/// their numbers; faces and edges are new. Throws stitch::Error where OpenSubdiv cannot refine
-/// the mesh (a vertex where boundary loops meet).
+/// semi-sharp tags left after the last level made smooth, one hole face per boundary loop. Vertices
+/// of `mesh` keep their numbers; faces and edges are new. Throws stitch::Error where OpenSubdiv
+/// cannot refine the mesh (a vertex where boundary loops meet).
 SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
                                 BoundaryInterpolation boundary, const CornerUvs* uvs = nullptr);
 
@@ -118,11 +109,11 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
 /// refined without the tags). Refining alone moves the K-gon methods' surface (their patches are
 /// not Catmull-Clark's), so only the tags' part is taken from the refined mesh: away from the
 /// tags the surface is the untagged one, and a tag going down to 0 brings it back continuously
-/// (docs/method.md). With mdc, where the tags moved the nets around an extraordinary vertex,
-/// their corner blocks there are flattened onto one plane again, as the K-gons are, so that the
-/// surface stays G1. The input's K-gons are built with `input_options`, the refined meshes'
-/// with `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the
-/// surface's.
+/// (docs/method.md). Where the tags move the nets around an extraordinary vertex, whose
+/// patches the two surfaces parameterize otherwise, the nets' blocks at the vertex are the
+/// tagged refined mesh's, moved with the rest: flat as a K-gon's corner, so the surface stays
+/// G1 and unfolded there. The input's K-gons are built with `input_options`, the refined meshes' with
+/// `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the surface's.
 void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
                      const SemiSharpMesh& refined, const KgonSet& refined_kgons,
                      const KgonOptions& options, Method method, std::vector<ControlNet>& nets);

@@ -47,12 +47,20 @@ inline constexpr double infinitely_sharp = 10.0;
 constexpr bool is_semi_sharp(double s) {
   return s > 0 && s < infinitely_sharp;
 }
-/// Tags from this sharpness on are taken as infinitely sharp, not refined: OpenSubdiv rounds
-/// them over less than 2^-6 of the faces beside them, and its own surface (cc, Bfr's sharp
-/// approximation level) resolves semi-sharp features to 6 levels too. So at most 6 levels are
-/// refined, and OpenSubdiv's chess pieces (creases of 6 and 7.9) keep their sharp rims without
-/// 4^6 patches per corner.
-inline constexpr double semi_sharp_refined_below = 6.0;
+
+// The K-gon methods honour semi-sharp tags by refining the mesh (eval/semi_sharp.hpp) for
+// ceil(largest tag) levels, within these two bounds (docs/method.md measures them).
+
+/// At least two levels: after one the tags' part of the K-gon surface is still far from
+/// Catmull-Clark's (50% of the crease response off on OpenSubdiv's catmark_cube_corner0, a
+/// corner of 0.7 at a valence-3 vertex), after two at most 14.1% on OpenSubdiv's shapes.
+inline constexpr int min_semi_sharp_levels = 2;
+/// At most four: a sharper tag is smooth after them, rounded over less than 2^-4 of the faces
+/// beside it where OpenSubdiv rounds it over 2^-s, a sharp-looking rim either way (OpenSubdiv's
+/// chess pieces have creases of 6 and 7.9). Where such tags decide the response it is within
+/// 5.6% of Catmull-Clark's (catmark_helmet, 7), and each level more costs four times the
+/// patches.
+inline constexpr int max_semi_sharp_levels = 4;
 
 /// How semi-sharp creases lose sharpness level by level (OpenSubdiv's Sdc::Options::
 /// CreasingMethod, an OBJ file's `t creasemethod`): by one per level (uniform), or by Chaikin's
