@@ -112,8 +112,8 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
 /// (docs/method.md). Where the tags move the nets around an extraordinary vertex, whose
 /// patches the two surfaces parameterize otherwise, the nets' blocks at the vertex are the
 /// tagged refined mesh's, moved with the rest: flat as a K-gon's corner, so the surface stays
-/// G1 and unfolded there. The input's K-gons are built with `input_options`, the refined meshes' with
-/// `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the surface's.
+/// G1 and unfolded there. The input's K-gons are built with `input_options`, the refined meshes'
+/// with `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the surface's.
 void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
                      const SemiSharpMesh& refined, const KgonSet& refined_kgons,
                      const KgonOptions& options, Method method, std::vector<ControlNet>& nets);
