@@ -42,8 +42,7 @@ BuiltSurface build_surface(const HalfedgeMesh& mesh, const SurfaceSpec& spec) {
     // The input's K-gons as its untagged surface has them, tubes unfolded too.
     const KgonOptions input_kgons = surface_kgons(mesh, on_m).kgons;
     surface.edit_nets([&](std::vector<ControlNet>& nets) {
-      semi_sharp_nets(mesh, input_kgons, *refined, surface.bezier().kgons, k.kgons, spec.method,
-                      nets);
+      semi_sharp_nets(mesh, input_kgons, *refined, k.kgons, spec.method, nets);
     });
   }
   return {std::move(surface), std::move(k.kgons), std::move(k.tubes), refinement,

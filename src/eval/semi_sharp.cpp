@@ -10,7 +10,6 @@
 #include <map>
 #include <stdexcept>
 
-#include "stitch/topology/vertex_sectors.hpp"
 #include "topology/catmark_refinement.hpp"
 
 namespace stitch {
@@ -298,8 +297,8 @@ std::vector<Corner> SemiSharpMesh::input_corners() const {
 }
 
 void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
-                     const SemiSharpMesh& refined, const KgonSet& refined_kgons,
-                     const KgonOptions& options, Method method, std::vector<ControlNet>& nets) {
+                     const SemiSharpMesh& refined, const KgonOptions& options, Method method,
+                     std::vector<ControlNet>& nets) {
   const HalfedgeMesh& m = refined.mesh;
   const HalfedgeMesh plain = without_semi_sharp_tags(input);
   const int levels = static_cast<int>(refined.quad_corners.size());
@@ -339,27 +338,28 @@ void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options
   // At an extraordinary vertex the patches of the input's surface and of the refined mesh's
   // have other parameterizations, so where the tags move the nets there, the sum of their
   // corner blocks is neither flat (the K-gons are flattened, which no sum keeps) nor sure to
-  // keep its patches' orientation (measured folding on catmark_helmet, whose creases of 7 meet
-  // its boundary's extraordinary vertices, at four levels). There the blocks are the tagged
-  // refined mesh's, moved by what the untagged surface adds at the vertex: flat, as a K-gon's
-  // corner, C1 with the rest of the nets (the blocks of a whole sector move together, and a
-  // sharp curve's point with both its sectors' blocks), and in place of the sum only within
-  // 2^-levels of the vertex. Each net's block belongs to its vertex alone: vertices in parallel.
+  // keep its patches' orientation (folding on catmark_helmet, whose creases of 7 meet its
+  // boundary's extraordinary vertices, at four levels). There the blocks are the tagged refined
+  // mesh's, moved by what the untagged surface adds at the vertex: flat, as a K-gon's corner,
+  // C1 with the rest of the nets (all the vertex's blocks move together, so a sharp curve's
+  // point moves with both its sides), and in place of the sum only within 2^-levels of the
+  // vertex. Each net's block belongs to its vertex alone: vertices in parallel.
   tbb::parallel_for(0, m.vertex_capacity(), [&](int i) {
     const Vertex v(i);
     if (m.is_deleted(v)) return;
-    for (const std::vector<Corner>& sector : vertex_sectors(m, v, refined_kgons.sharp_edge)) {
-      const bool extraordinary = std::all_of(sector.begin(), sector.end(), [&](Corner c) {
-        return (nets[c.idx].extraordinary & corner00) != 0;
-      });
-      const bool changed =
-          std::any_of(sector.begin(), sector.end(), [&](Corner c) { return moved[c.idx] != 0; });
-      if (!extraordinary || !changed) continue;
-      const Vec3 added = nets[sector.front().idx].p[0] - tagged_block[sector.front().idx][0];
-      for (Corner c : sector)
-        for (size_t k = 0; k < kCornerBlock.size(); ++k)
-          nets[c.idx].p[kCornerBlock[k]] = tagged_block[c.idx][k] + added;
+    std::vector<Corner> fan;
+    bool extraordinary = false, changed = false;
+    for (Halfedge h : m.vertex_fan(v)) {
+      if (m.is_hole(h)) continue;
+      fan.push_back(h);
+      extraordinary = extraordinary || (nets[h.idx].extraordinary & corner00) != 0;
+      changed = changed || moved[h.idx] != 0;
     }
+    if (!extraordinary || !changed) return;
+    const Vec3 added = nets[fan.front().idx].p[0] - tagged_block[fan.front().idx][0];
+    for (Corner c : fan)
+      for (size_t k = 0; k < kCornerBlock.size(); ++k)
+        nets[c.idx].p[kCornerBlock[k]] = tagged_block[c.idx][k] + added;
   });
 }
 

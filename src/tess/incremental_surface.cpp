@@ -174,7 +174,7 @@ SurfaceUpdateStats IncrementalSurface::rebuild_on(const HalfedgeMesh& mesh,
   kgons_ = build_kgons(mesh, options);
   nets_ = build_control_nets(mesh, kgons_);
   if (input != nullptr && refined_ && method != Method::cc)
-    semi_sharp_nets(*input, options, *refined_, kgons_, options, method, nets_);
+    semi_sharp_nets(*input, options, *refined_, options, method, nets_);
   const int slots = mesh.halfedge_capacity();
   reserve_room(mesh);
   live_.assign(static_cast<size_t>(slots), 0);
@@ -372,7 +372,7 @@ SurfaceUpdateStats IncrementalSurface::update_positions_on(const HalfedgeMesh& m
   std::vector<ControlNet> fresh;
   if (input != nullptr && refined != nullptr && !cc) {
     fresh = build_control_nets(mesh, kgons_);
-    semi_sharp_nets(*input, options, *refined, kgons_, options, method_, fresh);
+    semi_sharp_nets(*input, options, *refined, options, method_, fresh);
   }
   std::vector<Corner> changed = changed_nets(mesh, candidates, fresh.empty() ? nullptr : &fresh);
   if (cc) changed = candidates;  // the limit surface ignores the nets

@@ -113,9 +113,9 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
 /// patches the two surfaces parameterize otherwise, the nets' blocks at the vertex are the
 /// tagged refined mesh's, moved with the rest: flat as a K-gon's corner, so the surface stays
 /// G1 and unfolded there. The input's K-gons are built with `input_options`, the refined meshes'
-/// with `options`. `nets`: in, those of refined.mesh's K-gons `refined_kgons`; out, the surface's.
+/// with `options`. `nets`: in, those of refined.mesh's K-gons; out, the surface's.
 void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options,
-                     const SemiSharpMesh& refined, const KgonSet& refined_kgons,
-                     const KgonOptions& options, Method method, std::vector<ControlNet>& nets);
+                     const SemiSharpMesh& refined, const KgonOptions& options, Method method,
+                     std::vector<ControlNet>& nets);
 
 }  // namespace stitch
