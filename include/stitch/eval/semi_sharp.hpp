@@ -21,10 +21,10 @@ namespace stitch {
 enum class SemiSharp {
   /// As OpenSubdiv means them: the mesh is refined uniformly with Sdc's Catmull-Clark rules
   /// (creases, corners and boundaries as Far refines them, sharpness going down by one per
-  /// level) for ceil(largest semi-sharp tag) levels, at least min_semi_sharp_levels, after
-  /// which every tag is smooth or infinitely sharp; the surface's patches are those of the refined
-  /// mesh, and it is the
-  /// untagged surface plus what the tags do there (semi_sharp_nets, docs/method.md).
+  /// level) for ceil(largest semi-sharp tag) levels, from min_semi_sharp_levels to
+  /// max_semi_sharp_levels, after which every tag is smooth or infinitely sharp. The surface's
+  /// patches are those of the refined mesh, and it is the untagged surface plus what the tags do
+  /// there (semi_sharp_nets, docs/method.md).
   refine,
   /// Today's rounding, no refinement: tags from KgonOptions::sharp_from on are infinitely sharp,
   /// the others smooth.
