@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 
+#include "stitch/eval/bezier_surface.hpp"
 #include "topology/catmark_refinement.hpp"
 
 namespace stitch {
@@ -122,13 +122,12 @@ void one_hole_per_boundary_loop(SemiSharpMesh& refined) {
   refined.mesh = std::move(mesh);
 }
 
-/// The mesh without its semi-sharp tags: what the surface is away from them.
-HalfedgeMesh without_semi_sharp_tags(HalfedgeMesh mesh) {
+/// Makes every semi-sharp tag smooth (boundary edges are infinitely sharp whatever they carry).
+void smooth_semi_sharp_tags(HalfedgeMesh& mesh) {
   for (Edge e : mesh.edges())
-    if (is_semi_sharp(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
+    if (!mesh.is_boundary(e) && is_semi_sharp(mesh.sharpness(e))) mesh.set_sharpness(e, 0.0);
   for (Vertex v : mesh.vertices())
     if (is_semi_sharp(mesh.sharpness(v))) mesh.set_sharpness(v, 0.0);
-  return mesh;
 }
 
 /// Child `k` of a split net in the frame of quad corner k (SemiSharpMesh::point): the child
@@ -219,10 +218,7 @@ SemiSharpMesh refine_semi_sharp(const HalfedgeMesh& mesh, int levels,
   // is across a semi-sharp crease: the band it would still round is under 2^-levels of an input
   // face, and a crease the input's untagged surface lacks would not add up with it
   // (semi_sharp_nets).
-  for (Edge e : fine.edges())
-    if (!fine.is_boundary(e) && is_semi_sharp(fine.sharpness(e))) fine.set_sharpness(e, 0.0);
-  for (Vertex v : fine.vertices())
-    if (is_semi_sharp(fine.sharpness(v))) fine.set_sharpness(v, 0.0);
+  smooth_semi_sharp_tags(fine);
   if (levels > 0) one_hole_per_boundary_loop(out);
   return out;
 }
@@ -300,7 +296,9 @@ void semi_sharp_nets(const HalfedgeMesh& input, const KgonOptions& input_options
                      const SemiSharpMesh& refined, const KgonOptions& options, Method method,
                      std::vector<ControlNet>& nets) {
   const HalfedgeMesh& m = refined.mesh;
-  const HalfedgeMesh plain = without_semi_sharp_tags(input);
+  // The input without its semi-sharp tags: what the surface is away from them.
+  HalfedgeMesh plain = input;
+  smooth_semi_sharp_tags(plain);
   const int levels = static_cast<int>(refined.quad_corners.size());
   const BezierSurface coarse = build_bezier_surface(plain, input_options);
   const SemiSharpMesh plain_refined = refine_semi_sharp(plain, levels, options.boundary);

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "stitch/eval/bezier_surface.hpp"
 #include "stitch/eval/surface.hpp"
 #include "stitch/mesh/build.hpp"
+#include "stitch/net/control_net.hpp"
 
 namespace stitch {
 
